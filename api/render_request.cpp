@@ -1,0 +1,59 @@
+#include "api/render_request.hpp"
+
+#include <stdexcept>
+
+namespace api {
+
+// The names below are the JSON spellings; request_json.cpp parses enums by
+// matching against these, so each enum has exactly one spelling.
+
+std::string to_string(LightType t) {
+  switch (t) {
+    case LightType::directional: return "directional";
+    case LightType::point: return "point";
+    case LightType::spot: return "spot";
+  }
+  throw std::invalid_argument("api::to_string: invalid LightType");
+}
+
+std::string to_string(View v) {
+  switch (v) {
+    case View::final_: return "final";
+    case View::direct: return "direct";
+    case View::albedo: return "albedo";
+    case View::normal: return "normal";
+    case View::depth: return "depth";
+  }
+  throw std::invalid_argument("api::to_string: invalid View");
+}
+
+std::string to_string(ImageFormat f) {
+  switch (f) {
+    case ImageFormat::png: return "png";
+    case ImageFormat::exr: return "exr";
+    case ImageFormat::pfm: return "pfm";
+  }
+  throw std::invalid_argument("api::to_string: invalid ImageFormat");
+}
+
+std::string to_string(Tonemap t) {
+  switch (t) {
+    case Tonemap::none: return "none";
+    case Tonemap::reinhard: return "reinhard";
+    case Tonemap::aces: return "aces";
+  }
+  throw std::invalid_argument("api::to_string: invalid Tonemap");
+}
+
+void apply_edit(Light& light, const LightEdit& edit) {
+  light.type = edit.type.value_or(light.type);
+  light.position = edit.position.value_or(light.position);
+  light.direction = edit.direction.value_or(light.direction);
+  light.color = edit.color.value_or(light.color);
+  light.intensity = edit.intensity.value_or(light.intensity);
+  light.range = edit.range.value_or(light.range);
+  light.inner_cone_deg = edit.inner_cone_deg.value_or(light.inner_cone_deg);
+  light.outer_cone_deg = edit.outer_cone_deg.value_or(light.outer_cone_deg);
+}
+
+}  // namespace api

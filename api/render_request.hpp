@@ -1,0 +1,106 @@
+// The render request: the JSON schema shared by the CLI and the HTTP API.
+// Plain data with defaults; parsing and validation live in request_json.cpp.
+// No Vulkan here: this layer is usable by any client of the renderer.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace api {
+
+enum class LightType { directional, point, spot };
+
+// KHR_lights_punctual conventions (DESIGN.md section 2):
+//  - point and spot `intensity` is radiant intensity in W/sr,
+//  - directional `intensity` is irradiance at normal incidence in W/m^2,
+//  - `direction` is the direction the light travels (glTF: the light's -Z).
+struct Light {
+  LightType type = LightType::point;
+  glm::vec3 position{0.0f};
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};
+  glm::vec3 color{1.0f};
+  float intensity = 1.0f;
+  float range = 0.0f;  // 0 = unlimited (inverse square only)
+  float inner_cone_deg = 0.0f;
+  float outer_cone_deg = 45.0f;
+};
+
+// A partial change of one of the scene's own lights, by index.
+struct LightEdit {
+  std::size_t index = 0;
+  std::optional<LightType> type;
+  std::optional<glm::vec3> position;
+  std::optional<glm::vec3> direction;
+  std::optional<glm::vec3> color;
+  std::optional<float> intensity;
+  std::optional<float> range;
+  std::optional<float> inner_cone_deg;
+  std::optional<float> outer_cone_deg;
+};
+
+struct Camera {
+  glm::vec3 position{0.0f, 1.0f, 3.4f};
+  glm::vec3 target{0.0f, 1.0f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fov_y_deg = 40.0f;
+  float near = 0.0f;  // 0 = fitted to the scene bounds
+  float far = 0.0f;   // 0 = fitted to the scene bounds
+};
+
+enum class View { final_, direct, albedo, normal, depth };
+enum class ImageFormat { png, exr, pfm };
+enum class Tonemap { none, reinhard, aces };
+
+struct Output {
+  std::uint32_t width = 512;
+  std::uint32_t height = 512;
+  ImageFormat format = ImageFormat::png;
+  View view = View::final_;
+  float exposure = 0.0f;  // stops: linear pixels are radiance * 2^exposure
+  Tonemap tonemap = Tonemap::none;
+};
+
+struct Shadows {
+  bool enabled = true;
+  std::uint32_t resolution = 1024;  // texels per side of each shadow map (or cube face)
+};
+
+struct RenderRequest {
+  std::string scene = "cornell-box";
+  std::optional<Camera> camera;              // absent: the scene's default camera
+  std::optional<std::vector<Light>> lights;  // present: replaces the scene's lights
+  std::vector<LightEdit> light_edits;        // applied to the scene's lights
+  Output output;
+  Shadows shadows;
+  std::uint32_t repeat = 1;  // frames to render and time
+};
+
+// Limits enforced by validation; exported so clients and docs can quote them.
+namespace limits {
+inline constexpr std::uint32_t max_image_side = 8192;
+inline constexpr std::uint64_t max_image_pixels = 4096ull * 4096ull;
+inline constexpr std::uint32_t min_shadow_resolution = 16;
+inline constexpr std::uint32_t max_shadow_resolution = 8192;
+inline constexpr std::uint32_t max_repeat = 1000;
+inline constexpr std::size_t max_lights = 64;
+inline constexpr float max_abs_exposure = 64.0f;
+inline constexpr float max_abs_coordinate = 1.0e7f;
+inline constexpr float max_intensity = 1.0e12f;
+inline constexpr float min_fov_y_deg = 0.01f;
+inline constexpr float max_fov_y_deg = 179.9f;
+}  // namespace limits
+
+// Sets the fields the edit carries; the others keep their values.
+void apply_edit(Light& light, const LightEdit& edit);
+
+std::string to_string(LightType t);
+std::string to_string(View v);
+std::string to_string(ImageFormat f);
+std::string to_string(Tonemap t);
+
+}  // namespace api

@@ -1,0 +1,546 @@
+// Strict JSON -> RenderRequest, and RenderRequest/RenderStats -> JSON.
+//
+// Every value is read through a Field (the value and its JSON path), so every
+// error names the field it is about. Objects are read through Object, which
+// rejects unknown keys up front. Ranges are checked as values are read; the
+// few rules that involve several fields (cone order, camera frame, near/far,
+// pixel count) are checked once the object they live in has been read.
+#include "api/request_json.hpp"
+
+#include "api/request_error.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <concepts>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace api {
+namespace {
+
+using nlohmann::json;
+
+constexpr std::size_t max_scene_name = 128;
+constexpr float max_color = 1.0e6f;
+constexpr float max_cone_deg = 90.0f;
+constexpr float no_upper_limit = std::numeric_limits<float>::max();
+constexpr double min_vector_length = 1e-6;  // below this a direction has no usable direction
+constexpr double min_camera_sine = 1e-4;    // sine of the angle between camera up and view direction
+constexpr std::size_t max_json_depth = 16;  // the schema needs 4
+
+// ---- text for messages -------------------------------------------------------
+
+// The shortest text that reads back as the same float ("0.1", "1e+12", "179.9").
+std::string number_text(float x) {
+  std::array<char, 32> buf{};
+  const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), x);
+  return std::string(buf.data(), res.ptr);
+}
+
+std::string vector_text(const glm::vec3& v) {
+  return "[" + number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + "]";
+}
+
+// A JSON string literal of (at most the start of) `s`, in ASCII, safe to embed in a
+// message: every message is ASCII, whatever bytes the client sent.
+std::string quote(std::string_view s) {
+  constexpr std::size_t max_length = 40;
+  std::string q = json(std::string(s.substr(0, max_length))).dump(-1, ' ', true, json::error_handler_t::replace);
+  if (s.size() > max_length) q.insert(q.size() - 1, "...");
+  return q;
+}
+
+// What a value is, for the "got ..." part of a message. Never dumps a container,
+// which could be large or deeply nested.
+std::string describe(const json& v) {
+  switch (v.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::boolean: return v.get<bool>() ? "true" : "false";
+    case json::value_t::number_integer: return std::to_string(v.get<std::int64_t>());
+    case json::value_t::number_unsigned: return std::to_string(v.get<std::uint64_t>());
+    case json::value_t::number_float: {
+      const double d = v.get<double>();
+      if (std::isnan(d)) return "NaN";
+      if (std::isinf(d)) return d > 0 ? "Infinity" : "-Infinity";
+      return v.dump();
+    }
+    case json::value_t::string: return "string " + quote(v.get_ref<const std::string&>());
+    case json::value_t::array: return "an array of " + std::to_string(v.size()) + " elements";
+    case json::value_t::object: return "an object";
+    default: return "an unsupported value";
+  }
+}
+
+// ---- paths -------------------------------------------------------------------
+
+bool is_plain_key(std::string_view key) {
+  constexpr std::size_t max_plain = 64;
+  return !key.empty() && key.size() <= max_plain && std::ranges::all_of(key, [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+  });
+}
+
+// "output" + "width" -> "output.width". Keys that are not identifiers (they can only
+// be unknown ones, straight from the client) are quoted: output["wi dth"].
+std::string member_path(const std::string& parent, std::string_view key) {
+  if (!is_plain_key(key)) return parent + "[" + quote(key) + "]";
+  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
+}
+
+std::string element_path(const std::string& parent, std::size_t index) {
+  return parent + "[" + std::to_string(index) + "]";
+}
+
+// ---- reading -------------------------------------------------------------------
+
+// A value of the request with its path, so that every error can name it.
+struct Field {
+  const json* value;
+  std::string path;
+
+  [[noreturn]] void fail(const std::string& message) const { throw RequestError(path, message); }
+
+  // "must be <expectation>, got <what it is>"
+  [[noreturn]] void reject(const std::string& expectation) const {
+    fail((path.empty() ? "the request must be " : "must be ") + expectation + ", got " + describe(*value));
+  }
+
+  Field element(std::size_t index) const { return {&(*value)[index], element_path(path, index)}; }
+};
+
+// A JSON object whose keys have all been checked against the allowed ones.
+class Object {
+ public:
+  Object(Field field, std::span<const std::string_view> allowed) : field_(std::move(field)) {
+    if (!field_.value->is_object()) field_.reject("an object");
+    for (const auto& [key, value] : field_.value->items()) {
+      if (std::ranges::find(allowed, key) == allowed.end()) {
+        std::string names;
+        for (const std::string_view name : allowed) names += (names.empty() ? "" : ", ") + std::string(name);
+        throw RequestError(member_path(field_.path, key), "unknown field (allowed: " + names + ")");
+      }
+    }
+  }
+
+  const std::string& path() const { return field_.path; }
+  std::string path_of(std::string_view key) const { return member_path(field_.path, key); }
+  bool has(std::string_view key) const { return field_.value->contains(std::string(key)); }
+
+  std::optional<Field> get(std::string_view key) const {
+    const auto it = field_.value->find(std::string(key));
+    if (it == field_.value->end()) return std::nullopt;
+    return Field{&*it, path_of(key)};
+  }
+
+  // `what` says what the field should hold: "required field missing (<what>)".
+  Field require(std::string_view key, const std::string& what) const {
+    if (auto field = get(key)) return *field;
+    throw RequestError(path_of(key), "required field missing (" + what + ")");
+  }
+
+ private:
+  Field field_;
+};
+
+template <std::unsigned_integral T>
+T as_uint(const Field& f, T lo, T hi) {
+  const json& v = *f.value;
+  std::optional<std::uint64_t> x;
+  if (v.is_number_unsigned()) x = v.get<std::uint64_t>();
+  // Only a json built in code holds a non-negative number_integer; parsed ones are unsigned.
+  if (v.is_number_integer() && !v.is_number_unsigned() && v.get<std::int64_t>() >= 0)
+    x = static_cast<std::uint64_t>(v.get<std::int64_t>());
+  if (!x || *x < lo || *x > hi)
+    f.reject("an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return static_cast<T>(*x);
+}
+
+// Any JSON number, integer or not, that is finite and in [lo, hi] once stored as a float.
+// The bounds are compared as floats, so a limit like 179.9 accepts the JSON text "179.9".
+float as_float(const Field& f, float lo, float hi) {
+  const std::string expectation = hi == no_upper_limit
+                                      ? "a number >= " + number_text(lo)
+                                      : "a number in [" + number_text(lo) + ", " + number_text(hi) + "]";
+  if (!f.value->is_number()) f.reject(expectation);
+  const double d = f.value->get<double>();
+  if (!std::isfinite(d) || std::abs(d) > static_cast<double>(std::numeric_limits<float>::max()))
+    f.reject(expectation + " that fits a 32-bit float");
+  const float x = static_cast<float>(d);
+  if (x < lo || x > hi) f.reject(expectation);
+  return x;
+}
+
+bool as_bool(const Field& f) {
+  if (!f.value->is_boolean()) f.reject("true or false");
+  return f.value->get<bool>();
+}
+
+// "\"a\", \"b\", \"c\"": the JSON spellings of `values`.
+template <class E, std::size_t N>
+std::string enum_names(const std::array<E, N>& values) {
+  std::string names;
+  for (const E e : values) names += (names.empty() ? "\"" : ", \"") + to_string(e) + "\"";
+  return names;
+}
+
+// An enum spelled as in to_string(); `values` lists every value of the enum.
+template <class E, std::size_t N>
+E as_enum(const Field& f, const std::array<E, N>& values) {
+  if (f.value->is_string()) {
+    const std::string& s = f.value->get_ref<const std::string&>();
+    for (const E e : values)
+      if (to_string(e) == s) return e;
+  }
+  f.reject("one of " + enum_names(values));
+}
+
+// The elements of an array of at most `max_size` elements.
+std::vector<Field> as_array(const Field& f, std::size_t max_size) {
+  if (!f.value->is_array() || f.value->size() > max_size)
+    f.reject("an array of at most " + std::to_string(max_size) + " elements");
+  std::vector<Field> elements;
+  for (std::size_t i = 0; i < f.value->size(); ++i) elements.push_back(f.element(i));
+  return elements;
+}
+
+glm::vec3 as_vec3(const Field& f, float lo, float hi) {
+  if (!f.value->is_array() || f.value->size() != 3) f.reject("an array of 3 numbers");
+  glm::vec3 v;
+  for (int i = 0; i < 3; ++i) v[i] = as_float(f.element(static_cast<std::size_t>(i)), lo, hi);
+  return v;
+}
+
+glm::vec3 as_point(const Field& f) {
+  return as_vec3(f, -limits::max_abs_coordinate, limits::max_abs_coordinate);
+}
+
+glm::vec3 as_direction(const Field& f) {
+  const glm::vec3 v = as_point(f);
+  if (glm::length(glm::dvec3(v)) < min_vector_length)
+    f.fail("must have non-zero length (at least " + number_text(static_cast<float>(min_vector_length)) +
+           "), got " + vector_text(v));
+  return v;
+}
+
+glm::vec3 as_color(const Field& f) { return as_vec3(f, 0.0f, max_color); }
+
+std::string as_scene_name(const Field& f) {
+  const std::string expectation = "a string of 1 to " + std::to_string(max_scene_name) +
+                                  " characters from [A-Za-z0-9._-], not starting with '.'";
+  if (!f.value->is_string()) f.reject(expectation);
+  const std::string& name = f.value->get_ref<const std::string&>();
+  const bool valid_chars = std::ranges::all_of(name, [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '_' ||
+           c == '-';
+  });
+  // A leading '.' would allow "." and "..", which name directories, not scenes.
+  if (name.empty() || name.size() > max_scene_name || name.front() == '.' || !valid_chars) f.reject(expectation);
+  return name;
+}
+
+// ---- the schema --------------------------------------------------------------------
+
+constexpr std::array light_types{LightType::directional, LightType::point, LightType::spot};
+constexpr std::array views{View::final_, View::direct, View::albedo, View::normal, View::depth};
+constexpr std::array formats{ImageFormat::png, ImageFormat::exr, ImageFormat::pfm};
+constexpr std::array tonemaps{Tonemap::none, Tonemap::reinhard, Tonemap::aces};
+
+using Keys = std::string_view;
+constexpr std::array<Keys, 7> request_keys{"scene", "camera", "lights", "light_edits", "output", "shadows", "repeat"};
+constexpr std::array<Keys, 6> camera_keys{"position", "target", "up", "fov_y_deg", "near", "far"};
+constexpr std::array<Keys, 8> light_keys{"type",      "position", "direction",      "color",
+                                         "intensity", "range",    "inner_cone_deg", "outer_cone_deg"};
+constexpr auto light_edit_keys = [] {
+  std::array<Keys, light_keys.size() + 1> keys{"index"};
+  std::ranges::copy(light_keys, keys.begin() + 1);
+  return keys;
+}();
+constexpr std::array<Keys, 6> output_keys{"width", "height", "format", "view", "exposure", "tonemap"};
+constexpr std::array<Keys, 2> shadows_keys{"enabled", "resolution"};
+
+// The light fields present in `obj`, shared by "lights" and "light_edits"
+// (the index of the returned edit is left at 0).
+LightEdit read_light_fields(const Object& obj) {
+  LightEdit fields;
+  if (auto f = obj.get("type")) fields.type = as_enum(*f, light_types);
+  if (auto f = obj.get("position")) fields.position = as_point(*f);
+  if (auto f = obj.get("direction")) fields.direction = as_direction(*f);
+  if (auto f = obj.get("color")) fields.color = as_color(*f);
+  if (auto f = obj.get("intensity")) fields.intensity = as_float(*f, 0.0f, limits::max_intensity);
+  if (auto f = obj.get("range")) fields.range = as_float(*f, 0.0f, no_upper_limit);
+  if (auto f = obj.get("inner_cone_deg")) fields.inner_cone_deg = as_float(*f, 0.0f, max_cone_deg);
+  if (auto f = obj.get("outer_cone_deg")) fields.outer_cone_deg = as_float(*f, 0.0f, max_cone_deg);
+  return fields;
+}
+
+// inner < outer (the [0, 90] bounds were checked as each was read). The error names
+// inner_cone_deg when it was given, else outer_cone_deg.
+void check_cone_order(const Object& obj, float inner, float outer) {
+  if (inner < outer) return;
+  if (obj.has("inner_cone_deg"))
+    throw RequestError(obj.path_of("inner_cone_deg"),
+                       "must be less than outer_cone_deg (" + number_text(outer) + "), got " + number_text(inner));
+  throw RequestError(obj.path_of("outer_cone_deg"),
+                     "must be greater than inner_cone_deg (" + number_text(inner) + "), got " + number_text(outer));
+}
+
+Light read_light(const Field& f) {
+  const Object obj(f, light_keys);
+  obj.require("type", "one of " + enum_names(light_types));
+  Light light;
+  apply_edit(light, read_light_fields(obj));
+  if (obj.has("inner_cone_deg") || obj.has("outer_cone_deg"))
+    check_cone_order(obj, light.inner_cone_deg, light.outer_cone_deg);
+  return light;
+}
+
+// Edits are checked on their own; the scene light they apply to is not known here.
+LightEdit read_light_edit(const Field& f) {
+  const Object obj(f, light_edit_keys);
+  const Field index = obj.require("index", "the index of the scene light to change");
+  LightEdit edit = read_light_fields(obj);
+  edit.index = as_uint<std::size_t>(index, 0, limits::max_lights - 1);
+  if (edit.inner_cone_deg && edit.outer_cone_deg) check_cone_order(obj, *edit.inner_cone_deg, *edit.outer_cone_deg);
+  return edit;
+}
+
+double max_abs_component(const glm::dvec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+
+// position != target, and up not parallel to the view direction (both relative to the
+// magnitudes involved, since a float look-at cannot resolve less).
+void check_camera_frame(const Object& obj, const Camera& camera) {
+  const glm::dvec3 position(camera.position);
+  const glm::dvec3 target(camera.target);
+  const glm::dvec3 forward = target - position;
+  const double scale = std::max({1.0, max_abs_component(position), max_abs_component(target)});
+  if (glm::length(forward) <= min_vector_length * scale) {
+    if (obj.has("target"))
+      throw RequestError(obj.path_of("target"), "must differ from camera.position, got " + vector_text(camera.target));
+    throw RequestError(obj.path_of("position"), "must differ from camera.target, got " + vector_text(camera.position));
+  }
+  const double sine = glm::length(glm::cross(glm::normalize(glm::dvec3(camera.up)), glm::normalize(forward)));
+  if (sine < min_camera_sine)
+    throw RequestError(obj.path_of("up"), "must not be parallel to the view direction (target - position), got " +
+                                              vector_text(camera.up));
+}
+
+Camera read_camera(const Field& f) {
+  const Object obj(f, camera_keys);
+  Camera camera;
+  if (auto v = obj.get("position")) camera.position = as_point(*v);
+  if (auto v = obj.get("target")) camera.target = as_point(*v);
+  if (auto v = obj.get("up")) camera.up = as_direction(*v);
+  if (auto v = obj.get("fov_y_deg")) camera.fov_y_deg = as_float(*v, limits::min_fov_y_deg, limits::max_fov_y_deg);
+  if (auto v = obj.get("near")) camera.near = as_float(*v, 0.0f, no_upper_limit);
+  if (auto v = obj.get("far")) camera.far = as_float(*v, 0.0f, no_upper_limit);
+  check_camera_frame(obj, camera);
+  if (camera.near > 0.0f && camera.far > 0.0f && !(camera.near < camera.far))
+    throw RequestError(obj.path_of("far"), "must be greater than camera.near (" + number_text(camera.near) +
+                                               "), got " + number_text(camera.far));
+  return camera;
+}
+
+Output read_output(const Field& f) {
+  const Object obj(f, output_keys);
+  Output out;
+  if (auto v = obj.get("width")) out.width = as_uint<std::uint32_t>(*v, 1, limits::max_image_side);
+  if (auto v = obj.get("height")) out.height = as_uint<std::uint32_t>(*v, 1, limits::max_image_side);
+  if (auto v = obj.get("format")) out.format = as_enum(*v, formats);
+  if (auto v = obj.get("view")) out.view = as_enum(*v, views);
+  if (auto v = obj.get("exposure")) out.exposure = as_float(*v, -limits::max_abs_exposure, limits::max_abs_exposure);
+  if (auto v = obj.get("tonemap")) out.tonemap = as_enum(*v, tonemaps);
+  const std::uint64_t pixels = std::uint64_t{out.width} * out.height;
+  if (pixels > limits::max_image_pixels)
+    throw RequestError(obj.path(), "width x height must be at most " + std::to_string(limits::max_image_pixels) +
+                                       " pixels, got " + std::to_string(out.width) + " x " +
+                                       std::to_string(out.height) + " = " + std::to_string(pixels));
+  return out;
+}
+
+Shadows read_shadows(const Field& f) {
+  const Object obj(f, shadows_keys);
+  Shadows shadows;
+  if (auto v = obj.get("enabled")) shadows.enabled = as_bool(*v);
+  if (auto v = obj.get("resolution"))
+    shadows.resolution =
+        as_uint<std::uint32_t>(*v, limits::min_shadow_resolution, limits::max_shadow_resolution);
+  return shadows;
+}
+
+RenderRequest read_request(const json& document) {
+  const Object obj(Field{&document, ""}, request_keys);
+  RenderRequest request;
+  if (auto v = obj.get("scene")) request.scene = as_scene_name(*v);
+  if (auto v = obj.get("camera")) request.camera = read_camera(*v);
+  if (auto v = obj.get("lights")) {
+    request.lights.emplace();
+    for (const Field& light : as_array(*v, limits::max_lights)) request.lights->push_back(read_light(light));
+  }
+  if (auto v = obj.get("light_edits")) {
+    for (const Field& edit : as_array(*v, limits::max_lights)) request.light_edits.push_back(read_light_edit(edit));
+  }
+  if (auto v = obj.get("output")) request.output = read_output(*v);
+  if (auto v = obj.get("shadows")) request.shadows = read_shadows(*v);
+  if (auto v = obj.get("repeat")) request.repeat = as_uint<std::uint32_t>(*v, 1, limits::max_repeat);
+  return request;
+}
+
+// nlohmann's parser, plus what it lets through: duplicate keys (it keeps the last
+// silently) and unbounded nesting.
+json parse_document(std::string_view text) {
+  std::vector<std::set<std::string>> open;  // per open object or array: the keys seen so far
+  const json::parser_callback_t check = [&open](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        if (open.size() >= max_json_depth)
+          throw RequestError("", "invalid JSON: nested deeper than " + std::to_string(max_json_depth) + " levels");
+        open.emplace_back();
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end: open.pop_back(); break;
+      case json::parse_event_t::key:
+        if (!open.back().insert(parsed.get<std::string>()).second)
+          throw RequestError("", "invalid JSON: duplicate key " + quote(parsed.get_ref<const std::string&>()));
+        break;
+      case json::parse_event_t::value: break;
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, check);
+  } catch (const json::exception& e) {
+    // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 9: ...".
+    std::string_view what = e.what();
+    if (const auto end = what.find("] "); what.starts_with("[json.exception.") && end != std::string_view::npos)
+      what.remove_prefix(end + 2);
+    std::string message = "invalid JSON: " + std::string(what);
+    // The parser quotes the bytes it last read, which may be anything.
+    std::ranges::replace_if(message, [](char c) { return c < 0x20 || c > 0x7e; }, '?');
+    throw RequestError("", message);
+  }
+}
+
+// ---- writing -------------------------------------------------------------------
+
+// The double whose shortest text is the float's shortest text: 0.1f is written as
+// 0.1, not 0.10000000149011612, and still reads back as 0.1f.
+double shortest(float x) {
+  if (!std::isfinite(x)) return static_cast<double>(x);
+  const std::string text = number_text(x);
+  double d = 0.0;
+  std::from_chars(text.data(), text.data() + text.size(), d);
+  return d;
+}
+
+json vector_json(const glm::vec3& v) { return json::array({shortest(v.x), shortest(v.y), shortest(v.z)}); }
+
+// The fields present in `fields`; the index is not one of them.
+json light_fields_json(const LightEdit& fields) {
+  json j = json::object();
+  if (fields.type) j["type"] = to_string(*fields.type);
+  if (fields.position) j["position"] = vector_json(*fields.position);
+  if (fields.direction) j["direction"] = vector_json(*fields.direction);
+  if (fields.color) j["color"] = vector_json(*fields.color);
+  if (fields.intensity) j["intensity"] = shortest(*fields.intensity);
+  if (fields.range) j["range"] = shortest(*fields.range);
+  if (fields.inner_cone_deg) j["inner_cone_deg"] = shortest(*fields.inner_cone_deg);
+  if (fields.outer_cone_deg) j["outer_cone_deg"] = shortest(*fields.outer_cone_deg);
+  return j;
+}
+
+LightEdit all_fields(const Light& light) {
+  LightEdit fields;
+  fields.type = light.type;
+  fields.position = light.position;
+  fields.direction = light.direction;
+  fields.color = light.color;
+  fields.intensity = light.intensity;
+  fields.range = light.range;
+  fields.inner_cone_deg = light.inner_cone_deg;
+  fields.outer_cone_deg = light.outer_cone_deg;
+  return fields;
+}
+
+json camera_json(const Camera& camera) {
+  return {{"position", vector_json(camera.position)},
+          {"target", vector_json(camera.target)},
+          {"up", vector_json(camera.up)},
+          {"fov_y_deg", shortest(camera.fov_y_deg)},
+          {"near", shortest(camera.near)},
+          {"far", shortest(camera.far)}};
+}
+
+json summary_json(const TimeSummary& t) { return {{"median", t.median}, {"min", t.min}, {"max", t.max}}; }
+
+}  // namespace
+
+RenderRequest parse_render_request(std::string_view json_text) { return read_request(parse_document(json_text)); }
+
+RenderRequest parse_render_request(const nlohmann::json& json) { return read_request(json); }
+
+nlohmann::json to_json(const RenderRequest& request) {
+  json j = json::object();
+  j["scene"] = request.scene;
+  if (request.camera) j["camera"] = camera_json(*request.camera);
+  if (request.lights) {
+    j["lights"] = json::array();
+    for (const Light& light : *request.lights) j["lights"].push_back(light_fields_json(all_fields(light)));
+  }
+  if (!request.light_edits.empty()) {
+    j["light_edits"] = json::array();
+    for (const LightEdit& edit : request.light_edits) {
+      json e = {{"index", edit.index}};
+      e.update(light_fields_json(edit));
+      j["light_edits"].push_back(std::move(e));
+    }
+  }
+  const Output& out = request.output;
+  j["output"] = {{"width", out.width},
+                 {"height", out.height},
+                 {"format", to_string(out.format)},
+                 {"view", to_string(out.view)},
+                 {"exposure", shortest(out.exposure)},
+                 {"tonemap", to_string(out.tonemap)}};
+  j["shadows"] = {{"enabled", request.shadows.enabled}, {"resolution", request.shadows.resolution}};
+  j["repeat"] = request.repeat;
+  return j;
+}
+
+nlohmann::json to_json(const RenderStats& stats) {
+  json passes = json::array();
+  for (const PassStats& pass : stats.passes) {
+    json p = {{"name", pass.name}, {"ran", pass.ran}};
+    if (!pass.reason.empty()) p["reason"] = pass.reason;
+    p["gpu_ms"] = summary_json(pass.gpu_ms);
+    passes.push_back(std::move(p));
+  }
+  json cpu = json::object();
+  for (const auto& [phase, summary] : stats.cpu_ms) cpu[phase] = summary_json(summary);
+  return {{"scene", stats.scene},
+          {"width", stats.width},
+          {"height", stats.height},
+          {"view", stats.view},
+          {"frames", stats.frames},
+          {"passes", std::move(passes)},
+          {"gpu_ms", summary_json(stats.gpu_ms)},
+          {"cpu_ms", std::move(cpu)},
+          {"wall_ms", summary_json(stats.wall_ms)},
+          {"device", stats.device},
+          {"driver", stats.driver},
+          {"warnings", stats.warnings}};
+}
+
+}  // namespace api

@@ -1,0 +1,41 @@
+// The per-resolution images and buffers of a frame, kept between requests of the same size.
+#pragma once
+
+#include "renderer/vulkan/resources.hpp"
+
+#include <cstdint>
+
+namespace renderer {
+
+struct FrameTargets {
+  static constexpr VkFormat kPositionFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // world xyz, material + 1
+  static constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  static constexpr VkFormat kAlbedoFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // 8 bits lose dark albedos
+  static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+  FrameTargets(const vkx::Device& device, std::uint32_t width, std::uint32_t height);
+
+  std::uint32_t width;
+  std::uint32_t height;
+  vkx::Image position;
+  vkx::Image normal;
+  vkx::Image albedo;
+  vkx::Image depth;
+  vkx::Buffer linear;            // vec4 per pixel, row 0 = top: the linear HDR image
+  vkx::Buffer display;           // RGBA8 per pixel: the display-encoded image
+  vkx::Buffer linear_readback;   // host copies of the two
+  vkx::Buffer display_readback;
+};
+
+// Depth maps of every light, one layer per shadow view, all at one resolution.
+struct ShadowAtlas {
+  static constexpr VkFormat kFormat = VK_FORMAT_D32_SFLOAT;
+
+  ShadowAtlas(const vkx::Device& device, std::uint32_t resolution, std::uint32_t layers);
+
+  std::uint32_t resolution;
+  std::uint32_t layers;
+  vkx::Image depth;
+};
+
+}  // namespace renderer

@@ -1,0 +1,28 @@
+#include "renderer/gpu_scene.hpp"
+
+#include "renderer/gpu_types.hpp"
+
+namespace renderer {
+
+GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene) {
+  std::vector<gpu::GpuMaterial> materials;
+  for (const scene::Material& m : scene.materials)
+    materials.push_back({glm::vec4(m.base_color, 1.0f), glm::vec4(m.emissive, 0.0f)});
+
+  GpuScene g;
+  g.vertices = vkx::upload_buffer(device, std::as_bytes(std::span(scene.vertices)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  g.indices = vkx::upload_buffer(device, std::as_bytes(std::span(scene.indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  g.materials = vkx::upload_buffer(device, std::as_bytes(std::span(materials)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  g.index_count = static_cast<std::uint32_t>(scene.indices.size());
+  g.draws = scene.draws;
+  return g;
+}
+
+void GpuScene::bind_geometry(VkCommandBuffer cmd) const {
+  const VkDeviceSize offset = 0;
+  const VkBuffer vb = vertices.handle();
+  vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+  vkCmdBindIndexBuffer(cmd, indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+}
+
+}  // namespace renderer

@@ -1,0 +1,12 @@
+// The C++ view of shaders/shared/gpu_types.h, with the layout checks that keep both sides equal.
+#pragma once
+
+#include "shaders/shared/gpu_types.h"
+
+namespace gpu {
+static_assert(sizeof(GpuLight) == 80);
+static_assert(sizeof(GpuMaterial) == 32);
+static_assert(sizeof(GpuFrame) == 144);
+static_assert(sizeof(GpuTonemapParams) == 16);
+static_assert(sizeof(mat4) == 64);
+}  // namespace gpu

@@ -1,0 +1,73 @@
+#include "renderer/passes/shade_pass.hpp"
+
+#include "renderer/gpu_types.hpp"
+#include "renderer/vulkan/vk_check.hpp"
+#include "shaders/shade.comp.h"
+
+namespace renderer {
+namespace {
+
+VkSampler make_sampler(VkDevice device, VkFilter filter, bool compare) {
+  VkSamplerCreateInfo ci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  ci.magFilter = filter;
+  ci.minFilter = filter;
+  ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  ci.addressModeU = ci.addressModeV = ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  ci.compareEnable = compare ? VK_TRUE : VK_FALSE;
+  ci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // lit where the receiver is not behind the stored depth
+  ci.maxLod = 0.0f;
+  VkSampler sampler = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSampler(device, &ci, nullptr, &sampler));
+  return sampler;
+}
+
+}  // namespace
+
+ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
+  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+  vkx::PipelineLayoutDesc layout;
+  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
+                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs),
+                     vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                     vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                     vkx::binding(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                     vkx::binding(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+  pipeline_ = vkx::Pipeline(device, layout, spirv_shade_comp);
+  texel_sampler_ = make_sampler(device.handle(), VK_FILTER_NEAREST, false);
+  shadow_sampler_ = make_sampler(device.handle(), VK_FILTER_LINEAR, true);
+}
+
+ShadePass::~ShadePass() {
+  vkDestroySampler(device_.handle(), texel_sampler_, nullptr);
+  vkDestroySampler(device_.handle(), shadow_sampler_, nullptr);
+}
+
+void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets,
+                       const ShadeInputs& in) const {
+  const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+  const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  vkx::DescriptorWriter(pipeline_.descriptor_set())
+      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.frame.handle())
+      .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.position.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.albedo.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(4, sampled, in.atlas.depth.view(), read, shadow_sampler_)
+      .buffer(5, storage, in.lights.handle())
+      .buffer(6, storage, in.shadow_views.handle())
+      .buffer(7, storage, scene.materials.handle())
+      .buffer(8, storage, targets.linear.handle())
+      .apply(device_.handle());
+
+  pipeline_.bind(cmd);
+  vkCmdDispatch(cmd, (targets.width + gpu::SHADE_GROUP_X - 1) / gpu::SHADE_GROUP_X,
+                (targets.height + gpu::SHADE_GROUP_Y - 1) / gpu::SHADE_GROUP_Y, 1);
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+}  // namespace renderer

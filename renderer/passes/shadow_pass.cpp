@@ -1,0 +1,70 @@
+#include "renderer/passes/shadow_pass.hpp"
+
+#include "shaders/shadow.vert.h"
+
+namespace renderer {
+namespace {
+
+// Slope-scaled bias against acne on surfaces at grazing angles to the light; the shading
+// also offsets its lookups along the normal (see shade.comp).
+constexpr float kSlopeBias = 1.5f;
+
+}  // namespace
+
+ShadowPass::ShadowPass(const vkx::Device& device) : device_(device) {
+  vkx::PipelineLayoutDesc layout;
+  layout.push_constant_bytes = sizeof(glm::mat4);
+  layout.push_constant_stages = VK_SHADER_STAGE_VERTEX_BIT;
+  vkx::GraphicsPipelineDesc g;
+  g.vertex_spirv = spirv_shadow_vert;
+  g.vertex_input = {sizeof(scene::Vertex), {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)}}};
+  g.depth_format = ShadowAtlas::kFormat;
+  g.cull_mode = VK_CULL_MODE_NONE;  // a one-sided wall still blocks light from behind
+  g.depth_bias = true;
+  pipeline_ = vkx::Pipeline(device, layout, g);
+}
+
+void ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, const ShadowAtlas& atlas,
+                        std::span<const glm::mat4> views) const {
+  vkx::transition(cmd, atlas.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                  VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                  VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+  const float res = static_cast<float>(atlas.resolution);
+  const VkViewport viewport{0.0f, 0.0f, res, res, 0.0f, 1.0f};
+  const VkRect2D area{{0, 0}, {atlas.resolution, atlas.resolution}};
+  for (std::uint32_t layer = 0; layer < views.size(); ++layer) {
+    VkRenderingAttachmentInfoKHR depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
+    depth.imageView = atlas.depth.layer_view(layer);
+    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfoKHR info{VK_STRUCTURE_TYPE_RENDERING_INFO_KHR};
+    info.renderArea = area;
+    info.layerCount = 1;
+    info.pDepthAttachment = &depth;
+    device_.cmd_begin_rendering(cmd, &info);
+    if (scene.index_count > 0) {
+      pipeline_.bind(cmd);
+      vkCmdSetViewport(cmd, 0, 1, &viewport);
+      vkCmdSetScissor(cmd, 0, 1, &area);
+      vkCmdSetDepthBias(cmd, 0.0f, 0.0f, kSlopeBias);
+      pipeline_.push(cmd, views[layer]);
+      scene.bind_geometry(cmd);
+      vkCmdDrawIndexed(cmd, scene.index_count, 1, 0, 0, 0);  // materials do not matter for depth
+    }
+    device_.cmd_end_rendering(cmd);
+  }
+  vkx::transition(cmd, atlas.depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_SHADER_READ_BIT);
+}
+
+void ShadowPass::record_skipped(VkCommandBuffer cmd, const ShadowAtlas& atlas) {
+  vkx::transition(cmd, atlas.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+}
+
+}  // namespace renderer

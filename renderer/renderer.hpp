@@ -1,0 +1,54 @@
+// The renderer: turns a validated request into pixels and timing stats on a long-lived
+// device. Pipelines are built once; frame targets and device-resident scenes are kept
+// between requests. One thread renders at a time (the caller serialises).
+#pragma once
+
+#include "api/render_request.hpp"
+#include "api/render_stats.hpp"
+#include "renderer/image/image.hpp"
+#include "renderer/scene/scene.hpp"
+#include "renderer/vulkan/device.hpp"
+
+#include <memory>
+
+namespace renderer {
+
+// Which images come back to the host.
+enum Readback : unsigned {
+  kReadbackDisplay = 1u,  // 8-bit sRGB RGBA, for PNG
+  kReadbackLinear = 2u,   // linear float RGBA, for EXR/PFM and for measurements
+};
+
+// The readback a request's output format needs.
+unsigned readback_for(const api::Output& output);
+
+struct RenderResult {
+  image::Rgba8Image display;   // empty unless kReadbackDisplay
+  image::RgbaF32Image linear;  // empty unless kReadbackLinear
+  api::RenderStats stats;
+};
+
+class Renderer {
+ public:
+  explicit Renderer(const vkx::Device& device);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Renders the built-in scene the request names; throws api::RequestError for an unknown
+  // scene or a request that does not fit the scene.
+  RenderResult render(const api::RenderRequest& request, unsigned readback);
+  RenderResult render(const api::RenderRequest& request) { return render(request, readback_for(request.output)); }
+
+  // Renders a scene given by the caller, uploaded for this call (request.scene is ignored).
+  RenderResult render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback);
+
+  const vkx::Device& device() const { return device_; }
+
+ private:
+  struct Impl;
+  const vkx::Device& device_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace renderer

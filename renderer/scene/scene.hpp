@@ -1,0 +1,57 @@
+// A scene in world space, ready for upload: triangles with per-vertex normals, materials,
+// punctual lights and a default camera. Units are metres and the radiometric units of
+// DESIGN.md section 2. Geometry is pre-transformed to world space (no node hierarchy here).
+#pragma once
+
+#include "api/render_request.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace scene {
+
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+};
+static_assert(sizeof(Vertex) == 32, "Vertex is uploaded as-is");
+
+struct Material {
+  std::string name;
+  glm::vec3 base_color{0.8f};  // linear albedo (Lambertian reflectance), each channel in [0, 1]
+  glm::vec3 emissive{0.0f};    // emitted radiance, W/(m^2 sr)
+};
+
+// A run of triangles sharing one material.
+struct Draw {
+  std::uint32_t first_index = 0;
+  std::uint32_t index_count = 0;
+  std::uint32_t material = 0;
+};
+
+struct Bounds {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+  glm::vec3 center() const { return 0.5f * (min + max); }
+  float radius() const { return 0.5f * glm::length(max - min); }  // of the bounding sphere
+};
+
+struct Scene {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+  std::vector<Material> materials;
+  std::vector<Draw> draws;
+  std::vector<api::Light> lights;
+  api::Camera camera;  // the default camera
+  Bounds bounds;       // of the geometry; recompute with update_bounds() after edits
+
+  void update_bounds();
+  std::size_t triangle_count() const { return indices.size() / 3; }
+};
+
+}  // namespace scene

@@ -1,0 +1,97 @@
+// Pipelines with their layouts and one descriptor set each. Every pass owns one Pipeline:
+// created once per process (through the device's pipeline cache), its descriptor set
+// rewritten when the frame's resources change.
+#pragma once
+
+#include "renderer/vulkan/device.hpp"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace vkx {
+
+struct PipelineLayoutDesc {
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  std::uint32_t push_constant_bytes = 0;
+  VkShaderStageFlags push_constant_stages = 0;
+};
+
+struct VertexInputDesc {
+  std::uint32_t stride = 0;
+  std::vector<VkVertexInputAttributeDescription> attributes;
+};
+
+struct GraphicsPipelineDesc {
+  std::span<const std::uint32_t> vertex_spirv;
+  std::span<const std::uint32_t> fragment_spirv;  // empty: depth-only
+  VertexInputDesc vertex_input;
+  std::vector<VkFormat> color_formats;
+  VkFormat depth_format = VK_FORMAT_UNDEFINED;
+  VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
+  VkFrontFace front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  bool depth_bias = false;  // constant and slope factors set dynamically
+};
+
+class Pipeline {
+ public:
+  Pipeline() = default;
+  Pipeline(const Device& device, const PipelineLayoutDesc& layout, std::span<const std::uint32_t> compute_spirv);
+  Pipeline(const Device& device, const PipelineLayoutDesc& layout, const GraphicsPipelineDesc& graphics);
+  ~Pipeline();
+  Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }
+  Pipeline& operator=(Pipeline&& other) noexcept;
+
+  VkPipeline handle() const { return pipeline_; }
+  VkPipelineLayout layout() const { return layout_; }
+  VkDescriptorSet descriptor_set() const { return set_; }
+  VkPipelineBindPoint bind_point() const { return bind_point_; }
+
+  // Binds the pipeline and its descriptor set.
+  void bind(VkCommandBuffer cmd) const;
+  template <typename T>
+  void push(VkCommandBuffer cmd, const T& constants) const {
+    vkCmdPushConstants(cmd, layout_, push_stages_, 0, sizeof(T), &constants);
+  }
+
+ private:
+  void create_layout(const PipelineLayoutDesc& desc);
+  void release();
+
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  VkShaderStageFlags push_stages_ = 0;
+  VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+};
+
+// Collects descriptor writes for one set and applies them in one call.
+class DescriptorWriter {
+ public:
+  explicit DescriptorWriter(VkDescriptorSet set) : set_(set) {}
+  DescriptorWriter& buffer(std::uint32_t binding, VkDescriptorType type, VkBuffer buffer,
+                           VkDeviceSize size = VK_WHOLE_SIZE);
+  DescriptorWriter& image(std::uint32_t binding, VkDescriptorType type, VkImageView view, VkImageLayout layout,
+                          VkSampler sampler = VK_NULL_HANDLE);
+  void apply(VkDevice device);
+
+ private:
+  VkDescriptorSet set_;
+  std::vector<VkDescriptorBufferInfo> buffers_;
+  std::vector<VkDescriptorImageInfo> images_;
+  std::vector<std::pair<std::uint32_t, VkDescriptorType>> slots_;
+  std::vector<bool> is_image_;
+};
+
+// Shorthand for a layout binding visible to `stages`.
+inline VkDescriptorSetLayoutBinding binding(std::uint32_t index, VkDescriptorType type, VkShaderStageFlags stages) {
+  return VkDescriptorSetLayoutBinding{index, type, 1, stages, nullptr};
+}
+
+}  // namespace vkx

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The single source of truth for the project's dependencies: Debian 12 packages only.
+# Used by scripts/run.sh, scripts/test.sh, .ci/run and docker/Dockerfile.
+# Installs only what is missing, so a second run costs one dpkg query.
+set -euo pipefail
+
+PACKAGES=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config
+  # Vulkan: loader + headers, lavapipe (CPU driver), validation layers for tests
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
+  # shaders: GLSL -> SPIR-V at build time
+  glslang-tools spirv-tools
+  # maths, scenes, HTTP, JSON
+  libglm-dev libtinygltf-dev libcpp-httplib-dev nlohmann-json3-dev
+  # image I/O: fast deflate for PNG encoding, stb for decoding in tests, tinyexr for EXR
+  libdeflate-dev libstb-dev libtinyexr-dev zlib1g-dev
+  # tests and benchmarks
+  libgtest-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}" >&2
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,71 @@
+// Struct layouts and constants shared by C++ and GLSL (std430 / std140-compatible:
+// only 16-byte vectors and matrices). C++ checks the sizes with static_assert in
+// renderer/gpu_types.hpp; a change here changes both sides at once.
+#ifndef LPV_GPU_TYPES_H
+#define LPV_GPU_TYPES_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+#include <cstdint>
+namespace gpu {
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using mat4 = glm::mat4;
+using uint = std::uint32_t;
+#define LPV_CONST inline constexpr uint
+#else
+#define LPV_CONST const uint
+#endif
+
+LPV_CONST LIGHT_DIRECTIONAL = 0u;
+LPV_CONST LIGHT_POINT = 1u;
+LPV_CONST LIGHT_SPOT = 2u;
+
+// Output views of the shade pass (api::View in the same order).
+LPV_CONST VIEW_FINAL = 0u;
+LPV_CONST VIEW_DIRECT = 1u;
+LPV_CONST VIEW_ALBEDO = 2u;
+LPV_CONST VIEW_NORMAL = 3u;
+LPV_CONST VIEW_DEPTH = 4u;
+
+LPV_CONST TONEMAP_NONE = 0u;
+LPV_CONST TONEMAP_REINHARD = 1u;
+LPV_CONST TONEMAP_ACES = 2u;
+
+LPV_CONST SHADE_GROUP_X = 8u;  // shade and tonemap work groups: 8 x 8 pixels
+LPV_CONST SHADE_GROUP_Y = 8u;
+
+struct GpuLight {
+  vec4 position;   // xyz: world position (point, spot)
+  vec4 direction;  // xyz: unit direction the light travels; w: range in metres (0 = unlimited)
+  vec4 radiant;    // rgb: color * intensity (W/sr for point and spot, W/m^2 for directional)
+  vec4 params;     // x, y: spot cone scale and offset (glTF); z: shadow normal offset per metre
+                   // of distance (point, spot) or in metres (directional)
+  uvec4 info;      // x: LIGHT_*; y: first shadow map layer; z: shadow layer count: 0 = unshadowed,
+                   // 1 = one map, 6 = a cube (+X, -X, +Y, -Y, +Z, -Z)
+};
+
+struct GpuMaterial {
+  vec4 base_color;  // rgb: linear albedo
+  vec4 emissive;    // rgb: emitted radiance
+};
+
+struct GpuFrame {
+  mat4 view_proj;         // world -> clip of the camera (Vulkan clip space, Y down)
+  vec4 camera_position;   // xyz
+  vec4 camera_forward;    // xyz: unit view direction
+  vec4 depth_range;       // x: near, y: far (metres along camera_forward)
+  vec4 exposure;          // x: 2^exposure
+  uvec4 size_view;        // x: width, y: height, z: VIEW_*, w: light count
+};
+
+struct GpuTonemapParams {
+  uvec4 size_mode;  // x: width, y: height, z: TONEMAP_*, w: 1 = display-encode (sRGB), 0 = data (linear)
+};
+
+#ifdef __cplusplus
+}  // namespace gpu
+#undef LPV_CONST
+#endif
+
+#endif

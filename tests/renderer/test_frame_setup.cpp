@@ -1,0 +1,137 @@
+// The CPU-side maths of a frame: lights after edits, camera planes, shadow views.
+#include "api/request_error.hpp"
+#include "renderer/frame_setup.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+const scene::Scene& cornell() {
+  static const scene::Scene s = *scene::make_builtin_scene("cornell-box");
+  return s;
+}
+
+glm::vec3 project(const glm::mat4& view_proj, glm::vec3 p) {
+  const glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
+  return glm::vec3(clip) / clip.w;
+}
+
+bool inside_clip_volume(glm::vec3 ndc) {
+  return std::abs(ndc.x) <= 1.0001f && std::abs(ndc.y) <= 1.0001f && ndc.z >= -1e-4f && ndc.z <= 1.0001f;
+}
+
+std::vector<glm::vec3> corners(const scene::Bounds& b) {
+  std::vector<glm::vec3> c;
+  for (int i = 0; i < 8; ++i) c.push_back({i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y, i & 4 ? b.max.z : b.min.z});
+  return c;
+}
+
+TEST(ResolveLights, SceneLightsByDefaultReplacedByRequestThenEdited) {
+  api::RenderRequest request;
+  EXPECT_EQ(renderer::resolve_lights(cornell(), request).size(), 1u);
+
+  api::Light a, b;
+  a.intensity = 1.0f;
+  b.intensity = 2.0f;
+  request.lights = std::vector<api::Light>{a, b};
+  api::LightEdit edit;
+  edit.index = 1;
+  edit.intensity = 7.0f;
+  edit.direction = glm::vec3(0, 0, -3);
+  request.light_edits.push_back(edit);
+  const auto lights = renderer::resolve_lights(cornell(), request);
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_EQ(lights[0].intensity, 1.0f);
+  EXPECT_EQ(lights[1].intensity, 7.0f);
+  EXPECT_FLOAT_EQ(glm::length(lights[1].direction), 1.0f) << "directions come out normalised";
+}
+
+TEST(ResolveLights, EditThatBreaksConeOrderNamesTheEdit) {
+  api::RenderRequest request;
+  api::LightEdit edit;
+  edit.index = 0;
+  edit.inner_cone_deg = 50.0f;  // the Cornell spot's outer cone is 40
+  request.light_edits.push_back(edit);
+  try {
+    renderer::resolve_lights(cornell(), request);
+    FAIL();
+  } catch (const api::RequestError& e) {
+    EXPECT_EQ(e.field(), "light_edits[0]");
+  }
+}
+
+TEST(SetupCamera, FittedPlanesEncloseTheSceneAndFlipYForVulkan) {
+  const auto cam = renderer::setup_camera(cornell().camera, cornell().bounds, 1.0f);
+  EXPECT_GT(cam.near, 0.0f);
+  EXPECT_LT(cam.near, cam.far);
+  // Everything in front of the camera lies between the planes.
+  for (glm::vec3 c : corners(cornell().bounds)) {
+    const float depth = glm::dot(c - cam.position, cam.forward);
+    EXPECT_GE(depth, cam.near);
+    EXPECT_LE(depth, cam.far);
+  }
+  // A point above the target lands in the upper half of the image: negative NDC y in Vulkan.
+  EXPECT_LT(project(cam.view_proj, cornell().camera.target + glm::vec3(0, 0.5f, 0)).y, 0.0f);
+}
+
+TEST(SetupCamera, GivenPlanesAreKept) {
+  api::Camera camera = cornell().camera;
+  camera.near = 0.25f;
+  camera.far = 9.0f;
+  const auto cam = renderer::setup_camera(camera, cornell().bounds, 2.0f);
+  EXPECT_EQ(cam.near, 0.25f);
+  EXPECT_EQ(cam.far, 9.0f);
+}
+
+TEST(SetupLights, PointLightGetsSixCubeFacesEachCentredOnItsAxis) {
+  api::Light point;
+  point.type = api::LightType::point;
+  point.position = {0.1f, 1.0f, -0.2f};
+  const auto setup = renderer::setup_lights({point}, cornell().bounds, api::Shadows{});
+  ASSERT_EQ(setup.shadow_views.size(), 6u);
+  EXPECT_EQ(setup.lights[0].info.z, 6u);
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (int face = 0; face < 6; ++face) {
+    const glm::vec3 ndc = project(setup.shadow_views[face], point.position + 0.5f * axes[face]);
+    EXPECT_NEAR(ndc.x, 0.0f, 1e-5f) << face;
+    EXPECT_NEAR(ndc.y, 0.0f, 1e-5f) << face;
+  }
+}
+
+TEST(SetupLights, SpotMapCoversItsOuterConeAndDirectionalMapCoversTheScene) {
+  api::Light spot = cornell().lights[0];
+  api::Light sun;
+  sun.type = api::LightType::directional;
+  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+  const auto setup = renderer::setup_lights({spot, sun}, cornell().bounds, api::Shadows{});
+  ASSERT_EQ(setup.shadow_views.size(), 2u);
+  EXPECT_EQ(setup.lights[1].info.y, 1u) << "the sun's map follows the spot's";
+
+  // A direction on the spot's outer cone projects inside its map.
+  const float outer = glm::radians(spot.outer_cone_deg);
+  const glm::vec3 on_cone = spot.position + glm::vec3(std::sin(outer), -std::cos(outer), 0.0f);
+  EXPECT_TRUE(inside_clip_volume(project(setup.shadow_views[0], on_cone)));
+  for (glm::vec3 c : corners(cornell().bounds)) EXPECT_TRUE(inside_clip_volume(project(setup.shadow_views[1], c)));
+}
+
+TEST(SetupLights, DarkLightsAndDisabledShadowsGetNoShadowMap) {
+  api::Light dark;
+  dark.intensity = 0.0f;
+  EXPECT_TRUE(renderer::setup_lights({dark}, cornell().bounds, api::Shadows{}).shadow_views.empty());
+  api::Shadows off;
+  off.enabled = false;
+  const auto setup = renderer::setup_lights(cornell().lights, cornell().bounds, off);
+  EXPECT_TRUE(setup.shadow_views.empty());
+  EXPECT_EQ(setup.lights[0].info.z, 0u);
+}
+
+TEST(SetupLights, RadiantValueIsColourTimesIntensity) {
+  api::Light l;
+  l.color = {1.0f, 0.5f, 0.0f};
+  l.intensity = 8.0f;
+  const auto setup = renderer::setup_lights({l}, cornell().bounds, api::Shadows{});
+  EXPECT_EQ(glm::vec3(setup.lights[0].radiant), glm::vec3(8.0f, 4.0f, 0.0f));
+}
+
+}  // namespace

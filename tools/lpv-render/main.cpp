@@ -1,0 +1,133 @@
+// lpv-render: one request in, one image file (and optionally stats) out.
+#include "api/request_error.hpp"
+#include "api/request_json.hpp"
+#include "cli_options.hpp"
+#include "renderer/image/file_io.hpp"
+#include "renderer/output.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+
+std::string read_request_text(const std::string& file) {
+  std::ostringstream text;
+  if (file == "-") {
+    text << std::cin.rdbuf();
+    return text.str();
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw cli::UsageError("cannot read request file '" + file + "'");
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The format follows the request; an .exr or .pfm output name picks that format when the
+// request left the default, and a name that contradicts an explicit format is an error.
+void reconcile_format(api::RenderRequest& request, const std::string& output_file, bool format_given) {
+  const std::string ext = std::filesystem::path(output_file).extension().string();
+  for (api::ImageFormat f : {api::ImageFormat::png, api::ImageFormat::exr, api::ImageFormat::pfm}) {
+    if (ext != renderer::file_extension(f)) continue;
+    if (!format_given) request.output.format = f;
+    if (request.output.format != f)
+      throw cli::UsageError("output file '" + output_file + "' does not match the requested format '" +
+                            api::to_string(request.output.format) + "'");
+  }
+}
+
+void print_summary(const api::RenderStats& s, const std::string& file) {
+  std::fprintf(stderr, "%s: %ux%u %s, %u frame(s) on %s\n", file.c_str(), s.width, s.height, s.view.c_str(), s.frames,
+               s.device.c_str());
+  std::fprintf(stderr, "  gpu %.3f ms (median):", s.gpu_ms.median);
+  for (const auto& p : s.passes)
+    if (p.ran) std::fprintf(stderr, " %s %.3f", p.name.c_str(), p.gpu_ms.median);
+  std::fprintf(stderr, "\n  wall %.3f ms per frame, encode %.3f ms\n", s.wall_ms.median, s.cpu_ms.at("encode").median);
+}
+
+int run(int argc, char** argv) {
+  const cli::Options options = cli::parse(argc, argv);
+  if (options.help) {
+    std::fputs(cli::usage(), stdout);
+    return 0;
+  }
+  if (options.list_scenes) {
+    for (const auto& s : scene::builtin_scenes()) std::printf("%-20s %s\n", s.name.c_str(), s.description.c_str());
+    return 0;
+  }
+  if (options.list_devices) {
+    const auto devices = vkx::Device::enumerate();
+    for (std::size_t i = 0; i < devices.size(); ++i)
+      std::printf("[%zu] %s (%s)\n", i, devices[i].name.c_str(), devices[i].driver.c_str());
+    return 0;
+  }
+
+  api::RenderRequest request;
+  bool format_given = false;
+  if (options.request_file) {
+    const std::string text = read_request_text(*options.request_file);
+    request = api::parse_render_request(text);
+    const auto json = nlohmann::json::parse(text);
+    format_given = json.contains("output") && json["output"].contains("format");
+  }
+  if (options.scene) request.scene = *options.scene;
+  const std::string output_file =
+      options.output_file.value_or(request.scene + renderer::file_extension(request.output.format));
+  reconcile_format(request, output_file, format_given);
+
+  vkx::DeviceOptions device_options = vkx::DeviceOptions::from_environment();
+  if (options.device) device_options.selector = *options.device;
+  if (options.validation) device_options.validation = true;
+  vkx::Device device(device_options);
+  renderer::Renderer renderer(device);
+  renderer::RenderResult result = renderer.render(request);
+
+  const auto encode_start = std::chrono::steady_clock::now();
+  const std::vector<std::uint8_t> bytes = renderer::encode_output(result, request.output.format);
+  const double encode_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - encode_start).count();
+  result.stats.cpu_ms["encode"] = api::TimeSummary::of({encode_ms});
+  image::write_file_atomically(output_file, bytes);
+
+  if (options.stats_file) {
+    const std::string json = api::to_json(result.stats).dump(2) + "\n";
+    if (*options.stats_file == "-") {
+      std::fputs(json.c_str(), stdout);
+    } else {
+      image::write_file_atomically(*options.stats_file,
+                                   std::span(reinterpret_cast<const std::uint8_t*>(json.data()), json.size()));
+    }
+  }
+  if (!options.quiet) print_summary(result.stats, output_file);
+  if (device_options.validation && !device.validation_messages().empty()) {
+    std::fprintf(stderr, "lpv-render: %zu validation message(s)\n", device.validation_messages().size());
+    return kExitFailure;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const cli::UsageError& e) {
+    std::fprintf(stderr, "lpv-render: %s\n\n%s", e.what(), cli::usage());
+    return kExitBadInput;
+  } catch (const api::RequestError& e) {
+    std::fprintf(stderr, "lpv-render: bad request: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lpv-render: %s\n", e.what());
+    return kExitFailure;
+  }
+}
