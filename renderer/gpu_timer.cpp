@@ -2,10 +2,13 @@
 
 #include "renderer/vulkan/vk_check.hpp"
 
+#include <vector>
+
 namespace renderer {
 
-GpuTimer::GpuTimer(const vkx::Device& device, std::uint32_t scopes)
-    : device_(device.handle()), scopes_(scopes), period_ns_(device.info().timestamp_period_ns) {
+PassTimer::PassTimer(const vkx::Device& device)
+    : device_(device.handle()), period_ns_(device.info().timestamp_period_ns) {
+  if (device.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU) return;
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(device.physical(), &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
@@ -15,33 +18,30 @@ GpuTimer::GpuTimer(const vkx::Device& device, std::uint32_t scopes)
 
   VkQueryPoolCreateInfo ci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   ci.queryType = VK_QUERY_TYPE_TIMESTAMP;
-  ci.queryCount = 2 * scopes;
+  ci.queryCount = 2;
   VK_CHECK(vkCreateQueryPool(device_, &ci, nullptr, &pool_));
 }
 
-GpuTimer::~GpuTimer() { vkDestroyQueryPool(device_, pool_, nullptr); }
-
-void GpuTimer::reset(VkCommandBuffer cmd) const { vkCmdResetQueryPool(cmd, pool_, 0, 2 * scopes_); }
-
-void GpuTimer::begin(VkCommandBuffer cmd, std::uint32_t scope) const {
-  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, 2 * scope);
+PassTimer::~PassTimer() {
+  if (pool_) vkDestroyQueryPool(device_, pool_, nullptr);
 }
 
-void GpuTimer::end(VkCommandBuffer cmd, std::uint32_t scope) const {
-  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 2 * scope + 1);
+void PassTimer::begin(VkCommandBuffer cmd) const {
+  if (!pool_) return;
+  vkCmdResetQueryPool(cmd, pool_, 0, 2);
+  vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, 0);
 }
 
-std::vector<double> GpuTimer::read_ms(const std::vector<bool>& recorded) const {
-  std::vector<double> ms(scopes_, 0.0);
-  for (std::uint32_t s = 0; s < scopes_; ++s) {
-    if (!recorded[s]) continue;
-    std::uint64_t ticks[2] = {0, 0};
-    VK_CHECK(vkGetQueryPoolResults(device_, pool_, 2 * s, 2, sizeof(ticks), ticks, sizeof(std::uint64_t),
-                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
-    const std::uint64_t delta = (ticks[1] - ticks[0]) & valid_mask_;
-    ms[s] = static_cast<double>(delta) * period_ns_ * 1e-6;
-  }
-  return ms;
+void PassTimer::end(VkCommandBuffer cmd) const {
+  if (pool_) vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 1);
+}
+
+double PassTimer::device_ms(double submit_wait_ms) const {
+  if (!pool_) return submit_wait_ms;
+  std::uint64_t ticks[2] = {0, 0};
+  VK_CHECK(vkGetQueryPoolResults(device_, pool_, 0, 2, sizeof(ticks), ticks, sizeof(std::uint64_t),
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  return static_cast<double>((ticks[1] - ticks[0]) & valid_mask_) * period_ns_ * 1e-6;
 }
 
 }  // namespace renderer

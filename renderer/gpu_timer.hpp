@@ -1,4 +1,7 @@
-// GPU time per pass from timestamp queries: one begin/end pair per scope and frame.
+// Device time per pass. Each pass is submitted on its own and waited for, so its time is
+// its own: on a GPU from a pair of timestamp queries around its commands; on a CPU device
+// (lavapipe) from the wall clock around the submission, because lavapipe may write a
+// timestamp before its rasteriser has finished the work recorded ahead of it.
 #pragma once
 
 #include "renderer/vulkan/device.hpp"
@@ -6,30 +9,28 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
-#include <vector>
 
 namespace renderer {
 
-class GpuTimer {
+class PassTimer {
  public:
-  GpuTimer(const vkx::Device& device, std::uint32_t scopes);
-  ~GpuTimer();
-  GpuTimer(const GpuTimer&) = delete;
-  GpuTimer& operator=(const GpuTimer&) = delete;
+  explicit PassTimer(const vkx::Device& device);
+  ~PassTimer();
+  PassTimer(const PassTimer&) = delete;
+  PassTimer& operator=(const PassTimer&) = delete;
 
-  void reset(VkCommandBuffer cmd) const;  // before the first scope of a frame
-  void begin(VkCommandBuffer cmd, std::uint32_t scope) const;
-  void end(VkCommandBuffer cmd, std::uint32_t scope) const;
+  // Bracket a pass's commands in its command buffer.
+  void begin(VkCommandBuffer cmd) const;
+  void end(VkCommandBuffer cmd) const;
 
-  // Milliseconds of each scope of the last completed frame; scopes not recorded give 0.
-  std::vector<double> read_ms(const std::vector<bool>& recorded) const;
+  // Milliseconds the device spent on the pass, given the wall time of its submit-and-wait.
+  double device_ms(double submit_wait_ms) const;
 
  private:
   VkDevice device_;
-  VkQueryPool pool_ = VK_NULL_HANDLE;
-  std::uint32_t scopes_;
+  VkQueryPool pool_ = VK_NULL_HANDLE;  // null on CPU devices
   double period_ns_;
-  std::uint64_t valid_mask_;
+  std::uint64_t valid_mask_ = 0;
 };
 
 }  // namespace renderer

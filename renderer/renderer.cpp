@@ -82,7 +82,7 @@ unsigned readback_for(const api::Output& output) {
 
 struct Renderer::Impl {
   explicit Impl(const vkx::Device& device)
-      : device(device), shadow(device), gbuffer(device), shade(device), tonemap(device), timer(device, kPassCount) {
+      : device(device), shadow(device), gbuffer(device), shade(device), tonemap(device), timer(device) {
     VkCommandPoolCreateInfo pool_ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_ci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool_ci.queueFamilyIndex = device.queue_family();
@@ -100,7 +100,7 @@ struct Renderer::Impl {
   GBufferPass gbuffer;
   ShadePass shade;
   TonemapPass tonemap;
-  GpuTimer timer;
+  PassTimer timer;
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandBuffer commands = VK_NULL_HANDLE;
 
@@ -115,8 +115,8 @@ struct Renderer::Impl {
 
   RenderResult render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
                       unsigned readback, double upload_ms);
-  void record(const FramePlan& plan, const GpuScene& gpu, const api::RenderRequest& request,
-              std::span<const glm::mat4> shadow_views, unsigned readback);
+  void record_pass(Pass pass, const FramePlan& plan, const GpuScene& gpu, const api::RenderRequest& request,
+                   std::span<const glm::mat4> shadow_views, unsigned readback);
 };
 
 Renderer::Renderer(const vkx::Device& device) : device_(device), impl_(std::make_unique<Impl>(device)) {}
@@ -194,18 +194,27 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   RenderResult result;
   std::vector<double> record_ms, wait_ms, readback_ms, wall_ms, total_gpu_ms;
   std::vector<std::vector<double>> pass_ms(kPassCount);
-  const std::vector<bool> recorded(plan.run, plan.run + kPassCount);
+  const std::size_t pixels = std::size_t(out.width) * out.height;
   for (std::uint32_t f = 0; f < request.repeat; ++f) {
     const auto frame_start = Clock::now();
-    record(plan, gpu, request, light_setup.shadow_views, readback);
-    record_ms.push_back(ms_since(frame_start));
-
-    const auto submit_start = Clock::now();
-    device.submit_and_wait(commands);
-    wait_ms.push_back(ms_since(submit_start));
+    double frame_record_ms = 0.0, frame_wait_ms = 0.0, frame_gpu_ms = 0.0;
+    for (std::uint32_t p = 0; p < kPassCount; ++p) {
+      if (!plan.run[p]) continue;
+      const auto record_start = Clock::now();
+      record_pass(Pass(p), plan, gpu, request, light_setup.shadow_views, readback);
+      frame_record_ms += ms_since(record_start);
+      const auto submit_start = Clock::now();
+      device.submit_and_wait(commands);
+      const double waited = ms_since(submit_start);
+      frame_wait_ms += waited;
+      pass_ms[p].push_back(timer.device_ms(waited));
+      frame_gpu_ms += pass_ms[p].back();
+    }
+    record_ms.push_back(frame_record_ms);
+    wait_ms.push_back(frame_wait_ms);
+    total_gpu_ms.push_back(frame_gpu_ms);
 
     const auto readback_start = Clock::now();
-    const std::size_t pixels = std::size_t(out.width) * out.height;
     if (readback & kReadbackDisplay) {
       targets->display_readback.invalidate();
       result.display.width = out.width;
@@ -222,14 +231,6 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     }
     readback_ms.push_back(ms_since(readback_start));
     wall_ms.push_back(ms_since(frame_start));
-
-    const std::vector<double> gpu_ms = timer.read_ms(recorded);
-    double sum = 0.0;
-    for (std::uint32_t p = 0; p < kPassCount; ++p) {
-      pass_ms[p].push_back(gpu_ms[p]);
-      sum += gpu_ms[p];
-    }
-    total_gpu_ms.push_back(sum);
   }
 
   api::RenderStats& stats = result.stats;
@@ -258,49 +259,46 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   return result;
 }
 
-void Renderer::Impl::record(const FramePlan& plan, const GpuScene& gpu, const api::RenderRequest& request,
-                            std::span<const glm::mat4> shadow_views, unsigned readback) {
+// Records one pass into the command buffer, bracketed by the pass timer.
+void Renderer::Impl::record_pass(Pass pass, const FramePlan& plan, const GpuScene& gpu, const api::RenderRequest& request,
+                                 std::span<const glm::mat4> shadow_views, unsigned readback) {
   VK_CHECK(vkResetCommandBuffer(commands, 0));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VK_CHECK(vkBeginCommandBuffer(commands, &begin));
   VkCommandBuffer cmd = commands;
-  timer.reset(cmd);
-
-  if (plan.run[kShadow]) {
-    timer.begin(cmd, kShadow);
-    shadow.record(cmd, gpu, *atlas, shadow_views);
-    timer.end(cmd, kShadow);
-  } else {
-    ShadowPass::record_skipped(cmd, *atlas);
+  timer.begin(cmd);
+  switch (pass) {
+    case kShadow:
+      shadow.record(cmd, gpu, *atlas, shadow_views);
+      break;
+    case kGBuffer:
+      // The shading binds the atlas even when no map was drawn (no light samples it then).
+      if (!plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
+      gbuffer.record(cmd, gpu, *targets, frame_uniforms);
+      break;
+    case kShade:
+      shade.record(cmd, gpu, *targets, {frame_uniforms, light_buffer, shadow_view_buffer, *atlas});
+      break;
+    case kTonemap:
+      tonemap.record(cmd, *targets, request.output.tonemap,
+                     request.output.view != api::View::normal && request.output.view != api::View::depth);
+      break;
+    case kReadback: {
+      auto copy = [&](const vkx::Buffer& from, const vkx::Buffer& to) {
+        const VkBufferCopy region{0, 0, from.size()};
+        vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
+      };
+      if (readback & kReadbackDisplay) copy(targets->display, targets->display_readback);
+      if (readback & kReadbackLinear) copy(targets->linear, targets->linear_readback);
+      vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+      break;
+    }
+    case kPassCount:
+      break;
   }
-
-  timer.begin(cmd, kGBuffer);
-  gbuffer.record(cmd, gpu, *targets, frame_uniforms);
-  timer.end(cmd, kGBuffer);
-
-  timer.begin(cmd, kShade);
-  shade.record(cmd, gpu, *targets, {frame_uniforms, light_buffer, shadow_view_buffer, *atlas});
-  timer.end(cmd, kShade);
-
-  const bool display = (readback & kReadbackDisplay) != 0;
-  if (display) {
-    timer.begin(cmd, kTonemap);
-    tonemap.record(cmd, *targets, request.output.tonemap,
-                   request.output.view != api::View::normal && request.output.view != api::View::depth);
-    timer.end(cmd, kTonemap);
-  }
-
-  timer.begin(cmd, kReadback);
-  auto copy = [&](const vkx::Buffer& from, const vkx::Buffer& to) {
-    const VkBufferCopy region{0, 0, from.size()};
-    vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
-  };
-  if (display) copy(targets->display, targets->display_readback);
-  if (readback & kReadbackLinear) copy(targets->linear, targets->linear_readback);
-  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                      VK_ACCESS_HOST_READ_BIT);
-  timer.end(cmd, kReadback);
+  timer.end(cmd);
   VK_CHECK(vkEndCommandBuffer(cmd));
 }
 
