@@ -1,0 +1,107 @@
+// The device layer: errors that name the call and the VkResult, device selection, and a
+// pipeline cache file that survives restarts and corruption.
+#include "gpu_test.hpp"
+
+#include "renderer/vulkan/vk_check.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+namespace {
+
+TEST(VkCheck, FailureNamesTheCallAndTheResult) {
+  try {
+    VK_CHECK(VK_ERROR_DEVICE_LOST);
+    FAIL() << "expected a VulkanError";
+  } catch (const vkx::VulkanError& e) {
+    EXPECT_EQ(e.result(), VK_ERROR_DEVICE_LOST);
+    EXPECT_STREQ(e.what(), "VK_ERROR_DEVICE_LOST failed: VK_ERROR_DEVICE_LOST");
+  }
+  EXPECT_STREQ(vkx::result_name(VK_ERROR_OUT_OF_DEVICE_MEMORY), "VK_ERROR_OUT_OF_DEVICE_MEMORY");
+  EXPECT_NO_THROW(VK_CHECK(VK_SUCCESS));
+}
+
+TEST(DeviceSelection, UnknownNameOrIndexListsTheDevices) {
+  for (const char* selector : {"no-such-device", "97"}) {
+    vkx::DeviceOptions options;
+    options.selector = selector;
+    try {
+      vkx::Device device(options);
+      FAIL() << "expected an error for " << selector;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("devices:"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(DeviceSelection, DefaultIsTheCpuDeviceWhenPresent) {
+  const auto devices = vkx::Device::enumerate();
+  ASSERT_FALSE(devices.empty());
+  const bool has_cpu = std::any_of(devices.begin(), devices.end(),
+                                   [](const vkx::DeviceInfo& d) { return d.type == VK_PHYSICAL_DEVICE_TYPE_CPU; });
+  if (!has_cpu) GTEST_SKIP() << "no CPU Vulkan device here";
+  vkx::Device device(vkx::DeviceOptions{});
+  EXPECT_EQ(device.info().type, VK_PHYSICAL_DEVICE_TYPE_CPU);
+  EXPECT_GE(device.info().api_version, VK_API_VERSION_1_2);
+}
+
+TEST(PipelineCache, IsWrittenOnExitAndACorruptFileIsIgnored) {
+  const auto dir = std::filesystem::temp_directory_path() / ("lpv-cache-test-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  vkx::DeviceOptions options;
+  options.pipeline_cache_file = dir / "cache.bin";
+  {
+    vkx::Device device(options);
+    renderer::Renderer renderer(device);  // creates every pipeline through the cache
+  }
+  ASSERT_TRUE(std::filesystem::exists(options.pipeline_cache_file));
+  EXPECT_GE(std::filesystem::file_size(options.pipeline_cache_file), sizeof(VkPipelineCacheHeaderVersionOne));
+
+  std::ofstream(options.pipeline_cache_file, std::ios::binary | std::ios::trunc) << "not a pipeline cache";
+  {
+    vkx::Device device(options);
+    renderer::Renderer renderer(device);
+    api::RenderRequest request;
+    request.output.width = request.output.height = 16;
+    EXPECT_EQ(renderer.render(request).display.pixels.size(), 16u * 16u * 4u);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+class EdgeScenes : public gpu_test::GpuTest {};
+
+TEST_F(EdgeScenes, EmptySceneWithoutLightsRendersBlackAndSkipsShadows) {
+  scene::Scene empty = scene::SceneBuilder("empty").build();
+  api::Camera camera;
+  const auto result = gpu_test::renderer().render(empty, gpu_test::linear_request(32, 24, camera),
+                                                  renderer::kReadbackLinear | renderer::kReadbackDisplay);
+  for (float v : result.linear.pixels) ASSERT_EQ(v, 0.0f);
+  EXPECT_EQ(result.display.pixels.size(), 32u * 24u * 4u);
+  EXPECT_FALSE(result.stats.passes[0].ran);
+  EXPECT_EQ(result.stats.passes[0].reason, "no light emits");
+}
+
+TEST_F(EdgeScenes, ZeroIntensityLightGivesBlackLitViewAndNoShadowMap) {
+  api::RenderRequest request;
+  request.output.width = request.output.height = 64;
+  request.light_edits.push_back({});
+  request.light_edits[0].intensity = 0.0f;
+  const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear);
+  for (std::size_t i = 0; i < result.linear.pixels.size(); i += 4) ASSERT_EQ(result.linear.pixels[i], 0.0f);
+  EXPECT_FALSE(result.stats.passes[0].ran);
+}
+
+TEST_F(EdgeScenes, ResolutionChangesBetweenRequestsReuseNothingStale) {
+  api::RenderRequest request;
+  for (std::uint32_t size : {64u, 17u, 64u}) {
+    request.output.width = size;
+    request.output.height = size + 3;
+    const auto result = gpu_test::renderer().render(request);
+    EXPECT_EQ(result.display.width, size);
+    EXPECT_EQ(result.display.pixels.size(), std::size_t(size) * (size + 3) * 4);
+  }
+}
+
+}  // namespace
