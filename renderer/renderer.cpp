@@ -68,6 +68,16 @@ FramePlan plan_frame(const api::RenderRequest& request, const LightSetup& lights
   return plan;
 }
 
+// An RGBA image of the output's size from a mapped readback buffer.
+template <typename Image>
+void copy_to_host(const vkx::Buffer& readback, const api::Output& out, Image& image) {
+  readback.invalidate();
+  image.width = out.width;
+  image.height = out.height;
+  image.pixels.resize(std::size_t(out.width) * out.height * 4);
+  std::memcpy(image.pixels.data(), readback.mapped(), image.pixels.size() * sizeof(image.pixels[0]));
+}
+
 void ensure_upload_capacity(const vkx::Device& device, vkx::Buffer& buffer, VkDeviceSize bytes,
                             VkBufferUsageFlags usage) {
   bytes = std::max<VkDeviceSize>(bytes, 256);  // never zero-sized, even with no lights
@@ -194,7 +204,6 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   RenderResult result;
   std::vector<double> record_ms, wait_ms, readback_ms, wall_ms, total_gpu_ms;
   std::vector<std::vector<double>> pass_ms(kPassCount);
-  const std::size_t pixels = std::size_t(out.width) * out.height;
   for (std::uint32_t f = 0; f < request.repeat; ++f) {
     const auto frame_start = Clock::now();
     double frame_record_ms = 0.0, frame_wait_ms = 0.0, frame_gpu_ms = 0.0;
@@ -215,20 +224,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     total_gpu_ms.push_back(frame_gpu_ms);
 
     const auto readback_start = Clock::now();
-    if (readback & kReadbackDisplay) {
-      targets->display_readback.invalidate();
-      result.display.width = out.width;
-      result.display.height = out.height;
-      result.display.pixels.resize(pixels * 4);
-      std::memcpy(result.display.pixels.data(), targets->display_readback.mapped(), pixels * 4);
-    }
-    if (readback & kReadbackLinear) {
-      targets->linear_readback.invalidate();
-      result.linear.width = out.width;
-      result.linear.height = out.height;
-      result.linear.pixels.resize(pixels * 4);
-      std::memcpy(result.linear.pixels.data(), targets->linear_readback.mapped(), pixels * 16);
-    }
+    if (readback & kReadbackDisplay) copy_to_host(targets->display_readback, out, result.display);
+    if (readback & kReadbackLinear) copy_to_host(targets->linear_readback, out, result.linear);
     readback_ms.push_back(ms_since(readback_start));
     wall_ms.push_back(ms_since(frame_start));
   }

@@ -12,6 +12,14 @@ namespace {
 
 class Outputs : public gpu_test::GpuTest {
  protected:
+  static void expect_request_error(const api::RenderRequest& request, const std::string& field) {
+    try {
+      gpu_test::renderer().render(request);
+      ADD_FAILURE() << "expected a RequestError naming " << field;
+    } catch (const api::RequestError& e) {
+      EXPECT_EQ(e.field(), field) << e.what();
+    }
+  }
   static api::RenderRequest cornell(api::View view, std::uint32_t size = 128) {
     api::RenderRequest request;
     request.scene = "cornell-box";
@@ -110,24 +118,14 @@ TEST_F(Outputs, RepeatGivesOneTimingPerFrameSummarised) {
 TEST_F(Outputs, UnknownSceneNamesTheSceneField) {
   api::RenderRequest request = cornell(api::View::final_);
   request.scene = "no-such-scene";
-  try {
-    gpu_test::renderer().render(request);
-    FAIL() << "expected a RequestError";
-  } catch (const api::RequestError& e) {
-    EXPECT_EQ(e.field(), "scene");
-  }
+  expect_request_error(request, "scene");
 }
 
 TEST_F(Outputs, LightEditBeyondTheScenesLightsNamesTheIndex) {
   api::RenderRequest request = cornell(api::View::final_);
   request.light_edits.push_back({});
   request.light_edits[0].index = 3;
-  try {
-    gpu_test::renderer().render(request);
-    FAIL() << "expected a RequestError";
-  } catch (const api::RequestError& e) {
-    EXPECT_EQ(e.field(), "light_edits[0].index");
-  }
+  expect_request_error(request, "light_edits[0].index");
 }
 
 TEST_F(Outputs, LightEditChangesOnlyWhatItNames) {
@@ -148,12 +146,7 @@ TEST_F(Outputs, ShadowMapsBeyondTheMemoryBudgetAreARequestError) {
   point.position = {0, 1, 0};
   request.lights = std::vector<api::Light>(8, point);  // 48 cube faces
   request.shadows.resolution = 4096;                   // 3 GiB of depth
-  try {
-    gpu_test::renderer().render(request);
-    FAIL() << "expected a RequestError";
-  } catch (const api::RequestError& e) {
-    EXPECT_EQ(e.field(), "shadows.resolution");
-  }
+  expect_request_error(request, "shadows.resolution");
 }
 
 }  // namespace
