@@ -71,6 +71,10 @@ run --device no-such-gpu
 check "unknown device exits 1" test "$rc" -eq 1
 check "unknown device lists devices" grep -q "devices:" err.txt
 
+run -o no-such-dir/out.png -q
+check "unwritable output exits 1" test "$rc" -eq 1
+check "unwritable output names the path" grep -q "no-such-dir" err.txt
+
 run --list-scenes
 check "list scenes" grep -q "^cornell-box " out.txt
 
