@@ -1,0 +1,73 @@
+// Two-band spherical harmonics and the propagation geometry of Light Propagation Volumes,
+// shared by C++ (tests, CPU references) and GLSL (the LPV passes) so both use one set of
+// formulas. Conventions: DESIGN.md section 2 and the LPV annotations in shared/seeds/.
+//
+// An SH vector is a vec4 per colour channel in the basis order (Y00, Y1-1, Y10, Y11):
+//   Y(d) = (c0, -c1 d.y, c1 d.z, -c1 d.x),  c0 = 1 / (2 sqrt(pi)),  c1 = sqrt(3) / (2 sqrt(pi)).
+// The grid stores radiant intensity I(w) in W/sr; its flux is the integral over the sphere,
+// which only the DC term carries: flux = 4 pi c0 s0 = 2 sqrt(pi) s0.
+#ifndef LPV_SH_H
+#define LPV_SH_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+namespace gpu {
+using glm::dot;
+using glm::normalize;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+#define LPV_FUNC inline
+#define LPV_CONST_F inline constexpr float
+#else
+#define LPV_FUNC
+#define LPV_CONST_F const float
+#endif
+
+LPV_CONST_F SH_C0 = 0.2820947918;  // 1 / (2 sqrt(pi))
+LPV_CONST_F SH_C1 = 0.4886025119;  // sqrt(3) / (2 sqrt(pi))
+
+// Clamped cosine lobe max(0, <n, w>) projected on the basis: (sqrt(pi)/2, sqrt(pi/3) n)
+// with the basis's signs. (The annotations' last line says s1 for the x term; it is s3.)
+LPV_CONST_F SH_COSINE_C0 = 0.8862269255;  // sqrt(pi) / 2
+LPV_CONST_F SH_COSINE_C1 = 1.0233267079;  // sqrt(pi / 3)
+
+// Solid angles of the faces of a neighbouring cell, seen from the source cell's centre:
+// the far face 4 asin(1/10), each of the four side faces 2 atan(3 / sqrt(11)) - pi/3.
+// far + 4 side = 2 pi / 3, so six neighbours cover the sphere exactly. (A widely copied
+// side value, 0.4234413544, has two digits swapped.)
+LPV_CONST_F LPV_FAR_FACE_SOLID_ANGLE = 0.4006696846;
+LPV_CONST_F LPV_SIDE_FACE_SOLID_ANGLE = 0.4234313544;
+
+LPV_CONST_F LPV_PI = 3.14159265358979;
+
+// The basis functions in direction d (unit).
+LPV_FUNC vec4 sh_basis(vec3 d) { return vec4(SH_C0, -SH_C1 * d.y, SH_C1 * d.z, -SH_C1 * d.x); }
+
+// The clamped cosine lobe around unit n.
+LPV_FUNC vec4 sh_cosine_lobe(vec3 n) {
+  return vec4(SH_COSINE_C0, -SH_COSINE_C1 * n.y, SH_COSINE_C1 * n.z, -SH_COSINE_C1 * n.x);
+}
+
+// The function an SH vector represents, in direction d.
+LPV_FUNC float sh_evaluate(vec4 sh, vec3 d) { return dot(sh, sh_basis(d)); }
+
+// The flux of an intensity distribution: its integral over the sphere.
+LPV_FUNC float sh_flux(vec4 sh) { return 2.0f * 1.7724538509f * sh.x; }
+
+// A diffuse emitter of flux phi facing n: I(w) = phi / pi * max(0, <n, w>), whose integral
+// over the sphere is phi (the annotations' correction 4.1 of the paper's missing 1/pi).
+LPV_FUNC vec4 sh_diffuse_emitter(vec3 n, float phi) { return sh_cosine_lobe(n) * (phi / LPV_PI); }
+
+// Unit direction from a source cell's centre to the centre of a face of the neighbour that
+// lies along unit axis `ahead`: `side` = 0 for the far face, else the unit axis (orthogonal
+// to `ahead`) the side face faces. The far face centre is 1.5 cells ahead; a side face
+// centre is 1 cell ahead and half a cell to the side.
+LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead + 0.5f * side); }
+
+#ifdef __cplusplus
+}  // namespace gpu
+#endif
+#undef LPV_FUNC
+#undef LPV_CONST_F
+
+#endif

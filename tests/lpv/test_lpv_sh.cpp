@@ -1,0 +1,149 @@
+// The LPV maths of shaders/shared/lpv_sh.h checked against integrals over the sphere and
+// the cell faces, computed here by quadrature: basis, cosine lobe, emitter normalisation,
+// face solid angles, and flux conservation of one propagation step.
+#include "shaders/shared/lpv_sh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <random>
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Integral of f over the unit sphere: midpoint rule in (z, phi), which is area-uniform.
+double integrate_sphere(const std::function<double(glm::vec3)>& f, int n = 1200) {
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double z = -1.0 + (i + 0.5) * 2.0 / n;
+    const double r = std::sqrt(1.0 - z * z);
+    for (int j = 0; j < 2 * n; ++j) {
+      const double phi = (j + 0.5) * kPi / n;
+      sum += f(glm::vec3(float(r * std::cos(phi)), float(r * std::sin(phi)), float(z)));
+    }
+  }
+  return sum * (2.0 / n) * (kPi / n);
+}
+
+// Solid angle of the axis-aligned rectangle {x = plane} x [y0, y1] x [z0, z1] seen from the origin.
+double rectangle_solid_angle(double plane, double y0, double y1, double z0, double z1, int n = 2000) {
+  double sum = 0.0;
+  const double dy = (y1 - y0) / n, dz = (z1 - z0) / n;
+  for (int i = 0; i < n; ++i) {
+    const double y = y0 + (i + 0.5) * dy;
+    for (int j = 0; j < n; ++j) {
+      const double z = z0 + (j + 0.5) * dz;
+      sum += plane / std::pow(plane * plane + y * y + z * z, 1.5);
+    }
+  }
+  return sum * dy * dz;
+}
+
+// In cell units from the source cell's centre: the neighbour along +x spans x in [0.5, 1.5].
+const double kFarFace = rectangle_solid_angle(1.5, -0.5, 0.5, -0.5, 0.5);
+// A side face of the neighbour along +y: the plane x = 0.5 with y in [0.5, 1.5].
+const double kSideFace = rectangle_solid_angle(0.5, 0.5, 1.5, -0.5, 0.5);
+
+TEST(FaceSolidAngles, MatchTheirIntegralsAndClosedForms) {
+  EXPECT_NEAR(gpu::LPV_FAR_FACE_SOLID_ANGLE, kFarFace, 1e-7);
+  EXPECT_NEAR(gpu::LPV_SIDE_FACE_SOLID_ANGLE, kSideFace, 1e-7);
+  EXPECT_NEAR(4.0 * std::asin(0.1), kFarFace, 1e-7);
+  EXPECT_NEAR(4.0 * std::atan(std::sqrt(11.0) / 33.0), kFarFace, 1e-7);
+  EXPECT_NEAR(2.0 * std::atan(3.0 / std::sqrt(11.0)) - kPi / 3.0, kSideFace, 1e-7);
+}
+
+TEST(FaceSolidAngles, SixNeighboursCoverTheSphere) {
+  EXPECT_NEAR(gpu::LPV_FAR_FACE_SOLID_ANGLE + 4.0 * gpu::LPV_SIDE_FACE_SOLID_ANGLE, 2.0 * kPi / 3.0, 1e-7);
+  // The widely copied side constant with two digits swapped is measurably wrong.
+  EXPECT_GT(std::abs(0.4234413544 - kSideFace), 5e-6);
+}
+
+TEST(ShBasis, IsOrthonormal) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const double integral =
+          integrate_sphere([&](glm::vec3 w) { return double(gpu::sh_basis(w)[i]) * gpu::sh_basis(w)[j]; });
+      EXPECT_NEAR(integral, i == j ? 1.0 : 0.0, 1e-5) << i << "," << j;
+    }
+}
+
+TEST(ShCosineLobe, IsTheProjectionOfTheClampedCosine) {
+  std::mt19937 rng(7);
+  std::normal_distribution<float> gauss;
+  for (int k = 0; k < 4; ++k) {
+    const glm::vec3 n = glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng)));
+    const glm::vec4 lobe = gpu::sh_cosine_lobe(n);
+    for (int i = 0; i < 4; ++i) {
+      const double projection = integrate_sphere(
+          [&](glm::vec3 w) { return std::max(0.0, double(glm::dot(n, w))) * gpu::sh_basis(w)[i]; });
+      EXPECT_NEAR(lobe[i], projection, 2e-5) << "normal " << k << " coefficient " << i;
+    }
+  }
+}
+
+TEST(ShDiffuseEmitter, CarriesExactlyItsFlux) {
+  const glm::vec3 n = glm::normalize(glm::vec3(0.3f, -0.8f, 0.5f));
+  const float phi = 7.5f;
+  // The exact distribution phi / pi * max(0, <n, w>) integrates to phi ...
+  EXPECT_NEAR(integrate_sphere([&](glm::vec3 w) { return phi / kPi * std::max(0.0f, glm::dot(n, w)); }), phi, 1e-4);
+  // ... and so does its SH projection, through the DC term alone.
+  EXPECT_NEAR(gpu::sh_flux(gpu::sh_diffuse_emitter(n, phi)), phi, 1e-5);
+  const glm::vec4 sh = gpu::sh_diffuse_emitter(n, phi);
+  EXPECT_NEAR(integrate_sphere([&](glm::vec3 w) { return gpu::sh_evaluate(sh, w); }), phi, 1e-4);
+}
+
+TEST(ShEvaluate, ReproducesTheCosineLobeInItsDirection) {
+  const glm::vec3 n(0.0f, 0.0f, 1.0f);
+  // Two bands approximate max(0, cos): 1/4 + cos/2, so 3/4 at the pole and 1/4 on the equator.
+  EXPECT_NEAR(gpu::sh_evaluate(gpu::sh_cosine_lobe(n), n), 0.75f, 1e-6f);
+  EXPECT_NEAR(gpu::sh_evaluate(gpu::sh_cosine_lobe(n), glm::vec3(1, 0, 0)), 0.25f, 1e-6f);
+}
+
+// The six axis directions and, for each, its four side axes.
+std::vector<std::pair<glm::vec3, std::vector<glm::vec3>>> neighbours() {
+  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  std::vector<std::pair<glm::vec3, std::vector<glm::vec3>>> result;
+  for (int a = 0; a < 3; ++a)
+    for (float s : {1.0f, -1.0f}) {
+      std::vector<glm::vec3> sides;
+      for (int b = 0; b < 3; ++b)
+        if (b != a)
+          for (float t : {1.0f, -1.0f}) sides.push_back(t * axes[b]);
+      result.push_back({s * axes[a], sides});
+    }
+  return result;
+}
+
+TEST(Propagation, FaceDirectionsPointAtTheFaceCentres) {
+  const glm::vec3 far = gpu::lpv_face_direction(glm::vec3(1, 0, 0), glm::vec3(0));
+  EXPECT_EQ(far, glm::vec3(1, 0, 0));
+  // Annotations 6.1: a side face centre is (1, 1/2) cells away, direction (2, 1) / sqrt(5).
+  const glm::vec3 side = gpu::lpv_face_direction(glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
+  EXPECT_NEAR(side.x, 2.0 / std::sqrt(5.0), 1e-6);
+  EXPECT_NEAR(side.y, 1.0 / std::sqrt(5.0), 1e-6);
+}
+
+// One gather step, unoccluded: the flux through each of the 30 faces, solid angle times the
+// intensity towards the face centre, re-emitted in the neighbour as a diffuse emitter along
+// the face normal. An isotropic source loses nothing.
+TEST(Propagation, IsotropicSourceConservesFluxThroughAllThirtyFaces) {
+  const glm::vec4 source(1.3f, 0.0f, 0.0f, 0.0f);  // isotropic: DC only
+  double through_faces = 0.0, reprojected = 0.0;
+  for (const auto& [ahead, sides] : neighbours()) {
+    const float far_flux = gpu::LPV_FAR_FACE_SOLID_ANGLE * gpu::sh_evaluate(source, ahead);
+    through_faces += far_flux;
+    reprojected += gpu::sh_flux(gpu::sh_diffuse_emitter(ahead, far_flux));
+    for (const glm::vec3& side : sides) {
+      const float side_flux =
+          gpu::LPV_SIDE_FACE_SOLID_ANGLE * gpu::sh_evaluate(source, gpu::lpv_face_direction(ahead, side));
+      through_faces += side_flux;
+      reprojected += gpu::sh_flux(gpu::sh_diffuse_emitter(side, side_flux));
+    }
+  }
+  EXPECT_NEAR(through_faces, gpu::sh_flux(source), 1e-5 * gpu::sh_flux(source));
+  EXPECT_NEAR(reprojected, through_faces, 1e-5 * through_faces);
+}
+
+}  // namespace
