@@ -67,7 +67,7 @@ struct Output {
 
 struct Shadows {
   bool enabled = true;
-  std::uint32_t resolution = 1024;  // texels per side of each shadow map (or cube face)
+  std::uint32_t resolution = 512;  // texels per side of each shadow map (or cube face)
 };
 
 struct RenderRequest {

@@ -128,7 +128,7 @@ TEST(ParseRequest, EmptyObjectGivesDefaults) {
   EXPECT_EQ(r.output.exposure, 0.0f);
   EXPECT_EQ(r.output.tonemap, api::Tonemap::none);
   EXPECT_TRUE(r.shadows.enabled);
-  EXPECT_EQ(r.shadows.resolution, 1024u);
+  EXPECT_EQ(r.shadows.resolution, 512u);
   EXPECT_EQ(r.repeat, 1u);
   expect_same(r, api::RenderRequest{});
 }
