@@ -21,7 +21,11 @@ std::vector<std::uint8_t> encode_output(const RenderResult& result, api::ImageFo
   throw std::logic_error("unknown image format");
 }
 
-std::string file_extension(api::ImageFormat format) { return "." + api::to_string(format); }
+std::string file_extension(api::ImageFormat format) {
+  std::string extension = ".";  // built by appending: GCC 12 warns falsely (-Wrestrict) on "." + string
+  extension += api::to_string(format);
+  return extension;
+}
 
 std::string media_type(api::ImageFormat format) {
   switch (format) {

@@ -27,7 +27,7 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Passes in recording order; also the timer scopes.
+// Passes in recording and submission order.
 enum Pass : std::uint32_t { kShadow, kGBuffer, kShade, kTonemap, kReadback, kPassCount };
 constexpr const char* kPassNames[kPassCount] = {"shadow", "gbuffer", "shade", "tonemap", "readback"};
 

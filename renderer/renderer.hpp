@@ -43,8 +43,6 @@ class Renderer {
   // Renders a scene given by the caller, uploaded for this call (request.scene is ignored).
   RenderResult render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback);
 
-  const vkx::Device& device() const { return device_; }
-
  private:
   struct Impl;
   const vkx::Device& device_;

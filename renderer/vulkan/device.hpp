@@ -73,9 +73,6 @@ class Device {
   std::vector<std::string> validation_messages() const;
   void clear_validation_messages();
 
-  // Writes the pipeline cache to its file now (also done by the destructor).
-  void save_pipeline_cache() const;
-
  private:
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_debug_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
                                                          VkDebugUtilsMessageTypeFlagsEXT,
@@ -84,6 +81,7 @@ class Device {
   void pick_physical_device(const std::string& selector);
   void create_device();
   void load_pipeline_cache();
+  void save_pipeline_cache() const;  // atomically, to options.pipeline_cache_file
   void release();  // destroys every handle; safe on a partly constructed device
 
   DeviceOptions options_;
