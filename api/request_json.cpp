@@ -50,7 +50,9 @@ std::string number_text(float x) {
 }
 
 std::string vector_text(const glm::vec3& v) {
-  return "[" + number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + "]";
+  std::string text = "[";  // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "[" + string
+  text += number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + "]";
+  return text;
 }
 
 // A JSON string literal of (at most the start of) `s`, in ASCII, safe to embed in a
