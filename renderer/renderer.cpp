@@ -4,7 +4,7 @@
 #include "renderer/frame_setup.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_scene.hpp"
-#include "renderer/gpu_timer.hpp"
+#include "renderer/pass_timer.hpp"
 #include "renderer/passes/gbuffer_pass.hpp"
 #include "renderer/passes/shade_pass.hpp"
 #include "renderer/passes/shadow_pass.hpp"

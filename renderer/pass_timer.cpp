@@ -1,4 +1,4 @@
-#include "renderer/gpu_timer.hpp"
+#include "renderer/pass_timer.hpp"
 
 #include "renderer/vulkan/vk_check.hpp"
 
