@@ -20,6 +20,8 @@ std::string to_string(View v) {
   switch (v) {
     case View::final_: return "final";
     case View::direct: return "direct";
+    case View::indirect: return "indirect";
+    case View::lpv: return "lpv";
     case View::albedo: return "albedo";
     case View::normal: return "normal";
     case View::depth: return "depth";

@@ -52,7 +52,9 @@ struct Camera {
   float far = 0.0f;   // 0 = fitted to the scene bounds
 };
 
-enum class View { final_, direct, albedo, normal, depth };
+// final = direct + indirect; indirect = the LPV's light alone; lpv = the grid itself
+// (the nearest cell's mean intensity at each visible point, for debugging).
+enum class View { final_, direct, indirect, lpv, albedo, normal, depth };
 enum class ImageFormat { png, exr, pfm };
 enum class Tonemap { none, reinhard, aces };
 
@@ -70,6 +72,25 @@ struct Shadows {
   std::uint32_t resolution = 512;  // texels per side of each shadow map (or cube face)
 };
 
+// Light Propagation Volumes: diffuse indirect light (DESIGN.md section 2). Defaults like
+// the field's: one 32^3 cascade, 8 iterations, RSM 256^2.
+struct Lpv {
+  bool enabled = true;
+  glm::uvec3 grid{32, 32, 32};         // cells per axis of every cascade ("grid": 32 or [x, y, z])
+  std::uint32_t cascades = 1;          // nested grids, each twice the extent of the last
+  std::uint32_t iterations = 8;        // propagation steps per cascade
+  std::uint32_t rsm_resolution = 256;  // RSM texels per side of each light view ("rsm")
+  std::uint32_t vpl_downsample = 1;    // RSM texels per side merged into one brighter VPL
+  bool occlusion = true;               // geometry volume blocks propagation
+  bool occlusion_from_rsm = true;      // "occlusion_sources": surfels of the RSMs ...
+  bool occlusion_from_camera = true;   // ... and of the camera's depth and normal buffer
+  std::uint32_t bounces = 1;           // 2: light the geometry volume blocks is reflected on
+  float injection_offset = 0.5f;       // VPLs move this many cells along their normal
+  float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
+  std::optional<glm::vec3> origin;     // minimum corner of the innermost cascade; absent: fitted
+  std::optional<float> extent;         // its longest edge in metres; absent: fitted
+};
+
 struct RenderRequest {
   std::string scene = "cornell-box";
   std::optional<Camera> camera;              // absent: the scene's default camera
@@ -77,6 +98,7 @@ struct RenderRequest {
   std::vector<LightEdit> light_edits;        // applied to the scene's lights
   Output output;
   Shadows shadows;
+  Lpv lpv;
   std::uint32_t repeat = 1;  // frames to render and time
 };
 
@@ -93,6 +115,14 @@ inline constexpr float max_abs_coordinate = 1.0e7f;
 inline constexpr float max_intensity = 1.0e12f;
 inline constexpr float min_fov_y_deg = 0.01f;
 inline constexpr float max_fov_y_deg = 179.9f;
+inline constexpr std::uint32_t max_grid_side = 128;
+inline constexpr std::uint32_t max_cascades = 4;
+inline constexpr std::uint32_t max_iterations = 1024;
+inline constexpr std::uint32_t max_rsm_resolution = 4096;
+inline constexpr std::uint32_t max_vpl_downsample = 16;  // a power of two, at most the RSM resolution
+inline constexpr std::uint32_t max_bounces = 2;
+inline constexpr float max_injection_offset = 2.0f;  // cells
+inline constexpr float max_lpv_intensity = 1.0e6f;
 }  // namespace limits
 
 // Sets the fields the edit carries; the others keep their values.

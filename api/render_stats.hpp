@@ -2,8 +2,10 @@
 // returns in X-Render-Stats. All times in milliseconds.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,26 @@ struct PassStats {
   bool ran = true;
   std::string reason;  // why it ran or was skipped; may be empty
   TimeSummary gpu_ms;
+  std::vector<TimeSummary> cascade_gpu_ms;  // LPV grid passes: the share of each cascade
+};
+
+using Rgb = std::array<double, 3>;  // a radiometric quantity per colour channel
+
+// One LPV cascade: where it is and the flux it carried (W, per channel), so clients can
+// check energy conservation themselves.
+struct LpvCascadeStats {
+  std::array<double, 3> origin{};  // minimum corner, metres
+  double cell_size = 0.0;          // metres
+  std::array<std::uint32_t, 3> grid{};
+  Rgb injected_flux{};               // flux of the VPLs that landed in this cascade
+  std::vector<Rgb> propagated_flux;  // flux of each iteration's propagated grid (1..N)
+};
+
+struct LpvStats {
+  std::uint64_t vpl_count = 0;  // after downsampling, over all light views
+  Rgb vpl_flux{};               // their total flux
+  float intensity = 1.0f;       // the indirect scale used (1 = physically based)
+  std::vector<LpvCascadeStats> cascades;
 };
 
 struct RenderStats {
@@ -37,6 +59,7 @@ struct RenderStats {
   TimeSummary wall_ms;                        // one whole frame as the caller saw it
   std::string device;
   std::string driver;
+  std::optional<LpvStats> lpv;  // present when LPV passes ran
   std::vector<std::string> warnings;
 };
 

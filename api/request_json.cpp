@@ -255,12 +255,14 @@ std::string as_scene_name(const Field& f) {
 // ---- the schema --------------------------------------------------------------------
 
 constexpr std::array light_types{LightType::directional, LightType::point, LightType::spot};
-constexpr std::array views{View::final_, View::direct, View::albedo, View::normal, View::depth};
+constexpr std::array views{View::final_, View::direct, View::indirect, View::lpv,
+                           View::albedo, View::normal, View::depth};
 constexpr std::array formats{ImageFormat::png, ImageFormat::exr, ImageFormat::pfm};
 constexpr std::array tonemaps{Tonemap::none, Tonemap::reinhard, Tonemap::aces};
 
 using Keys = std::string_view;
-constexpr std::array<Keys, 7> request_keys{"scene", "camera", "lights", "light_edits", "output", "shadows", "repeat"};
+constexpr std::array<Keys, 8> request_keys{"scene",  "camera",  "lights", "light_edits",
+                                           "output", "shadows", "lpv",    "repeat"};
 constexpr std::array<Keys, 6> camera_keys{"position", "target", "up", "fov_y_deg", "near", "far"};
 constexpr std::array<Keys, 8> light_keys{"type",      "position", "direction",      "color",
                                          "intensity", "range",    "inner_cone_deg", "outer_cone_deg"};
@@ -271,6 +273,11 @@ constexpr auto light_edit_keys = [] {
 }();
 constexpr std::array<Keys, 6> output_keys{"width", "height", "format", "view", "exposure", "tonemap"};
 constexpr std::array<Keys, 2> shadows_keys{"enabled", "resolution"};
+constexpr std::array<Keys, 13> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
+                                        "vpl_downsample", "occlusion", "occlusion_sources", "bounces",
+                                        "injection_offset", "intensity", "origin", "extent"};
+constexpr std::string_view occlusion_source_rsm = "rsm";
+constexpr std::string_view occlusion_source_camera = "camera";
 
 // The light fields present in `obj`, shared by "lights" and "light_edits"
 // (the index of the returned edit is left at 0).
@@ -381,6 +388,62 @@ Shadows read_shadows(const Field& f) {
   return shadows;
 }
 
+// "grid": 32 (a cube) or [x, y, z].
+glm::uvec3 read_grid(const Field& f) {
+  if (f.value->is_number()) return glm::uvec3(as_uint<std::uint32_t>(f, 1, limits::max_grid_side));
+  if (!f.value->is_array() || f.value->size() != 3)
+    f.reject("an integer in [1, " + std::to_string(limits::max_grid_side) + "] or an array of 3 of them");
+  glm::uvec3 grid;
+  for (int i = 0; i < 3; ++i) grid[i] = as_uint<std::uint32_t>(f.element(std::size_t(i)), 1, limits::max_grid_side);
+  return grid;
+}
+
+// "occlusion_sources": a non-empty set of "rsm" and "camera".
+void read_occlusion_sources(const Field& f, Lpv& lpv) {
+  const std::string expectation = "a non-empty array of distinct \"rsm\" and \"camera\"";
+  const std::vector<Field> elements = as_array(f, 2);
+  if (elements.empty()) f.reject(expectation);
+  lpv.occlusion_from_rsm = lpv.occlusion_from_camera = false;
+  for (const Field& e : elements) {
+    const bool is_string = e.value->is_string();
+    const std::string_view s = is_string ? std::string_view(e.value->get_ref<const std::string&>()) : "";
+    if (s != occlusion_source_rsm && s != occlusion_source_camera) e.reject("\"rsm\" or \"camera\"");
+    bool& flag = s == occlusion_source_rsm ? lpv.occlusion_from_rsm : lpv.occlusion_from_camera;
+    if (flag) e.fail("must not repeat " + quote(s));
+    flag = true;
+  }
+}
+
+bool is_power_of_two(std::uint32_t x) { return x != 0 && (x & (x - 1)) == 0; }
+
+Lpv read_lpv(const Field& f) {
+  const Object obj(f, lpv_keys);
+  Lpv lpv;
+  if (auto v = obj.get("enabled")) lpv.enabled = as_bool(*v);
+  if (auto v = obj.get("grid")) lpv.grid = read_grid(*v);
+  if (auto v = obj.get("cascades")) lpv.cascades = as_uint<std::uint32_t>(*v, 1, limits::max_cascades);
+  if (auto v = obj.get("iterations")) lpv.iterations = as_uint<std::uint32_t>(*v, 0, limits::max_iterations);
+  if (auto v = obj.get("rsm")) lpv.rsm_resolution = as_uint<std::uint32_t>(*v, 1, limits::max_rsm_resolution);
+  if (auto v = obj.get("vpl_downsample")) {
+    lpv.vpl_downsample = as_uint<std::uint32_t>(*v, 1, limits::max_vpl_downsample);
+    if (!is_power_of_two(lpv.vpl_downsample)) v->reject("a power of two in [1, " + std::to_string(limits::max_vpl_downsample) + "]");
+    if (lpv.vpl_downsample > lpv.rsm_resolution)
+      v->fail("must be at most lpv.rsm (" + std::to_string(lpv.rsm_resolution) + "), got " +
+              std::to_string(lpv.vpl_downsample));
+  }
+  if (auto v = obj.get("occlusion")) lpv.occlusion = as_bool(*v);
+  if (auto v = obj.get("occlusion_sources")) read_occlusion_sources(*v, lpv);
+  if (auto v = obj.get("bounces")) lpv.bounces = as_uint<std::uint32_t>(*v, 1, limits::max_bounces);
+  if (auto v = obj.get("injection_offset")) lpv.injection_offset = as_float(*v, 0.0f, limits::max_injection_offset);
+  if (auto v = obj.get("intensity")) lpv.intensity = as_float(*v, 0.0f, limits::max_lpv_intensity);
+  if (auto v = obj.get("origin")) lpv.origin = as_point(*v);
+  if (auto v = obj.get("extent")) {
+    lpv.extent = as_float(*v, 0.0f, 2.0f * limits::max_abs_coordinate);
+    if (!(*lpv.extent > 0.0f)) v->reject("a number > 0");
+  }
+  return lpv;
+}
+
 RenderRequest read_request(const json& document) {
   const Object obj(Field{&document, ""}, request_keys);
   RenderRequest request;
@@ -395,6 +458,7 @@ RenderRequest read_request(const json& document) {
   }
   if (auto v = obj.get("output")) request.output = read_output(*v);
   if (auto v = obj.get("shadows")) request.shadows = read_shadows(*v);
+  if (auto v = obj.get("lpv")) request.lpv = read_lpv(*v);
   if (auto v = obj.get("repeat")) request.repeat = as_uint<std::uint32_t>(*v, 1, limits::max_repeat);
   return request;
 }
@@ -485,7 +549,42 @@ json camera_json(const Camera& camera) {
           {"far", shortest(camera.far)}};
 }
 
+json lpv_json(const Lpv& lpv) {
+  json sources = json::array();
+  if (lpv.occlusion_from_rsm) sources.push_back(occlusion_source_rsm);
+  if (lpv.occlusion_from_camera) sources.push_back(occlusion_source_camera);
+  json j = {{"enabled", lpv.enabled},
+            {"grid", json::array({lpv.grid.x, lpv.grid.y, lpv.grid.z})},
+            {"cascades", lpv.cascades},
+            {"iterations", lpv.iterations},
+            {"rsm", lpv.rsm_resolution},
+            {"vpl_downsample", lpv.vpl_downsample},
+            {"occlusion", lpv.occlusion},
+            {"occlusion_sources", std::move(sources)},
+            {"bounces", lpv.bounces},
+            {"injection_offset", shortest(lpv.injection_offset)},
+            {"intensity", shortest(lpv.intensity)}};
+  if (lpv.origin) j["origin"] = vector_json(*lpv.origin);
+  if (lpv.extent) j["extent"] = shortest(*lpv.extent);
+  return j;
+}
+
 json summary_json(const TimeSummary& t) { return {{"median", t.median}, {"min", t.min}, {"max", t.max}}; }
+
+json lpv_stats_json(const LpvStats& lpv) {
+  json cascades = json::array();
+  for (const LpvCascadeStats& c : lpv.cascades) {
+    cascades.push_back({{"origin", c.origin},
+                        {"cell_size", c.cell_size},
+                        {"grid", c.grid},
+                        {"injected_flux", c.injected_flux},
+                        {"propagated_flux", c.propagated_flux}});
+  }
+  return {{"vpl_count", lpv.vpl_count},
+          {"vpl_flux", lpv.vpl_flux},
+          {"intensity", shortest(lpv.intensity)},
+          {"cascades", std::move(cascades)}};
+}
 
 }  // namespace
 
@@ -517,6 +616,7 @@ nlohmann::json to_json(const RenderRequest& request) {
                  {"exposure", shortest(out.exposure)},
                  {"tonemap", to_string(out.tonemap)}};
   j["shadows"] = {{"enabled", request.shadows.enabled}, {"resolution", request.shadows.resolution}};
+  j["lpv"] = lpv_json(request.lpv);
   j["repeat"] = request.repeat;
   return j;
 }
@@ -527,11 +627,15 @@ nlohmann::json to_json(const RenderStats& stats) {
     json p = {{"name", pass.name}, {"ran", pass.ran}};
     if (!pass.reason.empty()) p["reason"] = pass.reason;
     p["gpu_ms"] = summary_json(pass.gpu_ms);
+    if (!pass.cascade_gpu_ms.empty()) {
+      p["cascade_gpu_ms"] = json::array();
+      for (const TimeSummary& t : pass.cascade_gpu_ms) p["cascade_gpu_ms"].push_back(summary_json(t));
+    }
     passes.push_back(std::move(p));
   }
   json cpu = json::object();
   for (const auto& [phase, summary] : stats.cpu_ms) cpu[phase] = summary_json(summary);
-  return {{"scene", stats.scene},
+  json result = {{"scene", stats.scene},
           {"width", stats.width},
           {"height", stats.height},
           {"view", stats.view},
@@ -543,6 +647,8 @@ nlohmann::json to_json(const RenderStats& stats) {
           {"device", stats.device},
           {"driver", stats.driver},
           {"warnings", stats.warnings}};
+  if (stats.lpv) result["lpv"] = lpv_stats_json(*stats.lpv);
+  return result;
 }
 
 }  // namespace api

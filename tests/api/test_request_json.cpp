@@ -91,6 +91,20 @@ void expect_same(const api::RenderRequest& a, const api::RenderRequest& b) {
   EXPECT_EQ(a.output.tonemap, b.output.tonemap);
   EXPECT_EQ(a.shadows.enabled, b.shadows.enabled);
   EXPECT_EQ(a.shadows.resolution, b.shadows.resolution);
+  EXPECT_EQ(a.lpv.enabled, b.lpv.enabled);
+  EXPECT_EQ(a.lpv.grid, b.lpv.grid);
+  EXPECT_EQ(a.lpv.cascades, b.lpv.cascades);
+  EXPECT_EQ(a.lpv.iterations, b.lpv.iterations);
+  EXPECT_EQ(a.lpv.rsm_resolution, b.lpv.rsm_resolution);
+  EXPECT_EQ(a.lpv.vpl_downsample, b.lpv.vpl_downsample);
+  EXPECT_EQ(a.lpv.occlusion, b.lpv.occlusion);
+  EXPECT_EQ(a.lpv.occlusion_from_rsm, b.lpv.occlusion_from_rsm);
+  EXPECT_EQ(a.lpv.occlusion_from_camera, b.lpv.occlusion_from_camera);
+  EXPECT_EQ(a.lpv.bounces, b.lpv.bounces);
+  EXPECT_EQ(a.lpv.injection_offset, b.lpv.injection_offset);
+  EXPECT_EQ(a.lpv.intensity, b.lpv.intensity);
+  EXPECT_EQ(a.lpv.origin, b.lpv.origin);
+  EXPECT_EQ(a.lpv.extent, b.lpv.extent);
   EXPECT_EQ(a.repeat, b.repeat);
 }
 
@@ -102,6 +116,8 @@ TEST(ToString, SpellsEveryEnumValueAsInJson) {
   EXPECT_EQ(api::to_string(api::LightType::spot), "spot");
   EXPECT_EQ(api::to_string(api::View::final_), "final");
   EXPECT_EQ(api::to_string(api::View::direct), "direct");
+  EXPECT_EQ(api::to_string(api::View::indirect), "indirect");
+  EXPECT_EQ(api::to_string(api::View::lpv), "lpv");
   EXPECT_EQ(api::to_string(api::View::albedo), "albedo");
   EXPECT_EQ(api::to_string(api::View::normal), "normal");
   EXPECT_EQ(api::to_string(api::View::depth), "depth");
@@ -129,6 +145,16 @@ TEST(ParseRequest, EmptyObjectGivesDefaults) {
   EXPECT_EQ(r.output.tonemap, api::Tonemap::none);
   EXPECT_TRUE(r.shadows.enabled);
   EXPECT_EQ(r.shadows.resolution, 512u);
+  EXPECT_TRUE(r.lpv.enabled);
+  EXPECT_EQ(r.lpv.grid, glm::uvec3(32));
+  EXPECT_EQ(r.lpv.cascades, 1u);
+  EXPECT_EQ(r.lpv.iterations, 8u);
+  EXPECT_EQ(r.lpv.rsm_resolution, 256u);
+  EXPECT_TRUE(r.lpv.occlusion);
+  EXPECT_EQ(r.lpv.bounces, 1u);
+  EXPECT_EQ(r.lpv.intensity, 1.0f);
+  EXPECT_FALSE(r.lpv.origin.has_value());
+  EXPECT_FALSE(r.lpv.extent.has_value());
   EXPECT_EQ(r.repeat, 1u);
   expect_same(r, api::RenderRequest{});
 }
@@ -143,6 +169,9 @@ TEST(ParseRequest, ReadsEveryField) {
     "light_edits": [{"index": 2, "intensity": 3.5}, {"index": 0, "type": "point", "color": [0, 0, 0]}],
     "output": {"width": 640, "height": 480, "format": "exr", "view": "normal", "exposure": -1.5, "tonemap": "aces"},
     "shadows": {"enabled": false, "resolution": 2048},
+    "lpv": {"enabled": false, "grid": [16, 8, 4], "cascades": 3, "iterations": 0, "rsm": 64, "vpl_downsample": 4,
+            "occlusion": false, "occlusion_sources": ["camera"], "bounces": 2, "injection_offset": 0.25,
+            "intensity": 2.5, "origin": [-1, 0, -1], "extent": 2},
     "repeat": 10
   })");
   EXPECT_EQ(r.scene, "sponza_v2.1");
@@ -181,6 +210,20 @@ TEST(ParseRequest, ReadsEveryField) {
   EXPECT_EQ(r.output.tonemap, api::Tonemap::aces);
   EXPECT_FALSE(r.shadows.enabled);
   EXPECT_EQ(r.shadows.resolution, 2048u);
+  EXPECT_FALSE(r.lpv.enabled);
+  EXPECT_EQ(r.lpv.grid, glm::uvec3(16, 8, 4));
+  EXPECT_EQ(r.lpv.cascades, 3u);
+  EXPECT_EQ(r.lpv.iterations, 0u);
+  EXPECT_EQ(r.lpv.rsm_resolution, 64u);
+  EXPECT_EQ(r.lpv.vpl_downsample, 4u);
+  EXPECT_FALSE(r.lpv.occlusion);
+  EXPECT_FALSE(r.lpv.occlusion_from_rsm);
+  EXPECT_TRUE(r.lpv.occlusion_from_camera);
+  EXPECT_EQ(r.lpv.bounces, 2u);
+  EXPECT_EQ(r.lpv.injection_offset, 0.25f);
+  EXPECT_EQ(r.lpv.intensity, 2.5f);
+  EXPECT_EQ(r.lpv.origin, glm::vec3(-1, 0, -1));
+  EXPECT_EQ(r.lpv.extent, 2.0f);
   EXPECT_EQ(r.repeat, 10u);
 }
 
@@ -198,6 +241,8 @@ TEST(ParseRequest, AcceptsValuesAtTheLimits) {
       R"({"shadows": {"resolution": 16}})",
       R"({"shadows": {"resolution": 8192}})",
       R"({"repeat": 1000})",
+      R"({"lpv": {"grid": 128, "cascades": 4, "iterations": 1024, "rsm": 4096, "vpl_downsample": 16}})",
+      R"({"lpv": {"grid": [1, 1, 1], "iterations": 0, "rsm": 1, "injection_offset": 2, "intensity": 0}})",
       R"({"lights": []})",
       R"({"lights": [{"type": "spot", "inner_cone_deg": 0, "outer_cone_deg": 90}]})",
       R"({"lights": [{"type": "point", "intensity": 1e12, "color": [1e6, 0, 0], "range": 0}]})",
@@ -353,7 +398,7 @@ std::vector<BadRequest> bad_requests() {
       {R"({"output": {"width": 4097, "height": 4096}})", "output"},
       {R"({"output": {"format": "jpg"}})", "output.format"},
       {R"({"output": {"format": "PNG"}})", "output.format"},
-      {R"({"output": {"view": "indirect"}})", "output.view"},
+      {R"({"output": {"view": "Indirect"}})", "output.view"},
       {R"({"output": {"view": "final_"}})", "output.view"},
       {R"({"output": {"tonemap": "filmic"}})", "output.tonemap"},
       {R"({"output": {"tonemap": null}})", "output.tonemap"},
@@ -368,6 +413,38 @@ std::vector<BadRequest> bad_requests() {
       {R"({"shadows": {"resolution": 8193}})", "shadows.resolution"},
       {R"({"shadows": {"resolution": 1024.5}})", "shadows.resolution"},
       {R"({"shadows": {"size": 1024}})", "shadows.size"},
+      // lpv
+      {R"({"lpv": false})", "lpv"},
+      {R"({"lpv": {"enabled": 0}})", "lpv.enabled"},
+      {R"({"lpv": {"grid": 0}})", "lpv.grid"},
+      {R"({"lpv": {"grid": 129}})", "lpv.grid"},
+      {R"({"lpv": {"grid": [32, 32]}})", "lpv.grid"},
+      {R"({"lpv": {"grid": [32, 0, 32]}})", "lpv.grid[1]"},
+      {R"({"lpv": {"grid": [32, 32, 1.5]}})", "lpv.grid[2]"},
+      {R"({"lpv": {"cascades": 0}})", "lpv.cascades"},
+      {R"({"lpv": {"cascades": 5}})", "lpv.cascades"},
+      {R"({"lpv": {"iterations": -1}})", "lpv.iterations"},
+      {R"({"lpv": {"iterations": 1025}})", "lpv.iterations"},
+      {R"({"lpv": {"rsm": 0}})", "lpv.rsm"},
+      {R"({"lpv": {"rsm": 4097}})", "lpv.rsm"},
+      {R"({"lpv": {"vpl_downsample": 6}})", "lpv.vpl_downsample"},
+      {R"({"lpv": {"vpl_downsample": 32}})", "lpv.vpl_downsample"},
+      {R"({"lpv": {"rsm": 2, "vpl_downsample": 4}})", "lpv.vpl_downsample"},
+      {R"({"lpv": {"occlusion": "yes"}})", "lpv.occlusion"},
+      {R"({"lpv": {"occlusion_sources": []}})", "lpv.occlusion_sources"},
+      {R"({"lpv": {"occlusion_sources": ["sky"]}})", "lpv.occlusion_sources[0]"},
+      {R"({"lpv": {"occlusion_sources": ["rsm", "camera", "rsm"]}})", "lpv.occlusion_sources"},
+      {R"({"lpv": {"occlusion_sources": "rsm"}})", "lpv.occlusion_sources"},
+      {R"({"lpv": {"bounces": 0}})", "lpv.bounces"},
+      {R"({"lpv": {"bounces": 3}})", "lpv.bounces"},
+      {R"({"lpv": {"injection_offset": -0.1}})", "lpv.injection_offset"},
+      {R"({"lpv": {"injection_offset": 2.5}})", "lpv.injection_offset"},
+      {R"({"lpv": {"intensity": -1}})", "lpv.intensity"},
+      {R"({"lpv": {"origin": [0, 0]}})", "lpv.origin"},
+      {R"({"lpv": {"origin": [0, 0, 1e8]}})", "lpv.origin[2]"},
+      {R"({"lpv": {"extent": 0}})", "lpv.extent"},
+      {R"({"lpv": {"extent": -3}})", "lpv.extent"},
+      {R"({"lpv": {"cells": 32}})", "lpv.cells"},
       // repeat
       {R"({"repeat": 0})", "repeat"},
       {R"({"repeat": 1001})", "repeat"},
@@ -407,8 +484,13 @@ TEST(ParseRequest, MessagesSayWhatWasExpectedAndWhatWasGot) {
             "lights[0].intensity: must be a number in [0, 1e+12], got -1");
   EXPECT_EQ(message(R"({"camera": {"position": [0, 1e8, 0]}})"),
             "camera.position[1]: must be a number in [-1e+07, 1e+07], got 100000000.0");
-  EXPECT_EQ(message(R"({"output": {"view": "lpv"}})"),
-            "output.view: must be one of \"final\", \"direct\", \"albedo\", \"normal\", \"depth\", got string \"lpv\"");
+  EXPECT_EQ(message(R"({"output": {"view": "sky"}})"),
+            "output.view: must be one of \"final\", \"direct\", \"indirect\", \"lpv\", \"albedo\", \"normal\", "
+            "\"depth\", got string \"sky\"");
+  EXPECT_EQ(message(R"({"lpv": {"vpl_downsample": 3}})"),
+            "lpv.vpl_downsample: must be a power of two in [1, 16], got 3");
+  EXPECT_EQ(message(R"({"lpv": {"occlusion_sources": ["rsm", "rsm"]}})"),
+            "lpv.occlusion_sources[1]: must not repeat \"rsm\"");
   EXPECT_EQ(message(R"({"lights": [{}]})"),
             "lights[0].type: required field missing (one of \"directional\", \"point\", \"spot\")");
   EXPECT_EQ(message(R"({"lights": [{"type": "spot", "inner_cone_deg": 50}]})"),
@@ -558,6 +640,17 @@ api::RenderRequest full_request() {
   r.output.tonemap = api::Tonemap::reinhard;
   r.shadows.enabled = false;
   r.shadows.resolution = 512;
+  r.lpv.grid = {64, 16, 8};
+  r.lpv.cascades = 2;
+  r.lpv.iterations = 12;
+  r.lpv.rsm_resolution = 128;
+  r.lpv.vpl_downsample = 2;
+  r.lpv.occlusion_from_camera = false;
+  r.lpv.bounces = 2;
+  r.lpv.injection_offset = 0.3f;
+  r.lpv.intensity = 1.7f;
+  r.lpv.origin = glm::vec3(-2.5f, 0.1f, 3.0f);
+  r.lpv.extent = 12.5f;
   r.repeat = 7;
   return r;
 }
@@ -578,6 +671,8 @@ TEST(RoundTrip, DefaultRequestOmitsWhatIsAbsent) {
   EXPECT_FALSE(j.contains("camera"));
   EXPECT_FALSE(j.contains("lights"));
   EXPECT_FALSE(j.contains("light_edits"));
+  EXPECT_FALSE(j["lpv"].contains("origin"));
+  EXPECT_FALSE(j["lpv"].contains("extent"));
   expect_same(api::parse_render_request(j.dump()), api::RenderRequest{});
 }
 
