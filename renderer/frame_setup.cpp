@@ -41,6 +41,10 @@ void check_cones(const api::Light& light, const std::string& field) {
                                        std::to_string(light.outer_cone_deg));
 }
 
+bool emits(const api::Light& light) {
+  return light.intensity > 0.0f && glm::any(glm::greaterThan(light.color, glm::vec3(0.0f)));
+}
+
 }  // namespace
 
 std::vector<api::Light> resolve_lights(const scene::Scene& scene, const api::RenderRequest& request) {
@@ -80,10 +84,40 @@ CameraSetup setup_camera(const api::Camera& camera, const scene::Bounds& bounds,
   return c;
 }
 
+std::vector<LightView> light_views(const std::vector<api::Light>& lights, const scene::Bounds& bounds) {
+  std::vector<LightView> views;
+  if (bounds.radius() <= 0.0f) return views;
+  for (std::uint32_t index = 0; index < lights.size(); ++index) {
+    const api::Light& light = lights[index];
+    if (!emits(light)) continue;
+    if (light.type == api::LightType::directional) {
+      const float r = bounds.radius();
+      const glm::vec3 eye = bounds.center() - light.direction * (1.05f * r);
+      const glm::mat4 view = glm::lookAtRH(eye, bounds.center(), any_perpendicular_up(light.direction));
+      views.push_back({glm::orthoRH_ZO(-r, r, -r, r, 0.0f, 2.1f * r) * view, light.direction, true, r, index});
+    } else if (light.type == api::LightType::spot && light.outer_cone_deg <= kMaxSingleMapConeDeg) {
+      const float fov = glm::radians(2.0f * light.outer_cone_deg + 2.0f);
+      auto [near, far] = depth_range_around(light.position, bounds);
+      const glm::mat4 view =
+          glm::lookAtRH(light.position, light.position + light.direction, any_perpendicular_up(light.direction));
+      views.push_back({perspective_zo(fov, 1.0f, near, far) * view, light.direction, false, std::tan(0.5f * fov), index});
+    } else {
+      auto [near, far] = depth_range_around(light.position, bounds);
+      const glm::mat4 proj = perspective_zo(glm::radians(90.0f), 1.0f, near, far);
+      static const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+      static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+      for (int face = 0; face < 6; ++face)
+        views.push_back({proj * glm::lookAtRH(light.position, light.position + axes[face], ups[face]), axes[face],
+                         false, 1.0f, index});
+    }
+  }
+  return views;
+}
+
 LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
                         const api::Shadows& shadows) {
   LightSetup setup;
-  const float texel = 2.0f / static_cast<float>(shadows.resolution);  // texel size at unit distance, 90 degrees
+  setup.views = light_views(lights, bounds);
   for (const api::Light& light : lights) {
     gpu::GpuLight g{};
     g.position = glm::vec4(light.position, 1.0f);
@@ -100,38 +134,19 @@ LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Boun
       g.params.x = 1.0f / std::max(1e-3f, cos_inner - cos_outer);
       g.params.y = -cos_outer * g.params.x;
     }
-
-    const bool emits = light.intensity > 0.0f && glm::any(glm::greaterThan(light.color, glm::vec3(0.0f)));
-    if (shadows.enabled && emits && bounds.radius() > 0.0f) {
-      g.info.y = static_cast<std::uint32_t>(setup.shadow_views.size());
-      if (light.type == api::LightType::directional) {
-        const float r = bounds.radius();
-        const glm::vec3 eye = bounds.center() - light.direction * (1.05f * r);
-        const glm::mat4 view = glm::lookAtRH(eye, bounds.center(), any_perpendicular_up(light.direction));
-        setup.shadow_views.push_back(glm::orthoRH_ZO(-r, r, -r, r, 0.0f, 2.1f * r) * view);
-        g.info.z = 1;
-        g.params.z = kNormalOffsetTexels * r * texel;
-      } else if (light.type == api::LightType::spot && light.outer_cone_deg <= kMaxSingleMapConeDeg) {
-        const float fov = glm::radians(2.0f * light.outer_cone_deg + 2.0f);
-        auto [near, far] = depth_range_around(light.position, bounds);
-        const glm::mat4 view = glm::lookAtRH(light.position, light.position + light.direction,
-                                             any_perpendicular_up(light.direction));
-        setup.shadow_views.push_back(perspective_zo(fov, 1.0f, near, far) * view);
-        g.info.z = 1;
-        g.params.z = kNormalOffsetTexels * std::tan(0.5f * fov) * texel;
-      } else {
-        auto [near, far] = depth_range_around(light.position, bounds);
-        const glm::mat4 proj = perspective_zo(glm::radians(90.0f), 1.0f, near, far);
-        static const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-        static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-        for (int face = 0; face < 6; ++face)
-          setup.shadow_views.push_back(proj * glm::lookAtRH(light.position, light.position + axes[face], ups[face]));
-        g.info.z = 6;
-        // A cube face's corner texels are up to sqrt(3) times larger than its centre's.
-        g.params.z = kNormalOffsetTexels * std::sqrt(3.0f) * texel;
-      }
-    }
     setup.lights.push_back(g);
+  }
+  if (!shadows.enabled) return setup;
+  const float texel = 2.0f / static_cast<float>(shadows.resolution);  // texel side per unit half extent
+  for (const LightView& view : setup.views) {
+    gpu::GpuLight& g = setup.lights[view.light];
+    if (g.info.z == 0) g.info.y = static_cast<std::uint32_t>(setup.shadow_views.size());
+    g.info.z += 1;  // 1 map, or 6 for a cube
+    setup.shadow_views.push_back(view.view_proj);
+    // Normal offset of the lookups: about a texel and a half, per metre of distance for
+    // perspective maps; a cube face's corner texels are up to sqrt(3) times its centre's.
+    const float cube_corner = g.info.z == 6 ? std::sqrt(3.0f) : 1.0f;  // the cube's last face sets it
+    g.params.z = kNormalOffsetTexels * view.half_extent * texel * cube_corner;
   }
   return setup;
 }

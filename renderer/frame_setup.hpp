@@ -29,14 +29,29 @@ struct CameraSetup {
 // Near and far not given in the camera are fitted to the scene's bounding sphere.
 CameraSetup setup_camera(const api::Camera& camera, const scene::Bounds& bounds, float aspect);
 
-struct LightSetup {
-  std::vector<gpu::GpuLight> lights;
-  std::vector<glm::mat4> shadow_views;  // index = shadow map layer
+// One view of the scene from a light, for its shadow map and its reflective shadow map.
+struct LightView {
+  glm::mat4 view_proj;  // Vulkan clip space, depth 0..1
+  glm::vec3 axis;       // unit view direction
+  bool orthographic = false;
+  // Half the map's side: tan(half field of view) for a perspective view, metres for an
+  // orthographic one. A texel's side is 2 * half_extent / resolution (at unit distance).
+  float half_extent = 0.0f;
+  std::uint32_t light = 0;  // index of the light
 };
 
-// GPU lights and their shadow views: a perspective map for a spot, six cube faces (+X, -X,
+// The views of every light that emits: a perspective view for a spot, six cube faces (+X, -X,
 // +Y, -Y, +Z, -Z) for a point light and for a spot wider than a perspective map can hold,
-// an orthographic map fitted to the scene for a directional light.
+// an orthographic view fitted to the scene for a directional light.
+std::vector<LightView> light_views(const std::vector<api::Light>& lights, const scene::Bounds& bounds);
+
+struct LightSetup {
+  std::vector<gpu::GpuLight> lights;
+  std::vector<LightView> views;         // of every emitting light (for the RSMs)
+  std::vector<glm::mat4> shadow_views;  // index = shadow map layer; empty when shadows are off
+};
+
+// GPU lights, their views, and the shadow maps' view-projections when shadows are on.
 LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
                         const api::Shadows& shadows);
 

@@ -4,8 +4,14 @@
 #include "renderer/frame_setup.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_scene.hpp"
+#include "renderer/lpv/lpv_setup.hpp"
+#include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/pass_timer.hpp"
 #include "renderer/passes/gbuffer_pass.hpp"
+#include "renderer/passes/geometry_volume_pass.hpp"
+#include "renderer/passes/lpv_inject_pass.hpp"
+#include "renderer/passes/lpv_propagate_pass.hpp"
+#include "renderer/passes/rsm_pass.hpp"
 #include "renderer/passes/shade_pass.hpp"
 #include "renderer/passes/shadow_pass.hpp"
 #include "renderer/passes/tonemap_pass.hpp"
@@ -27,19 +33,40 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Passes in recording and submission order.
-enum Pass : std::uint32_t { kShadow, kGBuffer, kShade, kTonemap, kReadback, kPassCount };
-constexpr const char* kPassNames[kPassCount] = {"shadow", "gbuffer", "shade", "tonemap", "readback"};
+// Passes in recording and submission order. The LPV grid passes run once per cascade.
+enum Pass : std::uint32_t {
+  kShadow,
+  kRsm,
+  kGBuffer,
+  kInject,
+  kGeometryVolume,
+  kPropagate,
+  kShade,
+  kTonemap,
+  kReadback,
+  kPassCount
+};
+constexpr const char* kPassNames[kPassCount] = {"shadow",    "rsm",   "gbuffer", "inject",  "geometry_volume",
+                                                "propagate", "shade", "tonemap", "readback"};
+bool is_grid_pass(std::uint32_t p) { return p == kInject || p == kGeometryVolume || p == kPropagate; }
 
-// Shadow maps live in host memory on lavapipe: bound them so a request cannot exhaust it.
+// Shadow maps and RSMs live in host memory on lavapipe, and so do the grids: bound them so a
+// request cannot exhaust it.
 constexpr std::uint64_t kShadowAtlasBudgetBytes = 1ull << 30;
+constexpr std::uint64_t kRsmBudgetBytes = 1ull << 30;
+constexpr std::uint64_t kLpvBudgetBytes = 2ull << 30;
 
-bool is_lit_view(api::View v) { return v == api::View::final_ || v == api::View::direct; }
+bool needs_direct_light(api::View v) { return v == api::View::final_ || v == api::View::direct; }
+bool needs_indirect_light(api::View v) {
+  return v == api::View::final_ || v == api::View::indirect || v == api::View::lpv;
+}
 
 std::uint32_t gpu_view(api::View v) {
   switch (v) {
     case api::View::final_: return gpu::VIEW_FINAL;
     case api::View::direct: return gpu::VIEW_DIRECT;
+    case api::View::indirect: return gpu::VIEW_INDIRECT;
+    case api::View::lpv: return gpu::VIEW_LPV;
     case api::View::albedo: return gpu::VIEW_ALBEDO;
     case api::View::normal: return gpu::VIEW_NORMAL;
     case api::View::depth: return gpu::VIEW_DEPTH;
@@ -55,18 +82,37 @@ struct FramePlan {
 
 FramePlan plan_frame(const api::RenderRequest& request, const LightSetup& lights, unsigned readback) {
   FramePlan plan;
+  const api::View view = request.output.view;
+  const std::string view_name = "view '" + api::to_string(view) + "'";
   plan.run[kGBuffer] = plan.run[kShade] = plan.run[kReadback] = true;
   plan.run[kTonemap] = (readback & kReadbackDisplay) != 0;
   if (!plan.run[kTonemap]) plan.reason[kTonemap] = "no 8-bit image requested";
-  if (!is_lit_view(request.output.view))
-    plan.reason[kShadow] = "view '" + api::to_string(request.output.view) + "' needs no lighting";
+
+  if (!needs_direct_light(view))
+    plan.reason[kShadow] = view_name + " needs no direct light";
   else if (!request.shadows.enabled)
     plan.reason[kShadow] = "shadows disabled";
   else if (lights.shadow_views.empty())
     plan.reason[kShadow] = "no light emits";
   plan.run[kShadow] = plan.reason[kShadow].empty();
+
+  std::string lpv_reason;
+  if (!needs_indirect_light(view))
+    lpv_reason = view_name + " needs no indirect light";
+  else if (!request.lpv.enabled)
+    lpv_reason = "lpv disabled";
+  else if (lights.views.empty())
+    lpv_reason = "no light emits";
+  else if (request.lpv.intensity == 0.0f && view != api::View::lpv)
+    lpv_reason = "lpv.intensity is 0";
+  for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.reason[p] = lpv_reason;
+  if (lpv_reason.empty() && !request.lpv.occlusion) plan.reason[kGeometryVolume] = "occlusion disabled";
+  if (lpv_reason.empty() && request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
+  for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.run[p] = plan.reason[p].empty();
   return plan;
 }
+
+std::string mib(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
 // An RGBA image of the output's size from a mapped readback buffer.
 template <typename Image>
@@ -92,7 +138,17 @@ unsigned readback_for(const api::Output& output) {
 
 struct Renderer::Impl {
   explicit Impl(const vkx::Device& device)
-      : device(device), shadow(device), gbuffer(device), shade(device), tonemap(device), timer(device) {
+      : device(device),
+        shadow(device),
+        rsm(device),
+        gbuffer(device),
+        inject(device),
+        geometry(device),
+        propagate(device),
+        shade(device),
+        tonemap(device),
+        timer(device),
+        empty_grid(device, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vkx::MemoryUse::upload) {
     VkCommandPoolCreateInfo pool_ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_ci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool_ci.queueFamilyIndex = device.queue_family();
@@ -107,7 +163,11 @@ struct Renderer::Impl {
 
   const vkx::Device& device;
   ShadowPass shadow;
+  RsmPass rsm;
   GBufferPass gbuffer;
+  LpvInjectPass inject;
+  GeometryVolumePass geometry;
+  LpvPropagatePass propagate;
   ShadePass shade;
   TonemapPass tonemap;
   PassTimer timer;
@@ -121,12 +181,26 @@ struct Renderer::Impl {
   std::map<std::string, ResidentScene> builtin_scenes;  // uploaded on first use
   std::optional<FrameTargets> targets;
   std::optional<ShadowAtlas> atlas;
-  vkx::Buffer frame_uniforms, light_buffer, shadow_view_buffer;
+  std::optional<RsmMaps> rsm_maps;
+  std::optional<LpvVolumes> volumes;
+  vkx::Buffer frame_uniforms, light_buffer, shadow_view_buffer, lpv_uniforms, rsm_view_buffer;
+  vkx::Buffer empty_grid;  // bound as the accumulated grid when no LPV ran
+
+  // What the passes of one frame read, fixed before the first is recorded.
+  struct Frame {
+    const FramePlan& plan;
+    const GpuScene& gpu;
+    const api::RenderRequest& request;
+    const LightSetup& lights;
+    const LpvSetup& lpv;
+    unsigned readback;
+  };
 
   RenderResult render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
                       unsigned readback, double upload_ms);
-  void record_pass(Pass pass, const FramePlan& plan, const GpuScene& gpu, const api::RenderRequest& request,
-                   std::span<const glm::mat4> shadow_views, unsigned readback);
+  void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
+  void record_pass(Pass pass, std::uint32_t cascade, const Frame& frame);
+  api::LpvStats lpv_stats(const LpvSetup& lpv) const;
 };
 
 Renderer::Renderer(const vkx::Device& device) : device_(device), impl_(std::make_unique<Impl>(device)) {}
@@ -156,33 +230,65 @@ RenderResult Renderer::render(const scene::Scene& scene, const api::RenderReques
   return impl_->render(scene, gpu, request, readback, ms_since(start));
 }
 
+// Frame targets, shadow maps, RSMs and grids of the sizes the plan needs: checked against
+// their budgets first, kept when the sizes did not change, freed before reallocating.
+void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights) {
+  const api::Output& out = request.output;
+  const std::uint32_t shadow_layers = std::max<std::uint32_t>(1, std::uint32_t(lights.shadow_views.size()));
+  const std::uint32_t shadow_res = plan.run[kShadow] ? request.shadows.resolution : 1;
+  const std::uint64_t atlas_bytes = std::uint64_t(shadow_res) * shadow_res * shadow_layers * 4;
+  if (atlas_bytes > kShadowAtlasBudgetBytes)
+    throw api::RequestError("shadows.resolution", std::to_string(shadow_layers) + " shadow maps of " +
+                                                      std::to_string(shadow_res) + "^2 need " + mib(atlas_bytes) +
+                                                      ", over the budget of " + mib(kShadowAtlasBudgetBytes) +
+                                                      ": lower the resolution");
+  const bool lpv = plan.run[kRsm];
+  const std::uint32_t rsm_layers = std::uint32_t(lights.views.size());
+  const std::uint64_t rsm_bytes =
+      std::uint64_t(request.lpv.rsm_resolution) * request.lpv.rsm_resolution * rsm_layers * RsmMaps::kBytesPerTexel;
+  if (lpv && rsm_bytes > kRsmBudgetBytes)
+    throw api::RequestError("lpv.rsm", std::to_string(rsm_layers) + " reflective shadow maps of " +
+                                           std::to_string(request.lpv.rsm_resolution) + "^2 need " + mib(rsm_bytes) +
+                                           ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
+  const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades);
+  if (lpv && lpv_bytes > kLpvBudgetBytes)
+    throw api::RequestError("lpv.grid", std::to_string(request.lpv.cascades) + " cascades of " +
+                                            std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) +
+                                            "x" + std::to_string(request.lpv.grid.z) + " cells need " + mib(lpv_bytes) +
+                                            ", over the budget of " + mib(kLpvBudgetBytes) + ": use fewer cells");
+
+  if (!targets || targets->width != out.width || targets->height != out.height) {
+    targets.reset();
+    targets.emplace(device, out.width, out.height);
+  }
+  if (!atlas || atlas->resolution != shadow_res || atlas->layers != shadow_layers) {
+    atlas.reset();
+    atlas.emplace(device, shadow_res, shadow_layers);
+  }
+  if (!lpv) return;  // RSMs and grids of earlier requests stay for the next that needs them
+  if (!rsm_maps || rsm_maps->resolution != request.lpv.rsm_resolution || rsm_maps->layers != rsm_layers) {
+    rsm_maps.reset();
+    rsm_maps.emplace(device, request.lpv.rsm_resolution, rsm_layers);
+  }
+  if (!volumes || volumes->dims != request.lpv.grid || volumes->cascades != request.lpv.cascades ||
+      volumes->iterations != request.lpv.iterations) {
+    volumes.reset();
+    volumes.emplace(device, request.lpv.grid, request.lpv.cascades, request.lpv.iterations);
+  }
+}
+
 RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
                                     unsigned readback, double upload_ms) {
   const auto setup_start = Clock::now();
   const api::Output& out = request.output;
   const std::vector<api::Light> lights = resolve_lights(scene, request);
-  const CameraSetup camera =
-      setup_camera(request.camera.value_or(scene.camera), scene.bounds, float(out.width) / float(out.height));
+  const api::Camera camera_request = request.camera.value_or(scene.camera);
+  const CameraSetup camera = setup_camera(camera_request, scene.bounds, float(out.width) / float(out.height));
   const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows);
   const FramePlan plan = plan_frame(request, light_setup, readback);
-
-  const std::uint32_t layers = std::max<std::uint32_t>(1, std::uint32_t(light_setup.shadow_views.size()));
-  const std::uint32_t resolution = plan.run[kShadow] ? request.shadows.resolution : 1;
-  const std::uint64_t atlas_bytes = std::uint64_t(resolution) * resolution * layers * 4;
-  if (atlas_bytes > kShadowAtlasBudgetBytes)
-    throw api::RequestError("shadows.resolution",
-                            std::to_string(layers) + " shadow maps of " + std::to_string(resolution) + "^2 need " +
-                                std::to_string(atlas_bytes >> 20) + " MiB, over the budget of " +
-                                std::to_string(kShadowAtlasBudgetBytes >> 20) + " MiB: lower the resolution");
-
-  if (!targets || targets->width != out.width || targets->height != out.height) {
-    targets.reset();  // free the old ones before allocating the new
-    targets.emplace(device, out.width, out.height);
-  }
-  if (!atlas || atlas->resolution != resolution || atlas->layers != layers) {
-    atlas.reset();
-    atlas.emplace(device, resolution, layers);
-  }
+  allocate(plan, request, light_setup);
+  const LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, camera,
+                                       camera_request.fov_y_deg, out.height);
 
   gpu::GpuFrame frame{};
   frame.view_proj = camera.view_proj;
@@ -191,33 +297,48 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   frame.depth_range = glm::vec4(camera.near, camera.far, 0.0f, 0.0f);
   frame.exposure = glm::vec4(std::exp2(out.exposure), 0.0f, 0.0f, 0.0f);
   frame.size_view = glm::uvec4(out.width, out.height, gpu_view(out.view), std::uint32_t(light_setup.lights.size()));
+  const gpu::GpuLpv lpv_params = plan.run[kRsm] ? lpv_setup.gpu : no_lpv();
   const auto light_bytes = light_setup.lights.size() * sizeof(gpu::GpuLight);
   const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);
+  const auto rsm_view_bytes = lpv_setup.rsm_views.size() * sizeof(gpu::GpuRsmView);
   ensure_upload_capacity(device, frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   ensure_upload_capacity(device, light_buffer, light_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   ensure_upload_capacity(device, shadow_view_buffer, view_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  ensure_upload_capacity(device, lpv_uniforms, sizeof(lpv_params), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  ensure_upload_capacity(device, rsm_view_buffer, rsm_view_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   frame_uniforms.write(&frame, sizeof(frame));
+  lpv_uniforms.write(&lpv_params, sizeof(lpv_params));
   if (light_bytes) light_buffer.write(light_setup.lights.data(), light_bytes);
   if (view_bytes) shadow_view_buffer.write(light_setup.shadow_views.data(), view_bytes);
+  if (rsm_view_bytes) rsm_view_buffer.write(lpv_setup.rsm_views.data(), rsm_view_bytes);
   const double setup_ms = ms_since(setup_start);
 
+  const Frame context{plan, gpu, request, light_setup, lpv_setup, readback};
+  const std::uint32_t cascades = request.lpv.cascades;
   RenderResult result;
   std::vector<double> record_ms, wait_ms, readback_ms, wall_ms, total_gpu_ms;
   std::vector<std::vector<double>> pass_ms(kPassCount);
+  std::vector<std::vector<std::vector<double>>> cascade_ms(kPassCount, std::vector<std::vector<double>>(cascades));
   for (std::uint32_t f = 0; f < request.repeat; ++f) {
     const auto frame_start = Clock::now();
     double frame_record_ms = 0.0, frame_wait_ms = 0.0, frame_gpu_ms = 0.0;
     for (std::uint32_t p = 0; p < kPassCount; ++p) {
       if (!plan.run[p]) continue;
-      const auto record_start = Clock::now();
-      record_pass(Pass(p), plan, gpu, request, light_setup.shadow_views, readback);
-      frame_record_ms += ms_since(record_start);
-      const auto submit_start = Clock::now();
-      device.submit_and_wait(commands);
-      const double waited = ms_since(submit_start);
-      frame_wait_ms += waited;
-      pass_ms[p].push_back(timer.device_ms(waited));
-      frame_gpu_ms += pass_ms[p].back();
+      double pass_gpu_ms = 0.0;
+      for (std::uint32_t c = 0; c < (is_grid_pass(p) ? cascades : 1u); ++c) {
+        const auto record_start = Clock::now();
+        record_pass(Pass(p), c, context);
+        frame_record_ms += ms_since(record_start);
+        const auto submit_start = Clock::now();
+        device.submit_and_wait(commands);
+        const double waited = ms_since(submit_start);
+        frame_wait_ms += waited;
+        const double gpu_ms = timer.device_ms(waited);
+        if (is_grid_pass(p)) cascade_ms[p][c].push_back(gpu_ms);
+        pass_gpu_ms += gpu_ms;
+      }
+      pass_ms[p].push_back(pass_gpu_ms);
+      frame_gpu_ms += pass_gpu_ms;
     }
     record_ms.push_back(frame_record_ms);
     wait_ms.push_back(frame_wait_ms);
@@ -242,6 +363,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     ps.ran = plan.run[p];
     ps.reason = plan.reason[p];
     if (ps.ran) ps.gpu_ms = api::TimeSummary::of(pass_ms[p]);
+    if (ps.ran && is_grid_pass(p))
+      for (const auto& samples : cascade_ms[p]) ps.cascade_gpu_ms.push_back(api::TimeSummary::of(samples));
     stats.passes.push_back(std::move(ps));
   }
   stats.gpu_ms = api::TimeSummary::of(total_gpu_ms);
@@ -253,43 +376,89 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.wall_ms = api::TimeSummary::of(wall_ms);
   stats.device = device.info().name;
   stats.driver = device.info().driver;
+  if (plan.run[kRsm]) stats.lpv = lpv_stats(lpv_setup);
+  if (request.lpv.intensity != 1.0f && needs_indirect_light(out.view))
+    stats.warnings.push_back("lpv.intensity is " + std::to_string(request.lpv.intensity) +
+                             ": the indirect light is scaled and no longer physically based");
+  if (request.lpv.bounces > 1 && !request.lpv.occlusion && plan.run[kRsm])
+    stats.warnings.push_back("lpv.bounces > 1 needs occlusion: light is reflected where the geometry volume blocks it");
   return result;
 }
 
-// Records one pass into the command buffer, bracketed by the pass timer.
-void Renderer::Impl::record_pass(Pass pass, const FramePlan& plan, const GpuScene& gpu, const api::RenderRequest& request,
-                                 std::span<const glm::mat4> shadow_views, unsigned readback) {
+// The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats.
+api::LpvStats Renderer::Impl::lpv_stats(const LpvSetup& lpv) const {
+  volumes->flux_stats.invalidate();
+  const double watts_per_unit = 1.0 / double(lpv.gpu.scales.x);
+  auto rgb = [](glm::dvec3 v) { return api::Rgb{v.x, v.y, v.z}; };
+  api::LpvStats stats;
+  stats.vpl_count = std::uint64_t(lpv.vpls_per_view_side) * lpv.vpls_per_view_side * lpv.rsm_views.size();
+  stats.vpl_flux = rgb(volumes->flux_at(volumes->vpl_flux_offset(0), watts_per_unit));
+  stats.intensity = lpv.gpu.scales.z;
+  for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
+    const CascadePlacement& p = lpv.cascades[c];
+    api::LpvCascadeStats cs;
+    cs.origin = {p.origin.x, p.origin.y, p.origin.z};
+    cs.cell_size = p.cell_size;
+    cs.grid = {p.dims.x, p.dims.y, p.dims.z};
+    cs.injected_flux = rgb(volumes->flux_at(volumes->grid_flux_offset(c, 0), watts_per_unit));
+    for (std::uint32_t k = 1; k <= volumes->iterations; ++k)
+      cs.propagated_flux.push_back(rgb(volumes->flux_at(volumes->grid_flux_offset(c, k), watts_per_unit)));
+    stats.cascades.push_back(std::move(cs));
+  }
+  return stats;
+}
+
+// Records one pass (for the grid passes: one cascade of it), bracketed by the pass timer.
+void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, const Frame& frame) {
   VK_CHECK(vkResetCommandBuffer(commands, 0));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VK_CHECK(vkBeginCommandBuffer(commands, &begin));
   VkCommandBuffer cmd = commands;
+  const api::Lpv& lpv = frame.request.lpv;
   timer.begin(cmd);
   switch (pass) {
     case kShadow:
-      shadow.record(cmd, gpu, *atlas, shadow_views);
+      shadow.record(cmd, frame.gpu, *atlas, frame.lights.shadow_views);
+      break;
+    case kRsm:
+      rsm.record(cmd, frame.gpu, *rsm_maps, rsm_view_buffer, light_buffer);
       break;
     case kGBuffer:
       // The shading binds the atlas even when no map was drawn (no light samples it then).
-      if (!plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
-      gbuffer.record(cmd, gpu, *targets, frame_uniforms);
+      if (!frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
+      gbuffer.record(cmd, frame.gpu, *targets, frame_uniforms);
       break;
-    case kShade:
-      shade.record(cmd, gpu, *targets, {frame_uniforms, light_buffer, shadow_view_buffer, *atlas});
+    case kInject:
+      inject.record(cmd, cascade, lpv_uniforms, *rsm_maps, frame.lpv.vpls_per_view_side, *volumes);
       break;
+    case kGeometryVolume:
+      geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, *targets,
+                      {lpv.occlusion_from_rsm, lpv.occlusion_from_camera, frame.lpv.gpu.sizes.z}, *volumes);
+      break;
+    case kPropagate:
+      propagate.record(cmd, cascade, lpv.iterations, lpv_uniforms, *volumes);
+      break;
+    case kShade: {
+      const vkx::Buffer& accumulated = frame.plan.run[kRsm] ? volumes->accumulated : empty_grid;
+      shade.record(cmd, frame.gpu, *targets,
+                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, accumulated});
+      break;
+    }
     case kTonemap:
-      tonemap.record(cmd, *targets, request.output.tonemap,
-                     request.output.view != api::View::normal && request.output.view != api::View::depth);
+      tonemap.record(cmd, *targets, frame.request.output.tonemap,
+                     frame.request.output.view != api::View::normal && frame.request.output.view != api::View::depth);
       break;
     case kReadback: {
       auto copy = [&](const vkx::Buffer& from, const vkx::Buffer& to) {
         const VkBufferCopy region{0, 0, from.size()};
         vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
       };
-      if (readback & kReadbackDisplay) copy(targets->display, targets->display_readback);
-      if (readback & kReadbackLinear) copy(targets->linear, targets->linear_readback);
-      vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+      if (frame.readback & kReadbackDisplay) copy(targets->display, targets->display_readback);
+      if (frame.readback & kReadbackLinear) copy(targets->linear, targets->linear_readback);
+      vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                          VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                          VK_ACCESS_HOST_READ_BIT);
       break;
     }
     case kPassCount:

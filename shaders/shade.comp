@@ -1,9 +1,12 @@
 #version 450
-// Direct lighting of the G-buffer: Lambertian surfaces lit by punctual lights with
-// shadow maps. Output: one linear RGBA float per pixel (radiance * 2^exposure for the
-// lit views, the raw quantity for the data views).
+// Shading of the G-buffer: direct light from punctual lights with shadow maps, plus the
+// indirect light of the Light Propagation Volumes. Output: one linear RGBA float per pixel
+// (radiance * 2^exposure for the lit views, the raw quantity for the data views).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
+#include "shared/lights.glsl"
+#include "shared/lpv_sh.h"
+#include "shared/lpv_grid.glsl"
 
 layout(local_size_x = SHADE_GROUP_X, local_size_y = SHADE_GROUP_Y) in;
 
@@ -16,6 +19,8 @@ layout(std430, set = 0, binding = 5) readonly buffer Lights { GpuLight lights[];
 layout(std430, set = 0, binding = 6) readonly buffer ShadowViews { mat4 shadow_view_proj[]; };
 layout(std430, set = 0, binding = 7) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, set = 0, binding = 8) writeonly buffer Image { vec4 pixels[]; };
+layout(std140, set = 0, binding = 9) uniform Lpv { GpuLpv lpv; };
+layout(std430, set = 0, binding = 10) readonly buffer Accumulated { vec4 accumulated[]; };  // 3 per cell
 
 const float PI = 3.14159265358979;
 
@@ -51,25 +56,72 @@ vec3 irradiance(GpuLight light, vec3 p, vec3 n) {
     if (cos_theta <= 0.0) return vec3(0.0);
     return light.radiant.rgb * cos_theta * visibility(light, p, n, 0.0);
   }
-  vec3 d = light.position.xyz - p;
-  float dist2 = dot(d, d);
-  float dist = sqrt(dist2);
-  vec3 to_light = d / dist;
+  vec3 to_light;
+  float dist2;
+  vec3 intensity = light_intensity_toward(light, p, to_light, dist2);
   float cos_theta = dot(n, to_light);
-  if (cos_theta <= 0.0 || dist2 == 0.0) return vec3(0.0);
-  float attenuation = 1.0 / dist2;
-  float range = light.direction.w;
-  if (range > 0.0) {
-    float r = dist / range;  // glTF KHR_lights_punctual recommended window
-    attenuation *= clamp(1.0 - r * r * r * r, 0.0, 1.0);
+  if (cos_theta <= 0.0 || dist2 == 0.0 || intensity == vec3(0.0)) return vec3(0.0);
+  return intensity * (cos_theta / dist2) * visibility(light, p, n, sqrt(dist2));
+}
+
+// Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units) onto a
+// surface with normal n: trilinear between cell centres, then E = <I, cosine lobe of -n> / s^2
+// (the cell's intensity per unit face area is the radiance that crosses it).
+vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
+  GpuLpvCascade g = lpv.cascades[c];
+  vec3 hi = vec3(g.dims.xyz) - 1.0;
+  vec3 u = clamp(q - 0.5, vec3(0.0), hi);
+  uvec3 i0 = uvec3(floor(u));
+  uvec3 i1 = min(i0 + 1u, g.dims.xyz - 1u);
+  vec3 f = u - vec3(i0);
+  uint base = c * g.dims.w;
+  vec4 sh[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
+  for (uint k = 0u; k < 8u; ++k) {
+    uvec3 corner = uvec3((k & 1u) != 0u ? i1.x : i0.x, (k & 2u) != 0u ? i1.y : i0.y, (k & 4u) != 0u ? i1.z : i0.z);
+    vec3 t = mix(1.0 - f, f, vec3(uvec3(k & 1u, (k >> 1) & 1u, (k >> 2) & 1u)));
+    float w = t.x * t.y * t.z;
+    uint cell = (base + lpv_cell_index(corner, g.dims.xyz)) * 3u;
+    sh[0] += w * accumulated[cell];
+    sh[1] += w * accumulated[cell + 1u];
+    sh[2] += w * accumulated[cell + 2u];
   }
-  if (light.info.x == LIGHT_SPOT) {
-    float cd = dot(light.direction.xyz, -to_light);
-    float a = clamp(cd * light.params.x + light.params.y, 0.0, 1.0);
-    attenuation *= a * a;
+  vec4 lobe = sh_cosine_lobe(-n);
+  vec3 e = vec3(dot(sh[0], lobe), dot(sh[1], lobe), dot(sh[2], lobe));
+  return max(e, vec3(0.0)) / (g.origin.w * g.origin.w);
+}
+
+// Indirect irradiance at p: the finest cascade that holds p, handing over to the next coarser
+// one across its border band. Sampled half a cell along the normal, against self-lighting.
+vec3 indirect_irradiance(vec3 p, vec3 n) {
+  vec3 e = vec3(0.0);
+  float remaining = 1.0;
+  uint count = lpv.info.x;
+  for (uint c = 0u; c < count && remaining > 0.0; ++c) {
+    GpuLpvCascade g = lpv.cascades[c];
+    vec3 q = lpv_grid_position(g, p + 0.5 * g.origin.w * n);
+    float inside = lpv_inside_distance(g, q);
+    if (inside < 0.0) continue;
+    float w = c + 1u == count ? 1.0 : clamp(inside / LPV_BLEND_CELLS, 0.0, 1.0);
+    if (w == 0.0) continue;
+    e += remaining * w * cascade_irradiance(c, q, n);
+    remaining *= 1.0 - w;
   }
-  if (attenuation == 0.0) return vec3(0.0);
-  return light.radiant.rgb * (cos_theta * attenuation) * visibility(light, p, n, dist);
+  return e;
+}
+
+// The grid itself: mean intensity per unit face area (W/(m^2 sr)) of the nearest cell of the
+// finest cascade holding p, so cells show as blocks.
+vec3 lpv_cell_view(vec3 p) {
+  for (uint c = 0u; c < lpv.info.x; ++c) {
+    GpuLpvCascade g = lpv.cascades[c];
+    vec3 q = lpv_grid_position(g, p);
+    if (lpv_inside_distance(g, q) < 0.0) continue;
+    uvec3 cell = min(uvec3(q), g.dims.xyz - 1u);
+    uint i = (c * g.dims.w + lpv_cell_index(cell, g.dims.xyz)) * 3u;
+    vec3 dc = vec3(accumulated[i].x, accumulated[i + 1u].x, accumulated[i + 2u].x);
+    return max(dc, vec3(0.0)) * SH_C0 / (g.origin.w * g.origin.w);
+  }
+  return vec3(0.0);
 }
 
 void main() {
@@ -97,10 +149,15 @@ void main() {
   } else if (view == VIEW_DEPTH) {
     float depth = dot(p - frame.camera_position.xyz, frame.camera_forward.xyz);
     value = vec3(clamp((depth - frame.depth_range.x) / (frame.depth_range.y - frame.depth_range.x), 0.0, 1.0));
+  } else if (view == VIEW_LPV) {
+    value = lpv_cell_view(p) * frame.exposure.x;
   } else {
     vec3 e = vec3(0.0);
-    for (uint i = 0u; i < frame.size_view.w; ++i) e += irradiance(lights[i], p, n);
-    value = (albedo / PI * e + materials[material].emissive.rgb) * frame.exposure.x;
+    if (view != VIEW_INDIRECT)
+      for (uint i = 0u; i < frame.size_view.w; ++i) e += irradiance(lights[i], p, n);
+    if (view != VIEW_DIRECT && lpv.info.x > 0u) e += lpv.scales.z * indirect_irradiance(p, n);
+    vec3 emitted = view == VIEW_INDIRECT ? vec3(0.0) : materials[material].emissive.rgb;
+    value = (albedo / PI * e + emitted) * frame.exposure.x;
   }
   pixels[index] = vec4(value, 1.0);
 }

@@ -7,13 +7,14 @@
 namespace renderer {
 namespace {
 
-VkSampler make_sampler(VkDevice device, VkFilter filter, bool compare) {
+// A depth-comparing sampler: hardware PCF with a linear filter.
+VkSampler make_sampler(VkDevice device, VkFilter filter) {
   VkSamplerCreateInfo ci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   ci.magFilter = filter;
   ci.minFilter = filter;
   ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   ci.addressModeU = ci.addressModeV = ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  ci.compareEnable = compare ? VK_TRUE : VK_FALSE;
+  ci.compareEnable = VK_TRUE;
   ci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // lit where the receiver is not behind the stored depth
   ci.maxLod = 0.0f;
   VkSampler sampler = VK_NULL_HANDLE;
@@ -34,14 +35,14 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
                      vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
                      vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
                      vkx::binding(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+                     vkx::binding(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                     vkx::binding(9, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
+                     vkx::binding(10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
   pipeline_ = vkx::Pipeline(device, layout, spirv_shade_comp);
-  texel_sampler_ = make_sampler(device.handle(), VK_FILTER_NEAREST, false);
-  shadow_sampler_ = make_sampler(device.handle(), VK_FILTER_LINEAR, true);
+  shadow_sampler_ = make_sampler(device.handle(), VK_FILTER_LINEAR);
 }
 
 ShadePass::~ShadePass() {
-  vkDestroySampler(device_.handle(), texel_sampler_, nullptr);
   vkDestroySampler(device_.handle(), shadow_sampler_, nullptr);
 }
 
@@ -60,6 +61,8 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
       .buffer(6, storage, in.shadow_views.handle())
       .buffer(7, storage, scene.materials.handle())
       .buffer(8, storage, targets.linear.handle())
+      .buffer(9, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.lpv.handle())
+      .buffer(10, storage, in.accumulated.handle())
       .apply(device_.handle());
 
   pipeline_.bind(cmd);

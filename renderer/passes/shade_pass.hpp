@@ -1,4 +1,5 @@
-// Direct lighting (and the data views) from the G-buffer into the frame's linear image.
+// Direct and indirect lighting (and the data views) from the G-buffer into the frame's
+// linear image.
 #pragma once
 
 #include "renderer/frame_targets.hpp"
@@ -12,6 +13,8 @@ struct ShadeInputs {
   const vkx::Buffer& lights;        // gpu::GpuLight[]
   const vkx::Buffer& shadow_views;  // mat4[] per atlas layer
   const ShadowAtlas& atlas;
+  const vkx::Buffer& lpv;          // gpu::GpuLpv (cascade count 0: no indirect light)
+  const vkx::Buffer& accumulated;  // the cascades' accumulated SH (any buffer when there are none)
 };
 
 class ShadePass {
@@ -27,7 +30,6 @@ class ShadePass {
  private:
   const vkx::Device& device_;
   vkx::Pipeline pipeline_;
-  VkSampler texel_sampler_ = VK_NULL_HANDLE;   // G-buffer reads (texelFetch)
   VkSampler shadow_sampler_ = VK_NULL_HANDLE;  // depth compare with bilinear 2x2 PCF
 };
 

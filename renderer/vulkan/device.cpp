@@ -261,7 +261,17 @@ void Device::create_device() {
   features13.dynamicRendering = VK_TRUE;
   VkPhysicalDeviceDynamicRenderingFeaturesKHR dynamic_rendering{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
   dynamic_rendering.dynamicRendering = VK_TRUE;
+  // The LPV passes accumulate in 64-bit fixed point with atomics, for bitwise determinism.
+  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
+  vkGetPhysicalDeviceFeatures2(physical_, &supported);
+  if (!supported.features.shaderInt64 || !supported12.shaderBufferInt64Atomics)
+    throw std::runtime_error("device '" + info_.name + "' lacks shaderInt64 or shaderBufferInt64Atomics, which the "
+                             "LPV passes need for deterministic accumulation");
+  VkPhysicalDeviceFeatures features10{};
+  features10.shaderInt64 = VK_TRUE;
   VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  features12.shaderBufferInt64Atomics = VK_TRUE;
   features12.pNext = core13 ? static_cast<void*>(&features13) : static_cast<void*>(&dynamic_rendering);
   std::vector<const char*> extensions;
   if (!core13) extensions.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
@@ -269,6 +279,7 @@ void Device::create_device() {
   VkDeviceCreateInfo ci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features12};
   ci.queueCreateInfoCount = 1;
   ci.pQueueCreateInfos = &queue_ci;
+  ci.pEnabledFeatures = &features10;
   ci.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
   ci.ppEnabledExtensionNames = extensions.data();
   VK_CHECK(vkCreateDevice(physical_, &ci, nullptr, &device_));

@@ -24,9 +24,11 @@ LPV_CONST LIGHT_SPOT = 2u;
 // Output views of the shade pass (api::View in the same order).
 LPV_CONST VIEW_FINAL = 0u;
 LPV_CONST VIEW_DIRECT = 1u;
-LPV_CONST VIEW_ALBEDO = 2u;
-LPV_CONST VIEW_NORMAL = 3u;
-LPV_CONST VIEW_DEPTH = 4u;
+LPV_CONST VIEW_INDIRECT = 2u;
+LPV_CONST VIEW_LPV = 3u;
+LPV_CONST VIEW_ALBEDO = 4u;
+LPV_CONST VIEW_NORMAL = 5u;
+LPV_CONST VIEW_DEPTH = 6u;
 
 LPV_CONST TONEMAP_NONE = 0u;
 LPV_CONST TONEMAP_REINHARD = 1u;
@@ -57,6 +59,46 @@ struct GpuFrame {
   vec4 depth_range;       // x: near, y: far (metres along camera_forward)
   vec4 exposure;          // x: 2^exposure
   uvec4 size_view;        // x: width, y: height, z: VIEW_*, w: light count
+};
+
+// ---- Light Propagation Volumes ----
+
+LPV_CONST LPV_MAX_CASCADES = 4u;
+LPV_CONST LPV_GROUP = 4u;         // grid passes: work groups of 4 x 4 x 4 cells
+LPV_CONST LPV_VPL_GROUP = 8u;     // injection: work groups of 8 x 8 VPLs
+LPV_CONST LPV_GV_SOURCES = 2u;    // geometry volume sources: RSM surfels, camera surfels
+LPV_CONST LPV_GV_SOURCE_RSM = 0u;
+LPV_CONST LPV_GV_SOURCE_CAMERA = 1u;
+LPV_CONST LPV_GV_WORDS = 8u;      // int64 per corner and source: 4 SH, 3 albedo * weight, weight
+
+// Flags in GpuLpv.info.z
+LPV_CONST LPV_FLAG_OCCLUSION = 1u;
+LPV_CONST LPV_FLAG_BOUNCES = 2u;
+
+// Light views of the RSM pass (GpuRsmView.info.y).
+LPV_CONST RSM_VIEW_PERSPECTIVE = 0u;
+LPV_CONST RSM_VIEW_ORTHOGRAPHIC = 1u;
+
+struct GpuLpvCascade {
+  vec4 origin;  // xyz: minimum corner (m); w: cell size (m)
+  uvec4 dims;   // xyz: cells per axis; w: cell count
+};
+
+// Everything the LPV passes and the shading read about the volumes of one frame.
+struct GpuLpv {
+  GpuLpvCascade cascades[LPV_MAX_CASCADES];
+  uvec4 info;     // x: cascade count (0 = no indirect light); y: RSM views; z: LPV_FLAG_*; w: VPL downsample
+  uvec4 sizes;    // x: RSM resolution; y: iterations; z: camera surfel stride (pixels); w: unused
+  vec4 scales;    // x: flux fixed-point units per W; y: geometry fixed-point units per unit potential;
+                  // z: indirect intensity scale; w: injection offset (cells)
+  vec4 camera;    // x: camera pixel footprint at unit depth (m); yzw: unused
+};
+
+// One light view of the RSM pass: where its texels are and how big they are.
+struct GpuRsmView {
+  mat4 view_proj;
+  vec4 axis;   // xyz: unit view direction; w: texel footprint: side at unit distance (perspective) or side (m)
+  uvec4 info;  // x: light index; y: RSM_VIEW_*
 };
 
 struct GpuTonemapParams {

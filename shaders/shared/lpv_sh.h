@@ -64,6 +64,42 @@ LPV_FUNC vec4 sh_diffuse_emitter(vec3 n, float phi) { return sh_cosine_lobe(n) *
 // centre is 1 cell ahead and half a cell to the side.
 LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead + 0.5f * side); }
 
+// The six propagation axes, in the order +X, -X, +Y, -Y, +Z, -Z.
+LPV_FUNC vec3 lpv_axis(int i) {
+  vec3 a = vec3(0.0f);
+  a[i / 2] = (i % 2 == 0) ? 1.0f : -1.0f;
+  return a;
+}
+
+// Propagation sends a cell's light to its 6 neighbours through 5 faces each: 30 faces with
+// flux Omega_f * I(w_f). Their sum is the cell's flux, but a 2-band SH has negative lobes, so
+// some face fluxes can be negative: sent as they are they are unphysical, clamped they add
+// energy, and occluded they add energy too (a blocked negative flux is a gain). So each cell
+// sends only its positive face fluxes, all scaled by this factor, which makes them sum to the
+// cell's flux again: energy is conserved exactly and nothing negative travels. 1 when no
+// face is negative (|linear part| <= constant part), 0 for a cell with no positive flux.
+LPV_FUNC float lpv_outgoing_scale(vec4 sh) {
+  float mean = SH_C0 * sh.x;
+  float linear2 = SH_C1 * SH_C1 * (sh.y * sh.y + sh.z * sh.z + sh.w * sh.w);
+  if (mean <= 0.0f) return 0.0f;
+  if (linear2 <= mean * mean) return 1.0f;
+  float total = 0.0f;
+  float positive = 0.0f;
+  for (int i = 0; i < 6; ++i) {
+    vec3 ahead = lpv_axis(i);
+    float far_flux = LPV_FAR_FACE_SOLID_ANGLE * sh_evaluate(sh, ahead);
+    total += far_flux;
+    positive += far_flux > 0.0f ? far_flux : 0.0f;
+    for (int j = 0; j < 6; ++j) {
+      if (j / 2 == i / 2) continue;
+      float side_flux = LPV_SIDE_FACE_SOLID_ANGLE * sh_evaluate(sh, lpv_face_direction(ahead, lpv_axis(j)));
+      total += side_flux;
+      positive += side_flux > 0.0f ? side_flux : 0.0f;
+    }
+  }
+  return positive > 0.0f && total > 0.0f ? total / positive : 0.0f;
+}
+
 #ifdef __cplusplus
 }  // namespace gpu
 #endif

@@ -1,0 +1,117 @@
+#include "renderer/lpv/lpv_setup.hpp"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace renderer {
+namespace {
+
+// The camera's G-buffer feeds the geometry volume with about this many rows of surfels.
+constexpr std::uint32_t kCameraSurfelRows = 256;
+
+float max_component(glm::vec3 v) { return std::max({v.x, v.y, v.z}); }
+
+// The origin that centres a grid of `dims` cells of `cell` metres on `centre`, on the lattice
+// of whole cells (rounded, so the shift is at most half a cell).
+glm::vec3 snapped_origin(glm::vec3 centre, glm::uvec3 dims, float cell) {
+  return glm::round((centre - 0.5f * glm::vec3(dims) * cell) / cell) * cell;
+}
+
+}  // namespace
+
+std::vector<CascadePlacement> place_cascades(const api::Lpv& lpv, const scene::Bounds& bounds, glm::vec3 focus) {
+  const glm::uvec3 dims = lpv.grid;
+  const std::uint32_t count = lpv.cascades;
+  const float outer_scale = std::exp2(float(count - 1));
+  float cell0;
+  if (lpv.extent) {
+    cell0 = *lpv.extent / float(std::max({dims.x, dims.y, dims.z}));
+  } else {
+    // The outermost cascade holds the bounds with room to spare: dims - 1 cells span them,
+    // so rounding its origin to whole cells never leaves a piece of the scene outside.
+    const glm::vec3 size = bounds.max - bounds.min;
+    float outer_cell = 0.0f;
+    for (int a = 0; a < 3; ++a) outer_cell = std::max(outer_cell, size[a] / float(std::max(dims[a], 2u) - 1u));
+    if (!(outer_cell > 0.0f)) outer_cell = std::max(max_component(glm::abs(bounds.center())) * 1e-3f, 1e-3f);
+    cell0 = outer_cell / outer_scale;
+  }
+
+  const glm::vec3 inner_centre = lpv.origin ? *lpv.origin + 0.5f * glm::vec3(dims) * cell0
+                                            : glm::clamp(focus, bounds.min, bounds.max);
+  std::vector<CascadePlacement> cascades;
+  for (std::uint32_t c = 0; c < count; ++c) {
+    CascadePlacement p;
+    p.dims = dims;
+    p.cell_size = cell0 * std::exp2(float(c));
+    const bool fitted_outer = !lpv.origin && !lpv.extent && c + 1 == count;
+    const glm::vec3 centre = fitted_outer ? bounds.center() : inner_centre;
+    p.origin = (c == 0 && lpv.origin) ? *lpv.origin : snapped_origin(centre, dims, p.cell_size);
+    cascades.push_back(p);
+  }
+  return cascades;
+}
+
+double vpl_flux_bound(const std::vector<api::Light>& lights, const scene::Bounds& bounds) {
+  double bound = 0.0;
+  for (const api::Light& light : lights) {
+    const double strength = double(light.intensity) * double(max_component(light.color));
+    if (light.type == api::LightType::directional) {
+      const double r = bounds.radius();
+      bound += strength * 4.0 * r * r;  // irradiance over the orthographic map's square
+    } else {
+      bound += strength * 4.0 * glm::pi<double>();  // intensity over the whole sphere
+    }
+  }
+  return bound;
+}
+
+float flux_units_per_watt(double flux_bound) {
+  if (!(flux_bound > 0.0)) return 1.0f;
+  // float holds 2^-126..2^127: bounds beyond that range would need it, and are rejected
+  // long before (intensities are at most 1e12).
+  const double exponent = std::floor(60.0 - std::log2(flux_bound));
+  return float(std::exp2(std::clamp(exponent, -100.0, 120.0)));
+}
+
+LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::vector<api::Light>& lights,
+                   const std::vector<LightView>& views, const CameraSetup& camera, float camera_fov_y_deg,
+                   std::uint32_t image_height) {
+  LpvSetup setup;
+  setup.cascades = place_cascades(lpv, bounds, camera.position + camera.forward * glm::length(bounds.center() - camera.position));
+  gpu::GpuLpv& g = setup.gpu;
+  for (std::size_t c = 0; c < setup.cascades.size(); ++c) {
+    const CascadePlacement& p = setup.cascades[c];
+    g.cascades[c].origin = glm::vec4(p.origin, p.cell_size);
+    g.cascades[c].dims = glm::uvec4(p.dims, p.dims.x * p.dims.y * p.dims.z);
+  }
+  std::uint32_t flags = 0;
+  if (lpv.occlusion) flags |= gpu::LPV_FLAG_OCCLUSION;
+  if (lpv.occlusion && lpv.bounces > 1) flags |= gpu::LPV_FLAG_BOUNCES;
+  g.info = glm::uvec4(std::uint32_t(setup.cascades.size()), std::uint32_t(views.size()), flags, lpv.vpl_downsample);
+  const std::uint32_t stride = std::max(1u, (image_height + kCameraSurfelRows / 2) / kCameraSurfelRows);
+  g.sizes = glm::uvec4(lpv.rsm_resolution, lpv.iterations, stride, 0u);
+  g.scales = glm::vec4(flux_units_per_watt(vpl_flux_bound(lights, bounds)), kGeometryUnitsPerPotential,
+                       lpv.intensity, lpv.injection_offset);
+  const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);
+  g.camera = glm::vec4(pixel_footprint, camera.position);
+
+  for (const LightView& view : views) {
+    gpu::GpuRsmView v{};
+    v.view_proj = view.view_proj;
+    v.axis = glm::vec4(view.axis, 2.0f * view.half_extent / float(lpv.rsm_resolution));
+    v.info = glm::uvec4(view.light, view.orthographic ? gpu::RSM_VIEW_ORTHOGRAPHIC : gpu::RSM_VIEW_PERSPECTIVE, 0u, 0u);
+    setup.rsm_views.push_back(v);
+  }
+  setup.vpls_per_view_side = lpv.rsm_resolution / lpv.vpl_downsample;
+  return setup;
+}
+
+gpu::GpuLpv no_lpv() {
+  gpu::GpuLpv g{};
+  g.scales.z = 1.0f;
+  return g;
+}
+
+}  // namespace renderer

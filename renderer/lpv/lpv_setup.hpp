@@ -1,0 +1,54 @@
+// Pure maths that turns a request's LPV settings into what the LPV passes consume: where each
+// cascade sits, the fixed-point scales of the deterministic accumulation, and the RSM views.
+// No Vulkan here, so all of it is unit-tested on its own.
+#pragma once
+
+#include "api/render_request.hpp"
+#include "renderer/frame_setup.hpp"
+#include "renderer/gpu_types.hpp"
+#include "renderer/scene/scene.hpp"
+
+#include <vector>
+
+namespace renderer {
+
+struct CascadePlacement {
+  glm::vec3 origin{0.0f};  // minimum corner, metres
+  float cell_size = 1.0f;  // metres; cells are cubes
+  glm::uvec3 dims{1};      // cells per axis
+};
+
+// Cascade 0 is the finest; each next one has cells twice as large and the same dims. With
+// lpv.origin / lpv.extent given, cascade 0 is exactly that box (extent = its longest edge);
+// otherwise the outermost cascade is fitted around the scene bounds and the inner ones are
+// centred on `focus`. Cascades other than a given one are snapped to whole cells of their
+// own size, so that a moving focus does not make the lighting crawl.
+std::vector<CascadePlacement> place_cascades(const api::Lpv& lpv, const scene::Bounds& bounds, glm::vec3 focus);
+
+// An upper bound of the flux all VPLs can carry (W): what the lights send toward the scene,
+// reflected with albedo at most 1. Zero when no light emits.
+double vpl_flux_bound(const std::vector<api::Light>& lights, const scene::Bounds& bounds);
+
+// The fixed-point scale of the flux accumulators: a power of two (so scaling is exact) that
+// leaves 2^60 units for the bound, far from the int64 limit whatever the light's magnitude.
+float flux_units_per_watt(double flux_bound);
+
+// Geometry volume: fixed-point units per unit of blocking potential.
+inline constexpr float kGeometryUnitsPerPotential = 1048576.0f;  // 2^20
+
+struct LpvSetup {
+  std::vector<CascadePlacement> cascades;
+  gpu::GpuLpv gpu{};
+  std::vector<gpu::GpuRsmView> rsm_views;
+  std::uint32_t vpls_per_view_side = 0;
+};
+
+// Everything the LPV passes of one frame need. `views` are the emitting lights' views.
+LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::vector<api::Light>& lights,
+                   const std::vector<LightView>& views, const CameraSetup& camera, float camera_fov_y_deg,
+                   std::uint32_t image_height);
+
+// The GpuLpv of a frame without indirect light (the shading reads no grid).
+gpu::GpuLpv no_lpv();
+
+}  // namespace renderer

@@ -1,0 +1,62 @@
+#include "renderer/lpv/lpv_volumes.hpp"
+
+#include "renderer/gpu_types.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <cstring>
+
+namespace renderer {
+namespace {
+
+constexpr VkDeviceSize kInjectedBytesPerCell = 12 * 8;
+constexpr VkDeviceSize kGridBytesPerCell = 2 * 4 * 16;
+constexpr VkDeviceSize kAccumulatedBytesPerCell = 3 * 16;
+constexpr VkDeviceSize kCornerBytes = gpu::LPV_GV_SOURCES * gpu::LPV_GV_WORDS * 8;
+constexpr VkDeviceSize kFaceBytesPerCell = 6 * 16;
+
+std::uint64_t cell_count(glm::uvec3 d) { return std::uint64_t(d.x) * d.y * d.z; }
+
+vkx::Image rsm_target(const vkx::Device& device, VkFormat format, std::uint32_t res, std::uint32_t layers) {
+  return vkx::Image(device, {format, res, res, layers, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+                             VK_IMAGE_ASPECT_COLOR_BIT, true});
+}
+
+}  // namespace
+
+RsmMaps::RsmMaps(const vkx::Device& device, std::uint32_t res, std::uint32_t n)
+    : resolution(res),
+      layers(n),
+      position(rsm_target(device, kPositionFormat, res, n)),
+      normal(rsm_target(device, kNormalFormat, res, n)),
+      flux(rsm_target(device, kFluxFormat, res, n)),
+      depth(device, {kDepthFormat, res, res, n, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
+                     true}) {}
+
+std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades) {
+  const std::uint64_t cells = cell_count(dims);
+  return cells * (kInjectedBytesPerCell + kGridBytesPerCell + kFaceBytesPerCell + kAccumulatedBytesPerCell * cascades) +
+         cell_count(dims + 1u) * kCornerBytes;
+}
+
+LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c, std::uint32_t n)
+    : dims(d), cascades(c), iterations(n), stats_stride(3 * (n + 2)) {
+  const VkDeviceSize cells = cell_count(d);
+  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  injected = vkx::Buffer(device, cells * kInjectedBytesPerCell, storage, vkx::MemoryUse::gpu_only);
+  grids = vkx::Buffer(device, cells * kGridBytesPerCell, storage, vkx::MemoryUse::gpu_only);
+  accumulated = vkx::Buffer(device, cells * kAccumulatedBytesPerCell * c, storage, vkx::MemoryUse::gpu_only);
+  corners = vkx::Buffer(device, cell_count(d + 1u) * kCornerBytes, storage, vkx::MemoryUse::gpu_only);
+  faces = vkx::Buffer(device, cells * kFaceBytesPerCell, storage, vkx::MemoryUse::gpu_only);
+  flux_stats = vkx::Buffer(device, VkDeviceSize(stats_stride) * c * 8, storage, vkx::MemoryUse::readback);
+  // The injection resolve clears its accumulators after reading them; they start cleared.
+  device.run_once([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, injected.handle(), 0, VK_WHOLE_SIZE, 0); });
+}
+
+glm::dvec3 LpvVolumes::flux_at(std::uint32_t offset, double watts_per_unit) const {
+  std::int64_t units[3];
+  std::memcpy(units, static_cast<const std::int64_t*>(flux_stats.mapped()) + offset, sizeof(units));
+  return glm::dvec3(double(units[0]), double(units[1]), double(units[2])) * watts_per_unit;
+}
+
+}  // namespace renderer

@@ -1,0 +1,60 @@
+// The device memory of the LPV: the reflective shadow maps of every light view and the grids
+// of the cascades. Kept between requests with the same sizes.
+#pragma once
+
+#include "renderer/vulkan/resources.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+
+namespace renderer {
+
+// One layer per light view: what the light sees first, as virtual point lights (rsm.frag).
+struct RsmMaps {
+  static constexpr VkFormat kPositionFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // xyz, w: 1 = surface
+  static constexpr VkFormat kNormalFormat = VK_FORMAT_R32G32B32A32_SFLOAT;    // xyz, w: albedo code
+  static constexpr VkFormat kFluxFormat = VK_FORMAT_R32G32B32A32_SFLOAT;      // rgb: W, w: area m^2
+  static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+  static constexpr std::uint64_t kBytesPerTexel = 16 * 3 + 4;
+
+  RsmMaps(const vkx::Device& device, std::uint32_t resolution, std::uint32_t layers);
+
+  std::uint32_t resolution;
+  std::uint32_t layers;
+  vkx::Image position;
+  vkx::Image normal;
+  vkx::Image flux;
+  vkx::Image depth;
+};
+
+// The grids of all cascades. Cascades are processed one after another, so only the
+// accumulated light (read by the shading) is kept per cascade; the rest is reused.
+struct LpvVolumes {
+  LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades, std::uint32_t iterations);
+
+  // Device memory the volumes of these sizes take.
+  static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades);
+
+  // Offsets (in int64) into flux_stats: the VPL flux of a cascade, and its grid's flux after
+  // iteration k (k = 0: as injected); three channels each.
+  std::uint32_t vpl_flux_offset(std::uint32_t cascade) const { return cascade * stats_stride; }
+  std::uint32_t grid_flux_offset(std::uint32_t cascade, std::uint32_t k) const {
+    return cascade * stats_stride + 3 * (k + 1);
+  }
+  // A flux from flux_stats, in watts, per channel (the buffer must have been read back).
+  glm::dvec3 flux_at(std::uint32_t offset, double watts_per_unit) const;
+
+  glm::uvec3 dims;
+  std::uint32_t cascades;
+  std::uint32_t iterations;
+  std::uint32_t stats_stride;
+  vkx::Buffer injected;     // int64[12] per cell: fixed-point SH of the injected VPLs
+  vkx::Buffer grids;        // vec4[4] per cell, twice: propagation's ping-pong (RGB SH, outgoing scale)
+  vkx::Buffer accumulated;  // vec4[3] per cell and cascade: the light the shading reads
+  vkx::Buffer corners;      // int64[LPV_GV_WORDS] per corner and source: geometry volume sums
+  vkx::Buffer faces;        // vec4[6] per cell: blocking SH on the +X, +Y, +Z faces, then their albedo
+  vkx::Buffer flux_stats;   // int64 fixed-point fluxes, host-visible
+};
+
+}  // namespace renderer

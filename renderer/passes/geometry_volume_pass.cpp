@@ -1,0 +1,87 @@
+#include "renderer/passes/geometry_volume_pass.hpp"
+
+#include "renderer/gpu_types.hpp"
+#include "shaders/lpv_geometry_inject.comp.h"
+#include "shaders/lpv_geometry_resolve.comp.h"
+
+namespace renderer {
+namespace {
+
+struct SourceConstants {
+  std::uint32_t cascade;
+  std::uint32_t source;
+};
+
+std::uint32_t groups(std::uint32_t n, std::uint32_t size) { return (n + size - 1) / size; }
+
+void compute_to_compute(VkCommandBuffer cmd) {
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+}
+
+}  // namespace
+
+GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(device) {
+  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+  vkx::PipelineLayoutDesc inject;
+  inject.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs)};
+  for (std::uint32_t b = 1; b <= 6; ++b) inject.bindings.push_back(vkx::binding(b, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs));
+  inject.bindings.push_back(vkx::binding(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs));
+  inject.push_constant_bytes = sizeof(SourceConstants);
+  inject.push_constant_stages = cs;
+  inject_ = vkx::Pipeline(device, inject, spirv_lpv_geometry_inject_comp);
+
+  vkx::PipelineLayoutDesc resolve;
+  resolve.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
+                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+  resolve.push_constant_bytes = sizeof(std::uint32_t);
+  resolve.push_constant_stages = cs;
+  resolve_ = vkx::Pipeline(device, resolve, spirv_lpv_geometry_resolve_comp);
+}
+
+void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
+                                const RsmMaps& maps, const FrameTargets& camera, const GeometrySources& sources,
+                                const LpvVolumes& volumes) const {
+  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
+  vkx::DescriptorWriter(inject_.descriptor_set())
+      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .image(1, image, maps.position.view(), general)
+      .image(2, image, maps.normal.view(), general)
+      .image(3, image, maps.flux.view(), general)
+      .image(4, image, camera.position.view(), general)
+      .image(5, image, camera.normal.view(), general)
+      .image(6, image, camera.albedo.view(), general)
+      .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corners.handle())
+      .apply(device_.handle());
+  vkx::DescriptorWriter(resolve_.descriptor_set())
+      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corners.handle())
+      .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.handle())
+      .apply(device_.handle());
+
+  vkCmdFillBuffer(cmd, volumes.corners.handle(), 0, VK_WHOLE_SIZE, 0);
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  inject_.bind(cmd);
+  if (sources.rsm) {
+    inject_.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_RSM});
+    vkCmdDispatch(cmd, groups(maps.resolution, gpu::LPV_VPL_GROUP), groups(maps.resolution, gpu::LPV_VPL_GROUP),
+                  maps.layers);
+  }
+  if (sources.camera) {
+    inject_.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA});
+    const std::uint32_t s = sources.camera_stride;
+    vkCmdDispatch(cmd, groups(groups(camera.width, s), gpu::LPV_VPL_GROUP),
+                  groups(groups(camera.height, s), gpu::LPV_VPL_GROUP), 1);
+  }
+  compute_to_compute(cmd);
+  resolve_.bind(cmd);
+  resolve_.push(cmd, cascade);
+  const glm::uvec3 d = volumes.dims;
+  vkCmdDispatch(cmd, groups(d.x, gpu::LPV_GROUP), groups(d.y, gpu::LPV_GROUP), groups(d.z, gpu::LPV_GROUP));
+  compute_to_compute(cmd);
+}
+
+}  // namespace renderer

@@ -1,0 +1,31 @@
+// LPV geometry volume for one cascade: surfels from the RSMs and from the camera's G-buffer
+// add one-sided blocking potentials to the cell corners (lpv_geometry_inject.comp), which
+// become the blocking of every cell face (lpv_geometry_resolve.comp).
+#pragma once
+
+#include "renderer/frame_targets.hpp"
+#include "renderer/lpv/lpv_volumes.hpp"
+#include "renderer/vulkan/pipeline.hpp"
+
+namespace renderer {
+
+struct GeometrySources {
+  bool rsm = true;     // surfels of every RSM texel
+  bool camera = true;  // surfels of every camera_stride-th G-buffer pixel (each way)
+  std::uint32_t camera_stride = 1;
+};
+
+class GeometryVolumePass {
+ public:
+  explicit GeometryVolumePass(const vkx::Device& device);
+
+  void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
+              const FrameTargets& camera, const GeometrySources& sources, const LpvVolumes& volumes) const;
+
+ private:
+  const vkx::Device& device_;
+  vkx::Pipeline inject_;
+  vkx::Pipeline resolve_;
+};
+
+}  // namespace renderer

@@ -1,0 +1,81 @@
+#include "renderer/passes/lpv_inject_pass.hpp"
+
+#include "renderer/gpu_types.hpp"
+#include "shaders/lpv_inject.comp.h"
+#include "shaders/lpv_inject_resolve.comp.h"
+
+namespace renderer {
+namespace {
+
+struct CascadeConstants {
+  std::uint32_t cascade;
+  std::uint32_t stats_offset;
+};
+
+std::uint32_t groups(std::uint32_t n, std::uint32_t size) { return (n + size - 1) / size; }
+
+}  // namespace
+
+LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
+  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+  vkx::PipelineLayoutDesc inject;
+  inject.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
+                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                     vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+  inject.push_constant_bytes = sizeof(CascadeConstants);
+  inject.push_constant_stages = cs;
+  inject_ = vkx::Pipeline(device, inject, spirv_lpv_inject_comp);
+
+  vkx::PipelineLayoutDesc resolve;
+  resolve.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
+                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                      vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                      vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+  resolve.push_constant_bytes = sizeof(CascadeConstants);
+  resolve.push_constant_stages = cs;
+  resolve_ = vkx::Pipeline(device, resolve, spirv_lpv_inject_resolve_comp);
+}
+
+void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
+                           std::uint32_t vpls_per_side, const LpvVolumes& volumes) const {
+  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  vkx::DescriptorWriter(inject_.descriptor_set())
+      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .image(1, image, maps.position.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(2, image, maps.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(3, image, maps.flux.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .buffer(4, storage, volumes.injected.handle())
+      .buffer(5, storage, volumes.flux_stats.handle())
+      .apply(device_.handle());
+  vkx::DescriptorWriter(resolve_.descriptor_set())
+      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .buffer(1, storage, volumes.injected.handle())
+      .buffer(2, storage, volumes.grids.handle())
+      .buffer(3, storage, volumes.accumulated.handle())
+      .buffer(4, storage, volumes.flux_stats.handle())
+      .apply(device_.handle());
+
+  if (cascade == 0) {
+    vkCmdFillBuffer(cmd, volumes.flux_stats.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  }
+  inject_.bind(cmd);
+  inject_.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_offset(cascade)});
+  vkCmdDispatch(cmd, groups(vpls_per_side, gpu::LPV_VPL_GROUP), groups(vpls_per_side, gpu::LPV_VPL_GROUP), maps.layers);
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  resolve_.bind(cmd);
+  resolve_.push(cmd, CascadeConstants{cascade, volumes.grid_flux_offset(cascade, 0)});
+  const glm::uvec3 d = volumes.dims;
+  vkCmdDispatch(cmd, groups(d.x, gpu::LPV_GROUP), groups(d.y, gpu::LPV_GROUP), groups(d.z, gpu::LPV_GROUP));
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+}
+
+}  // namespace renderer

@@ -1,0 +1,25 @@
+// LPV injection for one cascade: the RSM texels, merged into VPLs, become fixed-point SH in
+// the cell each lands in (lpv_inject.comp); the sums then become the float grid propagation
+// starts from and the first term of the accumulated light (lpv_inject_resolve.comp).
+#pragma once
+
+#include "renderer/lpv/lpv_volumes.hpp"
+#include "renderer/vulkan/pipeline.hpp"
+
+namespace renderer {
+
+class LpvInjectPass {
+ public:
+  explicit LpvInjectPass(const vkx::Device& device);
+
+  // `params` is the frame's gpu::GpuLpv. The first cascade also clears the flux statistics.
+  void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
+              std::uint32_t vpls_per_side, const LpvVolumes& volumes) const;
+
+ private:
+  const vkx::Device& device_;
+  vkx::Pipeline inject_;
+  vkx::Pipeline resolve_;
+};
+
+}  // namespace renderer

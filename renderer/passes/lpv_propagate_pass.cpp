@@ -1,0 +1,52 @@
+#include "renderer/passes/lpv_propagate_pass.hpp"
+
+#include "renderer/gpu_types.hpp"
+#include "shaders/lpv_propagate.comp.h"
+
+namespace renderer {
+namespace {
+
+struct IterationConstants {
+  std::uint32_t cascade;
+  std::uint32_t stats_offset;
+  std::uint32_t iteration;  // 1-based
+};
+
+std::uint32_t groups(std::uint32_t n) { return (n + gpu::LPV_GROUP - 1) / gpu::LPV_GROUP; }
+
+}  // namespace
+
+LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) {
+  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+  vkx::PipelineLayoutDesc layout;
+  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
+                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                     vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                     vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+  layout.push_constant_bytes = sizeof(IterationConstants);
+  layout.push_constant_stages = cs;
+  pipeline_ = vkx::Pipeline(device, layout, spirv_lpv_propagate_comp);
+}
+
+void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t iterations,
+                              const vkx::Buffer& params, const LpvVolumes& volumes) const {
+  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  vkx::DescriptorWriter(pipeline_.descriptor_set())
+      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .buffer(1, storage, volumes.grids.handle())
+      .buffer(2, storage, volumes.accumulated.handle())
+      .buffer(3, storage, volumes.faces.handle())
+      .buffer(4, storage, volumes.flux_stats.handle())
+      .apply(device_.handle());
+  pipeline_.bind(cmd);
+  const glm::uvec3 d = volumes.dims;
+  for (std::uint32_t k = 1; k <= iterations; ++k) {
+    pipeline_.push(cmd, IterationConstants{cascade, volumes.grid_flux_offset(cascade, k), k});
+    vkCmdDispatch(cmd, groups(d.x), groups(d.y), groups(d.z));
+    vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  }
+}
+
+}  // namespace renderer

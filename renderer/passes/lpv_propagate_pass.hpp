@@ -1,0 +1,24 @@
+// LPV propagation for one cascade: N gather iterations (lpv_propagate.comp), each adding its
+// result to the cascade's accumulated light.
+#pragma once
+
+#include "renderer/lpv/lpv_volumes.hpp"
+#include "renderer/vulkan/pipeline.hpp"
+
+namespace renderer {
+
+class LpvPropagatePass {
+ public:
+  explicit LpvPropagatePass(const vkx::Device& device);
+
+  // Expects the injected grid in the first half of volumes.grids, and the geometry volume's
+  // faces when the frame's occlusion flag is set.
+  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t iterations, const vkx::Buffer& params,
+              const LpvVolumes& volumes) const;
+
+ private:
+  const vkx::Device& device_;
+  vkx::Pipeline pipeline_;
+};
+
+}  // namespace renderer

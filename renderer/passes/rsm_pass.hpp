@@ -1,0 +1,25 @@
+// Reflective shadow maps: for every light view, the surfels the light sees first with their
+// position, normal, albedo, area and reflected flux (rsm.frag), one RsmMaps layer per view.
+#pragma once
+
+#include "renderer/gpu_scene.hpp"
+#include "renderer/lpv/lpv_volumes.hpp"
+#include "renderer/vulkan/pipeline.hpp"
+
+namespace renderer {
+
+class RsmPass {
+ public:
+  explicit RsmPass(const vkx::Device& device);
+
+  // Renders every view and leaves the maps in GENERAL layout for the compute passes.
+  // `views` holds gpu::GpuRsmView[maps.layers]; `lights` gpu::GpuLight[].
+  void record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& maps, const vkx::Buffer& views,
+              const vkx::Buffer& lights) const;
+
+ private:
+  const vkx::Device& device_;
+  vkx::Pipeline pipeline_;
+};
+
+}  // namespace renderer

@@ -1,0 +1,74 @@
+#version 450
+// Injection: every RSM texel (or block of vpl_downsample^2 texels merged into one brighter VPL)
+// is a virtual point light of intensity I(w) = Phi / pi * max(0, <n, w>), whose integral over
+// the sphere is Phi. It is moved injection_offset cells along its normal (against
+// self-illumination) and added as SH into the cell it lands in, in fixed point.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/gpu_types.h"
+#include "shared/lpv_sh.h"
+#include "shared/lpv_grid.glsl"
+#include "shared/lpv_fixed_point.glsl"
+
+layout(local_size_x = LPV_VPL_GROUP, local_size_y = LPV_VPL_GROUP) in;
+
+layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
+layout(set = 0, binding = 1, rgba32f) uniform readonly image2DArray rsm_position;
+layout(set = 0, binding = 2, rgba32f) uniform readonly image2DArray rsm_normal;
+layout(set = 0, binding = 3, rgba32f) uniform readonly image2DArray rsm_flux;
+layout(std430, set = 0, binding = 4) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
+layout(std430, set = 0, binding = 5) buffer FluxStats { int64_t flux_stats[]; };
+layout(push_constant) uniform Push { uint cascade; uint stats_offset; } push;
+
+shared vec3 group_flux[LPV_VPL_GROUP * LPV_VPL_GROUP];
+
+void main() {
+  uint block = lpv.info.w;
+  uint vpls_per_side = lpv.sizes.x / block;
+  uvec3 id = gl_GlobalInvocationID;
+  bool in_range = id.x < vpls_per_side && id.y < vpls_per_side;
+
+  // Merge the block: flux adds up; position and normal are flux-weighted means.
+  vec3 flux = vec3(0.0);
+  vec3 position = vec3(0.0);
+  vec3 normal = vec3(0.0);
+  for (uint y = 0u; in_range && y < block; ++y) {
+    for (uint x = 0u; x < block; ++x) {
+      ivec3 texel = ivec3(id.xy * block + uvec2(x, y), id.z);
+      if (imageLoad(rsm_position, texel).w == 0.0) continue;
+      vec3 f = imageLoad(rsm_flux, texel).rgb;
+      float w = f.r + f.g + f.b;
+      flux += f;
+      position += w * imageLoad(rsm_position, texel).xyz;
+      normal += w * imageLoad(rsm_normal, texel).xyz;
+    }
+  }
+  float weight = flux.r + flux.g + flux.b;
+
+  // The flux of all VPLs, for the statistics: one sum per work group, in a fixed order.
+  uint local = gl_LocalInvocationIndex;
+  group_flux[local] = flux;
+  barrier();
+  for (uint stride = LPV_VPL_GROUP * LPV_VPL_GROUP / 2u; stride > 0u; stride /= 2u) {
+    if (local < stride) group_flux[local] += group_flux[local + stride];
+    barrier();
+  }
+  if (local == 0u) {
+    for (uint c = 0u; c < 3u; ++c)
+      if (group_flux[0][c] != 0.0) atomicAdd(flux_stats[push.stats_offset + c], to_fixed(group_flux[0][c], lpv.scales.x));
+  }
+
+  if (weight <= 0.0 || dot(normal, normal) == 0.0) return;
+  position /= weight;
+  normal = normalize(normal);
+  GpuLpvCascade g = lpv.cascades[push.cascade];
+  vec3 q = lpv_grid_position(g, position + normal * (lpv.scales.w * g.origin.w));
+  if (lpv_inside_distance(g, q) < 0.0) return;
+  uvec3 cell = min(uvec3(q), g.dims.xyz - 1u);
+  uint base = lpv_cell_index(cell, g.dims.xyz) * 12u;
+  vec4 lobe = sh_cosine_lobe(normal) / LPV_PI;
+  for (uint c = 0u; c < 3u; ++c) {
+    if (flux[c] == 0.0) continue;
+    vec4 sh = lobe * flux[c];
+    for (uint k = 0u; k < 4u; ++k) atomicAdd(injected[base + c * 4u + k], to_fixed(sh[k], lpv.scales.x));
+  }
+}

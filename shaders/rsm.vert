@@ -1,0 +1,19 @@
+#version 450
+// Reflective shadow maps: the scene from one light view (see rsm.frag).
+#extension GL_GOOGLE_include_directive : require
+#include "shared/gpu_types.h"
+
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+
+layout(std430, set = 0, binding = 0) readonly buffer Views { GpuRsmView views[]; };
+layout(push_constant) uniform Draw { uint view; uint material; } draw;
+
+layout(location = 0) out vec3 out_world;
+layout(location = 1) out vec3 out_normal;
+
+void main() {
+  out_world = in_position;
+  out_normal = in_normal;
+  gl_Position = views[draw.view].view_proj * vec4(in_position, 1.0);
+}

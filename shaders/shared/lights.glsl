@@ -1,0 +1,26 @@
+// Punctual lights in the units of KHR_lights_punctual (DESIGN.md section 2), shared by the
+// direct shading and the reflective shadow maps so both see the same light.
+#ifndef LPV_LIGHTS_GLSL
+#define LPV_LIGHTS_GLSL
+
+// Radiant intensity (W/sr) a point or spot light sends toward p, with the spot's smooth cone
+// and the glTF range window; `to_light` (unit) and `dist2` describe the path from p.
+vec3 light_intensity_toward(GpuLight light, vec3 p, out vec3 to_light, out float dist2) {
+  vec3 d = light.position.xyz - p;
+  dist2 = dot(d, d);
+  to_light = dist2 > 0.0 ? d * inversesqrt(dist2) : vec3(0.0);
+  float attenuation = 1.0;
+  float range = light.direction.w;
+  if (range > 0.0) {
+    float r = sqrt(dist2) / range;  // glTF KHR_lights_punctual recommended window
+    attenuation = clamp(1.0 - r * r * r * r, 0.0, 1.0);
+  }
+  if (light.info.x == LIGHT_SPOT) {
+    float cd = dot(light.direction.xyz, -to_light);
+    float a = clamp(cd * light.params.x + light.params.y, 0.0, 1.0);
+    attenuation *= a * a;
+  }
+  return light.radiant.rgb * attenuation;
+}
+
+#endif

@@ -1,0 +1,25 @@
+// Addressing of the LPV grids and sampling of the accumulated light, for the LPV passes and
+// the shading. Grids are arrays of cells in x-fastest order; a cell of an SH grid is one vec4
+// per colour channel (see lpv_sh.h for the basis).
+#ifndef LPV_GRID_GLSL
+#define LPV_GRID_GLSL
+
+uint lpv_cell_index(uvec3 cell, uvec3 dims) { return cell.x + dims.x * (cell.y + dims.y * cell.z); }
+
+uvec3 lpv_cell_of_index(uint index, uvec3 dims) {
+  return uvec3(index % dims.x, (index / dims.x) % dims.y, index / (dims.x * dims.y));
+}
+
+// Position in cell units of cascade g (0 at the minimum corner, dims at the maximum).
+vec3 lpv_grid_position(GpuLpvCascade g, vec3 p) { return (p - g.origin.xyz) / g.origin.w; }
+
+// How far q (cell units) is inside the grid: negative outside, in cells.
+float lpv_inside_distance(GpuLpvCascade g, vec3 q) {
+  vec3 to_max = vec3(g.dims.xyz) - q;
+  return min(min(min(q.x, q.y), q.z), min(min(to_max.x, to_max.y), to_max.z));
+}
+
+// Width of the band at a cascade's border over which it hands over to the next coarser one.
+const float LPV_BLEND_CELLS = 2.0;
+
+#endif
