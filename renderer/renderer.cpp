@@ -33,7 +33,7 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Passes in recording and submission order. The LPV grid passes run once per cascade.
+// The passes of a frame. The LPV grid passes run once per cascade.
 enum Pass : std::uint32_t {
   kShadow,
   kRsm,
@@ -147,8 +147,7 @@ struct Renderer::Impl {
         propagate(device),
         shade(device),
         tonemap(device),
-        timer(device),
-        empty_grid(device, 256, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vkx::MemoryUse::upload) {
+        timer(device) {
     VkCommandPoolCreateInfo pool_ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_ci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool_ci.queueFamilyIndex = device.queue_family();
@@ -182,9 +181,8 @@ struct Renderer::Impl {
   std::optional<FrameTargets> targets;
   std::optional<ShadowAtlas> atlas;
   std::optional<RsmMaps> rsm_maps;
-  std::optional<LpvVolumes> volumes;
+  std::optional<LpvVolumes> volumes;  // the shading binds them even when no LPV ran
   vkx::Buffer frame_uniforms, light_buffer, shadow_view_buffer, lpv_uniforms, rsm_view_buffer;
-  vkx::Buffer empty_grid;  // bound as the accumulated grid when no LPV ran
 
   // What the passes of one frame read, fixed before the first is recorded.
   struct Frame {
@@ -201,6 +199,7 @@ struct Renderer::Impl {
   void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
   void record_pass(Pass pass, std::uint32_t cascade, const Frame& frame);
   api::LpvStats lpv_stats(const LpvSetup& lpv) const;
+  LpvSnapshot lpv_snapshot(const LpvSetup& lpv) const;
 };
 
 Renderer::Renderer(const vkx::Device& device) : device_(device), impl_(std::make_unique<Impl>(device)) {}
@@ -265,7 +264,10 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
     atlas.reset();
     atlas.emplace(device, shadow_res, shadow_layers);
   }
-  if (!lpv) return;  // RSMs and grids of earlier requests stay for the next that needs them
+  if (!lpv) {
+    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1, 0);  // something for the shading to bind
+    return;  // RSMs and grids of earlier requests stay for the next that needs them
+  }
   if (!rsm_maps || rsm_maps->resolution != request.lpv.rsm_resolution || rsm_maps->layers != rsm_layers) {
     rsm_maps.reset();
     rsm_maps.emplace(device, request.lpv.rsm_resolution, rsm_layers);
@@ -315,6 +317,16 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
 
   const Frame context{plan, gpu, request, light_setup, lpv_setup, readback};
   const std::uint32_t cascades = request.lpv.cascades;
+  // The passes in submission order. The cascades share their working grids, so each runs
+  // all its grid passes before the next starts.
+  std::vector<std::pair<Pass, std::uint32_t>> schedule;
+  for (Pass p : {kShadow, kRsm, kGBuffer})
+    if (plan.run[p]) schedule.emplace_back(p, 0);
+  for (std::uint32_t c = 0; c < cascades; ++c)
+    for (Pass p : {kInject, kGeometryVolume, kPropagate})
+      if (plan.run[p]) schedule.emplace_back(p, c);
+  for (Pass p : {kShade, kTonemap, kReadback})
+    if (plan.run[p]) schedule.emplace_back(p, 0);
   RenderResult result;
   std::vector<double> record_ms, wait_ms, readback_ms, wall_ms, total_gpu_ms;
   std::vector<std::vector<double>> pass_ms(kPassCount);
@@ -322,24 +334,22 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   for (std::uint32_t f = 0; f < request.repeat; ++f) {
     const auto frame_start = Clock::now();
     double frame_record_ms = 0.0, frame_wait_ms = 0.0, frame_gpu_ms = 0.0;
-    for (std::uint32_t p = 0; p < kPassCount; ++p) {
-      if (!plan.run[p]) continue;
-      double pass_gpu_ms = 0.0;
-      for (std::uint32_t c = 0; c < (is_grid_pass(p) ? cascades : 1u); ++c) {
-        const auto record_start = Clock::now();
-        record_pass(Pass(p), c, context);
-        frame_record_ms += ms_since(record_start);
-        const auto submit_start = Clock::now();
-        device.submit_and_wait(commands);
-        const double waited = ms_since(submit_start);
-        frame_wait_ms += waited;
-        const double gpu_ms = timer.device_ms(waited);
-        if (is_grid_pass(p)) cascade_ms[p][c].push_back(gpu_ms);
-        pass_gpu_ms += gpu_ms;
-      }
-      pass_ms[p].push_back(pass_gpu_ms);
-      frame_gpu_ms += pass_gpu_ms;
+    std::vector<double> frame_pass_ms(kPassCount, 0.0);
+    for (const auto& [p, c] : schedule) {
+      const auto record_start = Clock::now();
+      record_pass(p, c, context);
+      frame_record_ms += ms_since(record_start);
+      const auto submit_start = Clock::now();
+      device.submit_and_wait(commands);
+      const double waited = ms_since(submit_start);
+      frame_wait_ms += waited;
+      const double gpu_ms = timer.device_ms(waited);
+      if (is_grid_pass(p)) cascade_ms[p][c].push_back(gpu_ms);
+      frame_pass_ms[p] += gpu_ms;
+      frame_gpu_ms += gpu_ms;
     }
+    for (std::uint32_t p = 0; p < kPassCount; ++p)
+      if (plan.run[p]) pass_ms[p].push_back(frame_pass_ms[p]);
     record_ms.push_back(frame_record_ms);
     wait_ms.push_back(frame_wait_ms);
     total_gpu_ms.push_back(frame_gpu_ms);
@@ -377,6 +387,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.device = device.info().name;
   stats.driver = device.info().driver;
   if (plan.run[kRsm]) stats.lpv = lpv_stats(lpv_setup);
+  if (plan.run[kRsm] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup);
   if (request.lpv.intensity != 1.0f && needs_indirect_light(out.view))
     stats.warnings.push_back("lpv.intensity is " + std::to_string(request.lpv.intensity) +
                              ": the indirect light is scaled and no longer physically based");
@@ -406,6 +417,52 @@ api::LpvStats Renderer::Impl::lpv_stats(const LpvSetup& lpv) const {
     stats.cascades.push_back(std::move(cs));
   }
   return stats;
+}
+
+// Copies the RSMs and the accumulated grids to the host. Not timed: only for checks.
+LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv) const {
+  struct Copy {
+    const vkx::Image* image;
+    std::vector<glm::vec4>* into;
+  };
+  LpvSnapshot snapshot;
+  snapshot.rsm_resolution = rsm_maps->resolution;
+  snapshot.rsm_layers = rsm_maps->layers;
+  std::vector<glm::vec4> channels[3];
+  std::vector<Copy> copies = {{&rsm_maps->position, &snapshot.rsm_position},
+                              {&rsm_maps->normal, &snapshot.rsm_normal},
+                              {&rsm_maps->flux, &snapshot.rsm_flux}};
+  for (int c = 0; c < 3; ++c) copies.push_back({&volumes->accumulated[c], &channels[c]});
+  for (const Copy& copy : copies) {
+    const vkx::ImageDesc& d = copy.image->desc();
+    const std::size_t texels = std::size_t(d.width) * d.height * (d.volume ? d.depth : d.layers);
+    vkx::Buffer host(device, texels * sizeof(glm::vec4), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vkx::MemoryUse::readback);
+    device.run_once([&](VkCommandBuffer cmd) {
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, d.volume ? 1 : d.layers};
+      region.imageExtent = {d.width, d.height, d.volume ? d.depth : 1};
+      const VkImageLayout src = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+      vkx::transition(cmd, *copy.image, VK_IMAGE_LAYOUT_GENERAL, src, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                      VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+      vkCmdCopyImageToBuffer(cmd, copy.image->handle(), src, host.handle(), 1, &region);
+      vkx::transition(cmd, *copy.image, src, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+      vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                          VK_ACCESS_HOST_READ_BIT);
+    });
+    host.invalidate();
+    const auto* texel = static_cast<const glm::vec4*>(host.mapped());
+    copy.into->assign(texel, texel + texels);
+  }
+  for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
+    const CascadePlacement& p = lpv.cascades[c];
+    LpvSnapshot::Cascade cascade{p.origin, p.cell_size, p.dims, {}};
+    const std::size_t cells = std::size_t(p.dims.x) * p.dims.y * p.dims.z;
+    for (std::size_t i = 0; i < cells; ++i)
+      for (int k = 0; k < 3; ++k) cascade.accumulated.push_back(channels[k][c * cells + i]);
+    snapshot.cascades.push_back(std::move(cascade));
+  }
+  return snapshot;
 }
 
 // Records one pass (for the grid passes: one cascade of it), bracketed by the pass timer.
@@ -439,12 +496,10 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, const Frame& 
     case kPropagate:
       propagate.record(cmd, cascade, lpv.iterations, lpv_uniforms, *volumes);
       break;
-    case kShade: {
-      const vkx::Buffer& accumulated = frame.plan.run[kRsm] ? volumes->accumulated : empty_grid;
+    case kShade:
       shade.record(cmd, frame.gpu, *targets,
-                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, accumulated});
+                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes});
       break;
-    }
     case kTonemap:
       tonemap.record(cmd, *targets, frame.request.output.tonemap,
                      frame.request.output.view != api::View::normal && frame.request.output.view != api::View::depth);

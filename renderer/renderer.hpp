@@ -9,7 +9,10 @@
 #include "renderer/scene/scene.hpp"
 #include "renderer/vulkan/device.hpp"
 
+#include <glm/glm.hpp>
+
 #include <memory>
+#include <vector>
 
 namespace renderer {
 
@@ -17,6 +20,24 @@ namespace renderer {
 enum Readback : unsigned {
   kReadbackDisplay = 1u,  // 8-bit sRGB RGBA, for PNG
   kReadbackLinear = 2u,   // linear float RGBA, for EXR/PFM and for measurements
+  kReadbackLpv = 4u,      // the RSMs and the accumulated grids, for checks and debugging
+};
+
+// The LPV's data of one frame, on the host (kReadbackLpv): what tests and invariant checks
+// inspect. Empty when no LPV ran.
+struct LpvSnapshot {
+  struct Cascade {
+    glm::vec3 origin{0.0f};
+    float cell_size = 0.0f;
+    glm::uvec3 dims{0};
+    std::vector<glm::vec4> accumulated;  // 3 per cell (R, G, B SH), x-fastest cell order
+  };
+  std::vector<Cascade> cascades;
+  std::uint32_t rsm_resolution = 0;
+  std::uint32_t rsm_layers = 0;
+  std::vector<glm::vec4> rsm_position;  // per texel, layer-major: xyz, w = 1 where a surface is
+  std::vector<glm::vec4> rsm_normal;    // xyz, w: albedo code
+  std::vector<glm::vec4> rsm_flux;      // rgb: VPL flux (W), w: surfel area
 };
 
 // The readback a request's output format needs.
@@ -25,6 +46,7 @@ unsigned readback_for(const api::Output& output);
 struct RenderResult {
   image::Rgba8Image display;   // empty unless kReadbackDisplay
   image::RgbaF32Image linear;  // empty unless kReadbackLinear
+  LpvSnapshot lpv;             // empty unless kReadbackLpv
   api::RenderStats stats;
 };
 

@@ -20,7 +20,7 @@ layout(set = 0, binding = 3, rgba32f) uniform readonly image2DArray rsm_flux;
 layout(set = 0, binding = 4, rgba32f) uniform readonly image2D g_position;
 layout(set = 0, binding = 5, rgba16f) uniform readonly image2D g_normal;
 layout(set = 0, binding = 6, rgba16f) uniform readonly image2D g_albedo;
-layout(std430, set = 0, binding = 7) buffer Corners { int64_t corners[]; };  // LPV_GV_WORDS per corner and source
+layout(std430, set = 0, binding = 7) buffer CornerSums { int64_t corner_sums[]; };  // LPV_GV_WORDS per corner, source
 layout(push_constant) uniform Push { uint cascade; uint source; } push;
 
 // Surfels seen edge-on count at most this many times their projected area.
@@ -45,9 +45,9 @@ void add_surfel(vec3 p, vec3 n, float area, vec3 albedo) {
   uint base = (lpv_cell_index(uvec3(corner), corner_dims) * LPV_GV_SOURCES + push.source) * LPV_GV_WORDS;
   vec4 sh = sh_cosine_lobe(n) * potential;
   float units = lpv.scales.y;
-  for (uint k = 0u; k < 4u; ++k) atomicAdd(corners[base + k], to_fixed(sh[k], units));
-  for (uint c = 0u; c < 3u; ++c) atomicAdd(corners[base + 4u + c], to_fixed(albedo[c] * potential, units));
-  atomicAdd(corners[base + 7u], to_fixed(potential, units));
+  for (uint k = 0u; k < 4u; ++k) atomicAdd(corner_sums[base + k], to_fixed(sh[k], units));
+  for (uint c = 0u; c < 3u; ++c) atomicAdd(corner_sums[base + 4u + c], to_fixed(albedo[c] * potential, units));
+  atomicAdd(corner_sums[base + 7u], to_fixed(potential, units));
 }
 
 void main() {

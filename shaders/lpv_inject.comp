@@ -19,7 +19,7 @@ layout(std430, set = 0, binding = 4) buffer Injected { int64_t injected[]; };  /
 layout(std430, set = 0, binding = 5) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_offset; } push;
 
-shared vec3 group_flux[LPV_VPL_GROUP * LPV_VPL_GROUP];
+#include "shared/lpv_grid_flux.glsl"
 
 void main() {
   uint block = lpv.info.w;
@@ -44,18 +44,8 @@ void main() {
   }
   float weight = flux.r + flux.g + flux.b;
 
-  // The flux of all VPLs, for the statistics: one sum per work group, in a fixed order.
-  uint local = gl_LocalInvocationIndex;
-  group_flux[local] = flux;
-  barrier();
-  for (uint stride = LPV_VPL_GROUP * LPV_VPL_GROUP / 2u; stride > 0u; stride /= 2u) {
-    if (local < stride) group_flux[local] += group_flux[local + stride];
-    barrier();
-  }
-  if (local == 0u) {
-    for (uint c = 0u; c < 3u; ++c)
-      if (group_flux[0][c] != 0.0) atomicAdd(flux_stats[push.stats_offset + c], to_fixed(group_flux[0][c], lpv.scales.x));
-  }
+  // The flux of all VPLs, for the statistics.
+  add_grid_flux(flux, push.stats_offset, lpv.scales.x);
 
   if (weight <= 0.0 || dot(normal, normal) == 0.0) return;
   position /= weight;

@@ -12,20 +12,21 @@ layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GR
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 layout(std430, set = 0, binding = 1) buffer Injected { int64_t injected[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Grids { vec4 grids[]; };  // 4 per cell: RGB SH, outgoing scale
-layout(std430, set = 0, binding = 3) writeonly buffer Accumulated { vec4 accumulated[]; };
-layout(std430, set = 0, binding = 4) buffer FluxStats { int64_t flux_stats[]; };
+layout(set = 0, binding = 2, rgba32f) uniform writeonly image3D grids;
+layout(set = 0, binding = 3, rgba32f) uniform writeonly image3D accumulated_r;
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image3D accumulated_g;
+layout(set = 0, binding = 5, rgba32f) uniform writeonly image3D accumulated_b;
+layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_offset; } push;
 
 #include "shared/lpv_grid_flux.glsl"
 
 void main() {
   GpuLpvCascade g = lpv.cascades[push.cascade];
-  uvec3 cell = gl_GlobalInvocationID;
-  bool in_grid = all(lessThan(cell, g.dims.xyz));
+  ivec3 cell = ivec3(gl_GlobalInvocationID);
   vec3 flux = vec3(0.0);
-  if (in_grid) {
-    uint index = lpv_cell_index(cell, g.dims.xyz);
+  if (all(lessThan(cell, ivec3(g.dims.xyz)))) {
+    uint index = lpv_cell_index(uvec3(cell), g.dims.xyz);
     vec4 sh[3];
     for (uint c = 0u; c < 3u; ++c) {
       for (uint k = 0u; k < 4u; ++k) {
@@ -33,11 +34,13 @@ void main() {
         sh[c][k] = from_fixed(injected[i], 1.0 / lpv.scales.x);
         injected[i] = 0l;
       }
-      grids[index * 4u + c] = sh[c];
-      accumulated[(push.cascade * g.dims.w + index) * 3u + c] = sh[c];
+      imageStore(grids, lpv_grid_texel(cell, int(c), 0u, g.dims.z), sh[c] * lpv_outgoing_scale(sh[c]));
       flux[c] = sh_flux(sh[c]);
     }
-    grids[index * 4u + 3u] = vec4(lpv_outgoing_scale(sh[0]), lpv_outgoing_scale(sh[1]), lpv_outgoing_scale(sh[2]), 0.0);
+    ivec3 accumulated = lpv_accumulated_texel(cell, push.cascade, g.dims.z);
+    imageStore(accumulated_r, accumulated, sh[0]);
+    imageStore(accumulated_g, accumulated, sh[1]);
+    imageStore(accumulated_b, accumulated, sh[2]);
   }
-  add_group_flux(flux, push.stats_offset, lpv.scales.x);
+  add_grid_flux(flux, push.stats_offset, lpv.scales.x);
 }

@@ -8,6 +8,10 @@
 // (annotations 6.3). Negative face fluxes are handled by lpv_outgoing_scale (see lpv_sh.h).
 // From the second iteration on, the geometry volume on the face shared with the neighbour
 // blocks part of the light (none in the first, where the injecting surface would block itself).
+//
+// Speed: the 30 faces are written out by macros with their directions and normals as literals
+// (lavapipe's compiler does not unroll loops this large), so each face costs one 4-wide dot
+// per channel plus two multiply-adds (a cosine lobe along an axis has two non-zero terms).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
@@ -17,86 +21,122 @@
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(std430, set = 0, binding = 1) buffer Grids { vec4 grids[]; };  // 2 grids of 4 vec4 per cell
-layout(std430, set = 0, binding = 2) buffer Accumulated { vec4 accumulated[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Faces { vec4 faces[]; };
-layout(std430, set = 0, binding = 4) buffer FluxStats { int64_t flux_stats[]; };
+layout(set = 0, binding = 1, rgba32f) uniform image3D grids;
+layout(set = 0, binding = 2, rgba32f) uniform image3D accumulated_r;
+layout(set = 0, binding = 3, rgba32f) uniform image3D accumulated_g;
+layout(set = 0, binding = 4, rgba32f) uniform image3D accumulated_b;
+layout(set = 0, binding = 5, rgba32f) uniform readonly image3D faces;
+layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_offset; uint iteration; } push;
 
 #include "shared/lpv_grid_flux.glsl"
+
+const float S5 = 0.4472135955;  // 1 / sqrt(5)
+const float T5 = 0.8944271910;  // 2 / sqrt(5)
+const float LOBE_C0 = SH_COSINE_C0 / LPV_PI;  // flux/pi * cosine lobe: constant term per watt
+const float LOBE_C1 = SH_COSINE_C1 / LPV_PI;  // and linear term per watt
+
+// The SH coefficient a cosine lobe along each axis has besides the constant one, with its
+// sign: sh_cosine_lobe(n) = (c0, -c1 n.y, c1 n.z, -c1 n.x).
+#define LOBE_AXIS_PX(sh, flux) sh.w -= LOBE_C1 * (flux)
+#define LOBE_AXIS_NX(sh, flux) sh.w += LOBE_C1 * (flux)
+#define LOBE_AXIS_PY(sh, flux) sh.y -= LOBE_C1 * (flux)
+#define LOBE_AXIS_NY(sh, flux) sh.y += LOBE_C1 * (flux)
+#define LOBE_AXIS_PZ(sh, flux) sh.z += LOBE_C1 * (flux)
+#define LOBE_AXIS_NZ(sh, flux) sh.z -= LOBE_C1 * (flux)
+
+// One face: flux Omega * I(w) of each channel through it (less what the blockers stop), into
+// this cell as a cosine lobe along the face's normal axis.
+#define FACE(W, OMEGA, AXIS)                                                                        \
+  {                                                                                                 \
+    const vec4 basis = sh_basis(W);                                                                 \
+    vec3 flux = (OMEGA) * max(vec3(dot(sh_r, basis), dot(sh_g, basis), dot(sh_b, basis)), vec3(0.0)); \
+    if (occluded) flux *= transmitted(blocking, albedo, W, flux, gathered);                        \
+    gathered[0].x += LOBE_C0 * flux.r;                                                              \
+    gathered[1].x += LOBE_C0 * flux.g;                                                              \
+    gathered[2].x += LOBE_C0 * flux.b;                                                              \
+    LOBE_AXIS_##AXIS(gathered[0], flux.r);                                                          \
+    LOBE_AXIS_##AXIS(gathered[1], flux.g);                                                          \
+    LOBE_AXIS_##AXIS(gathered[2], flux.b);                                                          \
+  }
+
+// The fraction of `flux` (travelling along w) the blockers on the face let through. With
+// bounces, the light they stop is reflected back, diffusely around their mean normal.
+float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gathered[3]) {
+  float blocked = clamp(dot(blocking, sh_basis(-w)), 0.0, 1.0);
+  if (albedo != vec3(0.0) && blocked > 0.0) {
+    vec3 mean_normal = vec3(-blocking.w, -blocking.y, blocking.z);
+    vec3 n = dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -w;
+    vec4 lobe = sh_cosine_lobe(n) / LPV_PI;
+    vec3 reflected = flux * blocked * albedo;
+    gathered[0] += reflected.r * lobe;
+    gathered[1] += reflected.g * lobe;
+    gathered[2] += reflected.b * lobe;
+  }
+  return 1.0 - blocked;
+}
+
+// The light of the neighbour at cell - STEP, travelling along +STEP: its far face (normal
+// along the travel) and its four side faces (normals across it).
+#define NEIGHBOUR(STEP, AXIS_INDEX, FAR, W_FAR, S1, W1, S2, W2, S3, W3, S4, W4)                    \
+  {                                                                                                 \
+    ivec3 neighbour = cell - STEP;                                                                  \
+    if (in_grid && all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, dims))) { \
+      vec4 sh_r = imageLoad(grids, lpv_grid_texel(neighbour, 0, source, depth));                 \
+      vec4 sh_g = imageLoad(grids, lpv_grid_texel(neighbour, 1, source, depth));                 \
+      vec4 sh_b = imageLoad(grids, lpv_grid_texel(neighbour, 2, source, depth));                 \
+      vec4 blocking = vec4(0.0);                                                                    \
+      vec3 albedo = vec3(0.0);                                                                      \
+      if (occluded) {                                                                               \
+        ivec3 lower = min(cell, neighbour);                                                         \
+        blocking = imageLoad(faces, ivec3(6 * lower.x + AXIS_INDEX, lower.yz));                     \
+        if (bounces) albedo = imageLoad(faces, ivec3(6 * lower.x + 3 + AXIS_INDEX, lower.yz)).rgb;   \
+      }                                                                                             \
+      FACE(W_FAR, LPV_FAR_FACE_SOLID_ANGLE, FAR)                                                    \
+      FACE(W1, LPV_SIDE_FACE_SOLID_ANGLE, S1)                                                       \
+      FACE(W2, LPV_SIDE_FACE_SOLID_ANGLE, S2)                                                       \
+      FACE(W3, LPV_SIDE_FACE_SOLID_ANGLE, S3)                                                       \
+      FACE(W4, LPV_SIDE_FACE_SOLID_ANGLE, S4)                                                       \
+    }                                                                                               \
+  }
 
 void main() {
   GpuLpvCascade g = lpv.cascades[push.cascade];
   ivec3 dims = ivec3(g.dims.xyz);
   ivec3 cell = ivec3(gl_GlobalInvocationID);
   bool in_grid = all(lessThan(cell, dims));
-  uint cells = g.dims.w;
-  uint source_base = ((push.iteration + 1u) & 1u) * cells;  // iteration 1 reads grid 0
-  uint target_base = (push.iteration & 1u) * cells;
+  uint depth = g.dims.z;
+  uint source = (push.iteration + 1u) & 1u;  // iteration 1 reads grid 0 and writes grid 1
+  uint target = push.iteration & 1u;
   bool occluded = (lpv.info.z & LPV_FLAG_OCCLUSION) != 0u && push.iteration >= 2u;
   bool bounces = occluded && (lpv.info.z & LPV_FLAG_BOUNCES) != 0u;
 
   vec4 gathered[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
-  for (int i = 0; in_grid && i < 6; ++i) {
-    vec3 ahead = lpv_axis(i);
-    ivec3 neighbour = cell - ivec3(ahead);
-    if (any(lessThan(neighbour, ivec3(0))) || any(greaterThanEqual(neighbour, dims))) continue;
-    uint from = (source_base + lpv_cell_index(uvec3(neighbour), g.dims.xyz)) * 4u;
-    vec4 sh_r = grids[from], sh_g = grids[from + 1u], sh_b = grids[from + 2u];
-    vec3 scale = grids[from + 3u].xyz;
-    if (scale == vec3(0.0)) continue;
-
-    vec4 blocking = vec4(0.0);
-    vec3 albedo = vec3(0.0);
-    vec3 reflect_normal = vec3(0.0);
-    if (occluded) {
-      // The face between the two cells belongs to the lower one, on the axis of travel.
-      uint axis = uint(i / 2);
-      uint lower = lpv_cell_index(uvec3(min(cell, neighbour)), g.dims.xyz);
-      blocking = faces[lower * 6u + axis];
-      albedo = faces[lower * 6u + 3u + axis].rgb;
-      vec3 mean_normal = vec3(-blocking.w, -blocking.y, blocking.z);  // linear SH part -> direction
-      reflect_normal = dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -ahead;
-    }
-
-    for (int f = 0; f < 5; ++f) {
-      // f = 0: the far face; f = 1..4: the side faces, on the 4 axes across `ahead`.
-      int side_axis = f == 0 ? i : (2 * ((i / 2 + 1 + (f - 1) / 2) % 3) + (f - 1) % 2);
-      vec3 normal = lpv_axis(side_axis);
-      vec3 w = f == 0 ? ahead : lpv_face_direction(ahead, normal);
-      float solid_angle = f == 0 ? LPV_FAR_FACE_SOLID_ANGLE : LPV_SIDE_FACE_SOLID_ANGLE;
-      vec4 basis = sh_basis(w);
-      vec3 flux = solid_angle * scale * max(vec3(dot(sh_r, basis), dot(sh_g, basis), dot(sh_b, basis)), vec3(0.0));
-      if (occluded) {
-        float blocked = clamp(sh_evaluate(blocking, -w), 0.0, 1.0);
-        if (bounces) {
-          vec3 reflected = flux * blocked * albedo;
-          vec4 lobe = sh_cosine_lobe(reflect_normal) / LPV_PI;
-          gathered[0] += reflected.r * lobe;
-          gathered[1] += reflected.g * lobe;
-          gathered[2] += reflected.b * lobe;
-        }
-        flux *= 1.0 - blocked;
-      }
-      vec4 lobe = sh_cosine_lobe(normal) / LPV_PI;
-      gathered[0] += flux.r * lobe;
-      gathered[1] += flux.g * lobe;
-      gathered[2] += flux.b * lobe;
-    }
-  }
+  NEIGHBOUR(ivec3(1, 0, 0), 0, PX, vec3(1, 0, 0), PY, vec3(T5, S5, 0), NY, vec3(T5, -S5, 0), PZ, vec3(T5, 0, S5),
+            NZ, vec3(T5, 0, -S5))
+  NEIGHBOUR(ivec3(-1, 0, 0), 0, NX, vec3(-1, 0, 0), PY, vec3(-T5, S5, 0), NY, vec3(-T5, -S5, 0), PZ,
+            vec3(-T5, 0, S5), NZ, vec3(-T5, 0, -S5))
+  NEIGHBOUR(ivec3(0, 1, 0), 1, PY, vec3(0, 1, 0), PX, vec3(S5, T5, 0), NX, vec3(-S5, T5, 0), PZ, vec3(0, T5, S5),
+            NZ, vec3(0, T5, -S5))
+  NEIGHBOUR(ivec3(0, -1, 0), 1, NY, vec3(0, -1, 0), PX, vec3(S5, -T5, 0), NX, vec3(-S5, -T5, 0), PZ,
+            vec3(0, -T5, S5), NZ, vec3(0, -T5, -S5))
+  NEIGHBOUR(ivec3(0, 0, 1), 2, PZ, vec3(0, 0, 1), PX, vec3(S5, 0, T5), NX, vec3(-S5, 0, T5), PY, vec3(0, S5, T5),
+            NY, vec3(0, -S5, T5))
+  NEIGHBOUR(ivec3(0, 0, -1), 2, NZ, vec3(0, 0, -1), PX, vec3(S5, 0, -T5), NX, vec3(-S5, 0, -T5), PY,
+            vec3(0, S5, -T5), NY, vec3(0, -S5, -T5))
 
   vec3 flux = vec3(0.0);
   if (in_grid) {
-    uint index = lpv_cell_index(uvec3(cell), g.dims.xyz);
-    uint to = (target_base + index) * 4u;
-    uint acc = (push.cascade * cells + index) * 3u;
-    for (uint c = 0u; c < 3u; ++c) {
-      grids[to + c] = gathered[c];
-      accumulated[acc + c] += gathered[c];
+    // What this cell sends in the next iteration: its SH times the outgoing scale, so that its
+    // face fluxes, negative ones dropped, add up to its flux (see lpv_outgoing_scale).
+    for (int c = 0; c < 3; ++c) {
+      imageStore(grids, lpv_grid_texel(cell, c, target, depth), gathered[c] * lpv_outgoing_scale(gathered[c]));
       flux[c] = sh_flux(gathered[c]);
     }
-    grids[to + 3u] = vec4(lpv_outgoing_scale(gathered[0]), lpv_outgoing_scale(gathered[1]),
-                          lpv_outgoing_scale(gathered[2]), 0.0);
+    ivec3 texel = lpv_accumulated_texel(cell, push.cascade, depth);
+    imageStore(accumulated_r, texel, imageLoad(accumulated_r, texel) + gathered[0]);
+    imageStore(accumulated_g, texel, imageLoad(accumulated_g, texel) + gathered[1]);
+    imageStore(accumulated_b, texel, imageLoad(accumulated_b, texel) + gathered[2]);
   }
-  add_group_flux(flux, push.stats_offset, lpv.scales.x);
+  add_grid_flux(flux, push.stats_offset, lpv.scales.x);
 }

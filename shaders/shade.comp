@@ -20,7 +20,9 @@ layout(std430, set = 0, binding = 6) readonly buffer ShadowViews { mat4 shadow_v
 layout(std430, set = 0, binding = 7) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, set = 0, binding = 8) writeonly buffer Image { vec4 pixels[]; };
 layout(std140, set = 0, binding = 9) uniform Lpv { GpuLpv lpv; };
-layout(std430, set = 0, binding = 10) readonly buffer Accumulated { vec4 accumulated[]; };  // 3 per cell
+layout(set = 0, binding = 10) uniform sampler3D accumulated_r;  // trilinear, clamped to the edge
+layout(set = 0, binding = 11) uniform sampler3D accumulated_g;
+layout(set = 0, binding = 12) uniform sampler3D accumulated_b;
 
 const float PI = 3.14159265358979;
 
@@ -65,28 +67,19 @@ vec3 irradiance(GpuLight light, vec3 p, vec3 n) {
 }
 
 // Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units) onto a
-// surface with normal n: trilinear between cell centres, then E = <I, cosine lobe of -n> / s^2
-// (the cell's intensity per unit face area is the radiance that crosses it).
+// surface with normal n: trilinear between cell centres (the texture filter), then
+// E = <I, cosine lobe of -n> / s^2 (a cell's intensity per unit face area is the radiance
+// that crosses it). q is clamped to the centres of the border cells, so the filter never
+// mixes in the next cascade, stacked above this one in the same images.
 vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   GpuLpvCascade g = lpv.cascades[c];
-  vec3 hi = vec3(g.dims.xyz) - 1.0;
-  vec3 u = clamp(q - 0.5, vec3(0.0), hi);
-  uvec3 i0 = uvec3(floor(u));
-  uvec3 i1 = min(i0 + 1u, g.dims.xyz - 1u);
-  vec3 f = u - vec3(i0);
-  uint base = c * g.dims.w;
-  vec4 sh[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
-  for (uint k = 0u; k < 8u; ++k) {
-    uvec3 corner = uvec3((k & 1u) != 0u ? i1.x : i0.x, (k & 2u) != 0u ? i1.y : i0.y, (k & 4u) != 0u ? i1.z : i0.z);
-    vec3 t = mix(1.0 - f, f, vec3(uvec3(k & 1u, (k >> 1) & 1u, (k >> 2) & 1u)));
-    float w = t.x * t.y * t.z;
-    uint cell = (base + lpv_cell_index(corner, g.dims.xyz)) * 3u;
-    sh[0] += w * accumulated[cell];
-    sh[1] += w * accumulated[cell + 1u];
-    sh[2] += w * accumulated[cell + 2u];
-  }
+  vec3 dims = vec3(g.dims.xyz);
+  vec3 t = clamp(q, vec3(0.5), dims - 0.5);
+  t.z += float(c) * dims.z;
+  vec3 uvw = t / vec3(dims.xy, dims.z * float(lpv.info.x));
   vec4 lobe = sh_cosine_lobe(-n);
-  vec3 e = vec3(dot(sh[0], lobe), dot(sh[1], lobe), dot(sh[2], lobe));
+  vec3 e = vec3(dot(textureLod(accumulated_r, uvw, 0.0), lobe), dot(textureLod(accumulated_g, uvw, 0.0), lobe),
+                dot(textureLod(accumulated_b, uvw, 0.0), lobe));
   return max(e, vec3(0.0)) / (g.origin.w * g.origin.w);
 }
 
@@ -116,9 +109,9 @@ vec3 lpv_cell_view(vec3 p) {
     GpuLpvCascade g = lpv.cascades[c];
     vec3 q = lpv_grid_position(g, p);
     if (lpv_inside_distance(g, q) < 0.0) continue;
-    uvec3 cell = min(uvec3(q), g.dims.xyz - 1u);
-    uint i = (c * g.dims.w + lpv_cell_index(cell, g.dims.xyz)) * 3u;
-    vec3 dc = vec3(accumulated[i].x, accumulated[i + 1u].x, accumulated[i + 2u].x);
+    ivec3 cell = lpv_accumulated_texel(ivec3(min(uvec3(q), g.dims.xyz - 1u)), c, g.dims.z);
+    vec3 dc = vec3(texelFetch(accumulated_r, cell, 0).x, texelFetch(accumulated_g, cell, 0).x,
+                   texelFetch(accumulated_b, cell, 0).x);
     return max(dc, vec3(0.0)) * SH_C0 / (g.origin.w * g.origin.w);
   }
   return vec3(0.0);

@@ -10,16 +10,29 @@ namespace renderer {
 namespace {
 
 constexpr VkDeviceSize kInjectedBytesPerCell = 12 * 8;
-constexpr VkDeviceSize kGridBytesPerCell = 2 * 4 * 16;
+constexpr VkDeviceSize kGridBytesPerCell = 2 * 3 * 16;
 constexpr VkDeviceSize kAccumulatedBytesPerCell = 3 * 16;
-constexpr VkDeviceSize kCornerBytes = gpu::LPV_GV_SOURCES * gpu::LPV_GV_WORDS * 8;
+constexpr VkDeviceSize kCornerBytes = gpu::LPV_GV_SOURCES * gpu::LPV_GV_WORDS * 8 + 2 * 16;
 constexpr VkDeviceSize kFaceBytesPerCell = 6 * 16;
 
 std::uint64_t cell_count(glm::uvec3 d) { return std::uint64_t(d.x) * d.y * d.z; }
 
 vkx::Image rsm_target(const vkx::Device& device, VkFormat format, std::uint32_t res, std::uint32_t layers) {
-  return vkx::Image(device, {format, res, res, layers, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
+  return vkx::Image(device, {format, res, res, layers,
+                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                              VK_IMAGE_ASPECT_COLOR_BIT, true});
+}
+
+vkx::Image volume(const vkx::Device& device, std::uint32_t w, std::uint32_t h, std::uint32_t d, bool sampled) {
+  vkx::ImageDesc desc;
+  desc.format = LpvVolumes::kFormat;
+  desc.width = w;
+  desc.height = h;
+  desc.depth = d;
+  desc.volume = true;
+  desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+               (sampled ? VK_IMAGE_USAGE_SAMPLED_BIT : 0);
+  return vkx::Image(device, desc);
 }
 
 }  // namespace
@@ -40,17 +53,32 @@ std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades) {
 }
 
 LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c, std::uint32_t n)
-    : dims(d), cascades(c), iterations(n), stats_stride(3 * (n + 2)) {
+    : dims(d),
+      cascades(c),
+      iterations(n),
+      stats_stride(3 * (n + 2)),
+      grids(volume(device, 3 * d.x, d.y, 2 * d.z, false)),
+      accumulated{volume(device, d.x, d.y, c * d.z, true), volume(device, d.x, d.y, c * d.z, true),
+                  volume(device, d.x, d.y, c * d.z, true)},
+      corners(volume(device, 2 * (d.x + 1), d.y + 1, d.z + 1, false)),
+      faces(volume(device, 6 * d.x, d.y, d.z, false)) {
   const VkDeviceSize cells = cell_count(d);
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   injected = vkx::Buffer(device, cells * kInjectedBytesPerCell, storage, vkx::MemoryUse::gpu_only);
-  grids = vkx::Buffer(device, cells * kGridBytesPerCell, storage, vkx::MemoryUse::gpu_only);
-  accumulated = vkx::Buffer(device, cells * kAccumulatedBytesPerCell * c, storage, vkx::MemoryUse::gpu_only);
-  corners = vkx::Buffer(device, cell_count(d + 1u) * kCornerBytes, storage, vkx::MemoryUse::gpu_only);
-  faces = vkx::Buffer(device, cells * kFaceBytesPerCell, storage, vkx::MemoryUse::gpu_only);
+  corner_sums = vkx::Buffer(device, cell_count(d + 1u) * kCornerBytes, storage, vkx::MemoryUse::gpu_only);
   flux_stats = vkx::Buffer(device, VkDeviceSize(stats_stride) * c * 8, storage, vkx::MemoryUse::readback);
-  // The injection resolve clears its accumulators after reading them; they start cleared.
-  device.run_once([&](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, injected.handle(), 0, VK_WHOLE_SIZE, 0); });
+  device.run_once([&](VkCommandBuffer cmd) {
+    // The injection resolve clears its accumulators after reading them; they start cleared.
+    vkCmdFillBuffer(cmd, injected.handle(), 0, VK_WHOLE_SIZE, 0);
+    // The faces are read (with zero effect) before a geometry volume was ever built.
+    for (const vkx::Image* image : {&grids, &accumulated[0], &accumulated[1], &accumulated[2], &corners, &faces})
+      vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                      0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    const VkClearColorValue zero{};
+    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    for (const vkx::Image* image : {&accumulated[0], &accumulated[1], &accumulated[2], &faces})
+      vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
+  });
 }
 
 glm::dvec3 LpvVolumes::flux_at(std::uint32_t offset, double watts_per_unit) const {

@@ -29,8 +29,13 @@ struct RsmMaps {
 };
 
 // The grids of all cascades. Cascades are processed one after another, so only the
-// accumulated light (read by the shading) is kept per cascade; the rest is reused.
+// accumulated light (read by the shading) is kept per cascade; the rest is reused. The float
+// grids are 3D images, not buffers: lavapipe gathers image texels with vector loads but reads
+// a buffer at scattered offsets one lane at a time, which made propagation 20 times slower.
+// All images stay in GENERAL layout.
 struct LpvVolumes {
+  static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+
   LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades, std::uint32_t iterations);
 
   // Device memory the volumes of these sizes take.
@@ -49,12 +54,20 @@ struct LpvVolumes {
   std::uint32_t cascades;
   std::uint32_t iterations;
   std::uint32_t stats_stride;
-  vkx::Buffer injected;     // int64[12] per cell: fixed-point SH of the injected VPLs
-  vkx::Buffer grids;        // vec4[4] per cell, twice: propagation's ping-pong (RGB SH, outgoing scale)
-  vkx::Buffer accumulated;  // vec4[3] per cell and cascade: the light the shading reads
-  vkx::Buffer corners;      // int64[LPV_GV_WORDS] per corner and source: geometry volume sums
-  vkx::Buffer faces;        // vec4[6] per cell: blocking SH on the +X, +Y, +Z faces, then their albedo
-  vkx::Buffer flux_stats;   // int64 fixed-point fluxes, host-visible
+  vkx::Buffer injected;  // int64[12] per cell: fixed-point SH of the injected VPLs
+  vkx::Buffer corner_sums;  // int64[LPV_GV_WORDS] per corner and source: geometry volume sums
+  vkx::Buffer flux_stats;  // int64 fixed-point fluxes, host-visible
+  // Propagation's ping-pong: texel (3x + k, y, z + which * dims.z), the SH of channel k = R,
+  // G, B that the cell sends, already times its outgoing scale (see lpv_outgoing_scale).
+  vkx::Image grids;
+  // The light the shading reads, one image per colour channel so it can be filtered:
+  // texel (x, y, z + cascade * dims.z).
+  vkx::Image accumulated[3];
+  // Geometry volume per cell corner, the stronger source: texel (2x + k, y, z), k = 0 blocking
+  // SH, k = 1 albedo-weighted sum (rgb) and weight (a).
+  vkx::Image corners;
+  // Geometry volume per cell: texel (6x + k, y, z), k = 0..2 blocking SH on the +X, +Y, +Z
+  // faces, k = 3..5 the blockers' albedo there.
+  vkx::Image faces;
 };
-
 }  // namespace renderer

@@ -1,6 +1,7 @@
 #include "renderer/passes/geometry_volume_pass.hpp"
 
 #include "renderer/gpu_types.hpp"
+#include "shaders/lpv_geometry_corners.comp.h"
 #include "shaders/lpv_geometry_inject.comp.h"
 #include "shaders/lpv_geometry_resolve.comp.h"
 
@@ -31,10 +32,18 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
   inject.push_constant_stages = cs;
   inject_ = vkx::Pipeline(device, inject, spirv_lpv_geometry_inject_comp);
 
+  vkx::PipelineLayoutDesc corners;
+  corners.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
+                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
+                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs)};
+  corners.push_constant_bytes = sizeof(std::uint32_t);
+  corners.push_constant_stages = cs;
+  corners_ = vkx::Pipeline(device, corners, spirv_lpv_geometry_corners_comp);
+
   vkx::PipelineLayoutDesc resolve;
   resolve.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs)};
   resolve.push_constant_bytes = sizeof(std::uint32_t);
   resolve.push_constant_stages = cs;
   resolve_ = vkx::Pipeline(device, resolve, spirv_lpv_geometry_resolve_comp);
@@ -53,15 +62,20 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .image(4, image, camera.position.view(), general)
       .image(5, image, camera.normal.view(), general)
       .image(6, image, camera.albedo.view(), general)
-      .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corners.handle())
+      .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.handle())
+      .apply(device_.handle());
+  vkx::DescriptorWriter(corners_.descriptor_set())
+      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.handle())
+      .image(2, image, volumes.corners.view(), general)
       .apply(device_.handle());
   vkx::DescriptorWriter(resolve_.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corners.handle())
-      .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.handle())
+      .image(1, image, volumes.corners.view(), general)
+      .image(2, image, volumes.faces.view(), general)
       .apply(device_.handle());
 
-  vkCmdFillBuffer(cmd, volumes.corners.handle(), 0, VK_WHOLE_SIZE, 0);
+  vkCmdFillBuffer(cmd, volumes.corner_sums.handle(), 0, VK_WHOLE_SIZE, 0);
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   inject_.bind(cmd);
@@ -77,9 +91,13 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
                   groups(groups(camera.height, s), gpu::LPV_VPL_GROUP), 1);
   }
   compute_to_compute(cmd);
+  const glm::uvec3 d = volumes.dims;
+  corners_.bind(cmd);
+  corners_.push(cmd, cascade);
+  vkCmdDispatch(cmd, groups(d.x + 1, gpu::LPV_GROUP), groups(d.y + 1, gpu::LPV_GROUP), groups(d.z + 1, gpu::LPV_GROUP));
+  compute_to_compute(cmd);
   resolve_.bind(cmd);
   resolve_.push(cmd, cascade);
-  const glm::uvec3 d = volumes.dims;
   vkCmdDispatch(cmd, groups(d.x, gpu::LPV_GROUP), groups(d.y, gpu::LPV_GROUP), groups(d.z, gpu::LPV_GROUP));
   compute_to_compute(cmd);
 }

@@ -1,6 +1,7 @@
 // LPV geometry volume for one cascade: surfels from the RSMs and from the camera's G-buffer
-// add one-sided blocking potentials to the cell corners (lpv_geometry_inject.comp), which
-// become the blocking of every cell face (lpv_geometry_resolve.comp).
+// add one-sided blocking potentials to the cell corners (lpv_geometry_inject.comp); each corner
+// keeps its stronger source (lpv_geometry_corners.comp); the corners become the blocking of
+// every cell face (lpv_geometry_resolve.comp).
 #pragma once
 
 #include "renderer/frame_targets.hpp"
@@ -25,6 +26,7 @@ class GeometryVolumePass {
  private:
   const vkx::Device& device_;
   vkx::Pipeline inject_;
+  vkx::Pipeline corners_;
   vkx::Pipeline resolve_;
 };
 

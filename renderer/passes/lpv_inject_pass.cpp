@@ -32,9 +32,11 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
   vkx::PipelineLayoutDesc resolve;
   resolve.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
                       vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                      vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                      vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                      vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                      vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                      vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                      vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
   resolve.push_constant_bytes = sizeof(CascadeConstants);
   resolve.push_constant_stages = cs;
   resolve_ = vkx::Pipeline(device, resolve, spirv_lpv_inject_resolve_comp);
@@ -55,9 +57,11 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
   vkx::DescriptorWriter(resolve_.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .buffer(1, storage, volumes.injected.handle())
-      .buffer(2, storage, volumes.grids.handle())
-      .buffer(3, storage, volumes.accumulated.handle())
-      .buffer(4, storage, volumes.flux_stats.handle())
+      .image(2, image, volumes.grids.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(3, image, volumes.accumulated[0].view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(4, image, volumes.accumulated[1].view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(5, image, volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL)
+      .buffer(6, storage, volumes.flux_stats.handle())
       .apply(device_.handle());
 
   if (cascade == 0) {

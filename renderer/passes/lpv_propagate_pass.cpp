@@ -20,10 +20,12 @@ LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) 
   const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
   vkx::PipelineLayoutDesc layout;
   layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
+                     vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
   layout.push_constant_bytes = sizeof(IterationConstants);
   layout.push_constant_stages = cs;
   pipeline_ = vkx::Pipeline(device, layout, spirv_lpv_propagate_comp);
@@ -31,13 +33,16 @@ LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) 
 
 void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t iterations,
                               const vkx::Buffer& params, const LpvVolumes& volumes) const {
-  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
   vkx::DescriptorWriter(pipeline_.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .buffer(1, storage, volumes.grids.handle())
-      .buffer(2, storage, volumes.accumulated.handle())
-      .buffer(3, storage, volumes.faces.handle())
-      .buffer(4, storage, volumes.flux_stats.handle())
+      .image(1, image, volumes.grids.view(), general)
+      .image(2, image, volumes.accumulated[0].view(), general)
+      .image(3, image, volumes.accumulated[1].view(), general)
+      .image(4, image, volumes.accumulated[2].view(), general)
+      .image(5, image, volumes.faces.view(), general)
+      .buffer(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.flux_stats.handle())
       .apply(device_.handle());
   pipeline_.bind(cmd);
   const glm::uvec3 d = volumes.dims;

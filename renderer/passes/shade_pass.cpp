@@ -5,24 +5,6 @@
 #include "shaders/shade.comp.h"
 
 namespace renderer {
-namespace {
-
-// A depth-comparing sampler: hardware PCF with a linear filter.
-VkSampler make_sampler(VkDevice device, VkFilter filter) {
-  VkSamplerCreateInfo ci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  ci.magFilter = filter;
-  ci.minFilter = filter;
-  ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  ci.addressModeU = ci.addressModeV = ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  ci.compareEnable = VK_TRUE;
-  ci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // lit where the receiver is not behind the stored depth
-  ci.maxLod = 0.0f;
-  VkSampler sampler = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateSampler(device, &ci, nullptr, &sampler));
-  return sampler;
-}
-
-}  // namespace
 
 ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -37,13 +19,12 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
                      vkx::binding(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
                      vkx::binding(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
                      vkx::binding(9, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                     vkx::binding(10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
+                     vkx::binding(10, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs),
+                     vkx::binding(11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs),
+                     vkx::binding(12, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs)};
   pipeline_ = vkx::Pipeline(device, layout, spirv_shade_comp);
-  shadow_sampler_ = make_sampler(device.handle(), VK_FILTER_LINEAR);
-}
-
-ShadePass::~ShadePass() {
-  vkDestroySampler(device_.handle(), shadow_sampler_, nullptr);
+  shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
+  grid_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR);
 }
 
 void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets,
@@ -56,13 +37,15 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
       .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.position.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.albedo.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(4, sampled, in.atlas.depth.view(), read, shadow_sampler_)
+      .image(4, sampled, in.atlas.depth.view(), read, shadow_sampler_.handle())
       .buffer(5, storage, in.lights.handle())
       .buffer(6, storage, in.shadow_views.handle())
       .buffer(7, storage, scene.materials.handle())
       .buffer(8, storage, targets.linear.handle())
       .buffer(9, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.lpv.handle())
-      .buffer(10, storage, in.accumulated.handle())
+      .image(10, sampled, in.volumes.accumulated[0].view(), VK_IMAGE_LAYOUT_GENERAL, grid_sampler_.handle())
+      .image(11, sampled, in.volumes.accumulated[1].view(), VK_IMAGE_LAYOUT_GENERAL, grid_sampler_.handle())
+      .image(12, sampled, in.volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL, grid_sampler_.handle())
       .apply(device_.handle());
 
   pipeline_.bind(cmd);

@@ -265,13 +265,21 @@ void Device::create_device() {
   VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
   vkGetPhysicalDeviceFeatures2(physical_, &supported);
-  if (!supported.features.shaderInt64 || !supported12.shaderBufferInt64Atomics)
-    throw std::runtime_error("device '" + info_.name + "' lacks shaderInt64 or shaderBufferInt64Atomics, which the "
-                             "LPV passes need for deterministic accumulation");
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
+  vkGetPhysicalDeviceProperties2(physical_, &properties);
+  const bool subgroup_sums = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) &&
+                             (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
+  if (!supported.features.shaderInt64 || !supported12.shaderBufferInt64Atomics ||
+      !supported12.shaderSubgroupExtendedTypes || !subgroup_sums)
+    throw std::runtime_error("device '" + info_.name + "' lacks 64-bit integer atomics or subgroup sums of them "
+                             "(shaderInt64, shaderBufferInt64Atomics, shaderSubgroupExtendedTypes, subgroup "
+                             "arithmetic in compute), which the LPV passes need for deterministic accumulation");
   VkPhysicalDeviceFeatures features10{};
   features10.shaderInt64 = VK_TRUE;
   VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   features12.shaderBufferInt64Atomics = VK_TRUE;
+  features12.shaderSubgroupExtendedTypes = VK_TRUE;
   features12.pNext = core13 ? static_cast<void*>(&features13) : static_cast<void*>(&dynamic_rendering);
   std::vector<const char*> extensions;
   if (!core13) extensions.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);

@@ -97,9 +97,9 @@ void Buffer::invalidate() const {
 
 Image::Image(const Device& device, const ImageDesc& desc) : device_(device.handle()), desc_(desc) {
   VkImageCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
-  ci.imageType = VK_IMAGE_TYPE_2D;
+  ci.imageType = desc.volume ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   ci.format = desc.format;
-  ci.extent = {desc.width, desc.height, 1};
+  ci.extent = {desc.width, desc.height, desc.volume ? desc.depth : 1};
   ci.mipLevels = 1;
   ci.arrayLayers = desc.layers;
   ci.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -123,7 +123,10 @@ Image::Image(const Device& device, const ImageDesc& desc) : device_(device.handl
       VK_CHECK(vkCreateImageView(device_, &vci, nullptr, &view));
       return view;
     };
-    view_ = make_view(desc.layers > 1 || desc.array ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D, 0, desc.layers);
+    if (desc.volume)
+      view_ = make_view(VK_IMAGE_VIEW_TYPE_3D, 0, 1);
+    else
+      view_ = make_view(desc.layers > 1 || desc.array ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D, 0, desc.layers);
     if (desc.layers > 1 || desc.array)
       for (std::uint32_t l = 0; l < desc.layers; ++l) layer_views_.push_back(make_view(VK_IMAGE_VIEW_TYPE_2D, l, 1));
     else
@@ -173,6 +176,32 @@ Buffer upload_buffer(const Device& device, std::span<const std::byte> bytes, VkB
     vkCmdCopyBuffer(cmd, staging.handle(), target.handle(), 1, &region);
   });
   return target;
+}
+
+Sampler::Sampler(const Device& device, VkFilter filter, bool compare) : device_(device.handle()) {
+  VkSamplerCreateInfo ci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  ci.magFilter = filter;
+  ci.minFilter = filter;
+  ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  ci.addressModeU = ci.addressModeV = ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  ci.compareEnable = compare ? VK_TRUE : VK_FALSE;
+  ci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // shadows: lit where the receiver is not behind the stored depth
+  ci.maxLod = 0.0f;
+  VK_CHECK(vkCreateSampler(device_, &ci, nullptr, &sampler_));
+}
+
+Sampler::~Sampler() {
+  if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+}
+
+Sampler& Sampler::operator=(Sampler&& other) noexcept {
+  if (this != &other) {
+    if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+    device_ = other.device_;
+    sampler_ = other.sampler_;
+    other.sampler_ = VK_NULL_HANDLE;
+  }
+  return *this;
 }
 
 void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,

@@ -54,6 +54,8 @@ struct ImageDesc {
   VkImageUsageFlags usage = 0;
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
   bool array = false;  // view() is a 2D array view even with one layer (for sampler2DArray)
+  std::uint32_t depth = 1;  // with volume: a 3D image of this depth (layers stays 1)
+  bool volume = false;
 };
 
 class Image {
@@ -78,6 +80,23 @@ class Image {
   VkImageView view_ = VK_NULL_HANDLE;
   std::vector<VkImageView> layer_views_;
   ImageDesc desc_;
+};
+
+// A sampler clamped to the edge, filtering nearest or linear; depth-comparing (for hardware
+// PCF) with `compare`.
+class Sampler {
+ public:
+  Sampler() = default;
+  Sampler(const Device& device, VkFilter filter, bool compare = false);
+  ~Sampler();
+  Sampler(Sampler&& other) noexcept { *this = std::move(other); }
+  Sampler& operator=(Sampler&& other) noexcept;
+
+  VkSampler handle() const { return sampler_; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkSampler sampler_ = VK_NULL_HANDLE;
 };
 
 // A device-local buffer filled with `bytes` through a staging copy.

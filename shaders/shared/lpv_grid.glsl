@@ -1,6 +1,6 @@
-// Addressing of the LPV grids and sampling of the accumulated light, for the LPV passes and
-// the shading. Grids are arrays of cells in x-fastest order; a cell of an SH grid is one vec4
-// per colour channel (see lpv_sh.h for the basis).
+// Addressing of the LPV grids, for the LPV passes and the shading. An SH grid cell is one vec4
+// per colour channel (see lpv_sh.h for the basis); buffers hold cells in x-fastest order,
+// images as described in renderer/lpv/lpv_volumes.hpp.
 #ifndef LPV_GRID_GLSL
 #define LPV_GRID_GLSL
 
@@ -17,6 +17,17 @@ vec3 lpv_grid_position(GpuLpvCascade g, vec3 p) { return (p - g.origin.xyz) / g.
 float lpv_inside_distance(GpuLpvCascade g, vec3 q) {
   vec3 to_max = vec3(g.dims.xyz) - q;
   return min(min(min(q.x, q.y), q.z), min(min(to_max.x, to_max.y), to_max.z));
+}
+
+// Texel of the propagation grids (LpvVolumes::grids): channel k of a cell in grid `which`
+// (0 or 1).
+ivec3 lpv_grid_texel(ivec3 cell, int k, uint which, uint depth) {
+  return ivec3(3 * cell.x + k, cell.y, cell.z + int(which * depth));
+}
+
+// Texel of a cascade's cell in the accumulated images (LpvVolumes::accumulated).
+ivec3 lpv_accumulated_texel(ivec3 cell, uint cascade, uint depth) {
+  return ivec3(cell.xy, cell.z + int(cascade * depth));
 }
 
 // Width of the band at a cascade's border over which it hands over to the next coarser one.

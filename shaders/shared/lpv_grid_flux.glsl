@@ -1,23 +1,19 @@
-// The flux a grid holds, for the statistics: each work group sums its cells in a fixed order
-// in shared memory and adds the sum to a fixed-point total, so the total is deterministic.
-// Requires a GpuLpv-sized LPV_GROUP^3 work group and a `flux_stats` int64 buffer.
+// A sum of fluxes (of a grid, or of the VPLs), for the statistics: each cell's flux in 64-bit fixed point, summed
+// across the subgroup and added to the total with one atomic per subgroup. Integer sums are
+// exact, so the total does not depend on the order of anything: it is deterministic.
+// Requires a `flux_stats` int64 buffer declared before the include.
 #ifndef LPV_GRID_FLUX_GLSL
 #define LPV_GRID_FLUX_GLSL
 
-shared vec3 group_flux[LPV_GROUP * LPV_GROUP * LPV_GROUP];
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_EXT_shader_subgroup_extended_types_int64 : require
 
-// Every invocation of the group must call this (it has barriers).
-void add_group_flux(vec3 flux, uint stats_offset, float units_per_watt) {
-  uint local = gl_LocalInvocationIndex;
-  group_flux[local] = flux;
-  barrier();
-  for (uint stride = LPV_GROUP * LPV_GROUP * LPV_GROUP / 2u; stride > 0u; stride /= 2u) {
-    if (local < stride) group_flux[local] += group_flux[local + stride];
-    barrier();
-  }
-  if (local == 0u) {
-    for (uint c = 0u; c < 3u; ++c)
-      if (group_flux[0][c] != 0.0) atomicAdd(flux_stats[stats_offset + c], to_fixed(group_flux[0][c], units_per_watt));
+// Every invocation of the subgroup must call this (zero flux for invocations without a cell).
+void add_grid_flux(vec3 flux, uint stats_offset, float units_per_watt) {
+  for (uint c = 0u; c < 3u; ++c) {
+    int64_t sum = subgroupAdd(to_fixed(flux[c], units_per_watt));
+    if (subgroupElect() && sum != 0l) atomicAdd(flux_stats[stats_offset + c], sum);
   }
 }
 

@@ -64,11 +64,14 @@ LPV_FUNC vec4 sh_diffuse_emitter(vec3 n, float phi) { return sh_cosine_lobe(n) *
 // centre is 1 cell ahead and half a cell to the side.
 LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead + 0.5f * side); }
 
-// The six propagation axes, in the order +X, -X, +Y, -Y, +Z, -Z.
-LPV_FUNC vec3 lpv_axis(int i) {
-  vec3 a = vec3(0.0f);
-  a[i / 2] = (i % 2 == 0) ? 1.0f : -1.0f;
-  return a;
+LPV_FUNC float lpv_positive(float x) { return x > 0.0f ? x : 0.0f; }
+
+// Sum of the positive parts of A + (2 p + q) / sqrt(5) over the four sign pairs of p = +-bi,
+// q = +-bj: the side faces of the two neighbours along axis i whose normals lie along axis j.
+LPV_FUNC float lpv_positive_side_faces(float mean, float bi, float bj) {
+  const float k = 0.4472135955f;  // 1 / sqrt(5)
+  return lpv_positive(mean + k * (2.0f * bi + bj)) + lpv_positive(mean + k * (2.0f * bi - bj)) +
+         lpv_positive(mean + k * (-2.0f * bi + bj)) + lpv_positive(mean + k * (-2.0f * bi - bj));
 }
 
 // Propagation sends a cell's light to its 6 neighbours through 5 faces each: 30 faces with
@@ -78,26 +81,24 @@ LPV_FUNC vec3 lpv_axis(int i) {
 // sends only its positive face fluxes, all scaled by this factor, which makes them sum to the
 // cell's flux again: energy is conserved exactly and nothing negative travels. 1 when no
 // face is negative (|linear part| <= constant part), 0 for a cell with no positive flux.
+// Written out per face (I(w) = A + B.w with A = c0 s0, B = c1 (-s3, -s1, s2)) rather than as
+// loops over directions: lavapipe runs dynamically indexed vectors one lane at a time.
 LPV_FUNC float lpv_outgoing_scale(vec4 sh) {
   float mean = SH_C0 * sh.x;
-  float linear2 = SH_C1 * SH_C1 * (sh.y * sh.y + sh.z * sh.z + sh.w * sh.w);
+  float bx = -SH_C1 * sh.w;
+  float by = -SH_C1 * sh.y;
+  float bz = SH_C1 * sh.z;
   if (mean <= 0.0f) return 0.0f;
-  if (linear2 <= mean * mean) return 1.0f;
-  float total = 0.0f;
-  float positive = 0.0f;
-  for (int i = 0; i < 6; ++i) {
-    vec3 ahead = lpv_axis(i);
-    float far_flux = LPV_FAR_FACE_SOLID_ANGLE * sh_evaluate(sh, ahead);
-    total += far_flux;
-    positive += far_flux > 0.0f ? far_flux : 0.0f;
-    for (int j = 0; j < 6; ++j) {
-      if (j / 2 == i / 2) continue;
-      float side_flux = LPV_SIDE_FACE_SOLID_ANGLE * sh_evaluate(sh, lpv_face_direction(ahead, lpv_axis(j)));
-      total += side_flux;
-      positive += side_flux > 0.0f ? side_flux : 0.0f;
-    }
-  }
-  return positive > 0.0f && total > 0.0f ? total / positive : 0.0f;
+  if (bx * bx + by * by + bz * bz <= mean * mean) return 1.0f;
+  float far_faces = lpv_positive(mean + bx) + lpv_positive(mean - bx) + lpv_positive(mean + by) +
+                    lpv_positive(mean - by) + lpv_positive(mean + bz) + lpv_positive(mean - bz);
+  float side_faces = lpv_positive_side_faces(mean, bx, by) + lpv_positive_side_faces(mean, bx, bz) +
+                     lpv_positive_side_faces(mean, by, bx) + lpv_positive_side_faces(mean, by, bz) +
+                     lpv_positive_side_faces(mean, bz, bx) + lpv_positive_side_faces(mean, bz, by);
+  float positive = LPV_FAR_FACE_SOLID_ANGLE * far_faces + LPV_SIDE_FACE_SOLID_ANGLE * side_faces;
+  // The sum of all 30 face fluxes: the linear parts cancel between opposite faces.
+  float total = mean * (6.0f * LPV_FAR_FACE_SOLID_ANGLE + 24.0f * LPV_SIDE_FACE_SOLID_ANGLE);
+  return positive > total ? total / positive : 1.0f;
 }
 
 #ifdef __cplusplus

@@ -24,7 +24,7 @@ class GpuTest : public ::testing::Test {
   }
 };
 
-// A request for a linear radiance image of `width` x `height`.
+// A request for a linear radiance image of `width` x `height`, of the `direct` view.
 api::RenderRequest linear_request(std::uint32_t width, std::uint32_t height, const api::Camera& camera);
 
 // Linear RGB of one pixel.

@@ -31,6 +31,7 @@ api::RenderRequest linear_request(std::uint32_t width, std::uint32_t height, con
   request.output.width = width;
   request.output.height = height;
   request.output.format = api::ImageFormat::exr;
+  request.output.view = api::View::direct;  // the closed forms are of direct light
   return request;
 }
 

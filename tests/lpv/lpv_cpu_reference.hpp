@@ -1,0 +1,42 @@
+// A CPU reference of LPV injection and propagation: the maths of lpv_inject.comp and
+// lpv_propagate.comp written plainly (loops over faces, doubles for the sums), on the same
+// shared formulas (shaders/shared/lpv_sh.h). Tests compare the GPU grids with it and check
+// conservation laws on it for grids too small or iteration counts too large for a frame.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace lpv_ref {
+
+struct Grid {
+  glm::ivec3 dims{0};
+  std::vector<glm::vec4> sh;  // 3 per cell (R, G, B), x-fastest
+
+  explicit Grid(glm::ivec3 d) : dims(d), sh(std::size_t(d.x) * d.y * d.z * 3, glm::vec4(0.0f)) {}
+  std::size_t index(glm::ivec3 c) const { return std::size_t(c.x + dims.x * (c.y + dims.y * c.z)); }
+  bool contains(glm::ivec3 c) const { return glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) && glm::all(glm::lessThan(c, dims)); }
+  glm::vec4& at(glm::ivec3 c, int channel) { return sh[index(c) * 3 + std::size_t(channel)]; }
+  const glm::vec4& at(glm::ivec3 c, int channel) const { return sh[index(c) * 3 + std::size_t(channel)]; }
+  double flux(int channel) const;  // integral of the intensity over the sphere, summed over cells (W)
+};
+
+struct Vpl {
+  glm::vec3 position;
+  glm::vec3 normal;  // unit
+  glm::vec3 flux;    // W
+};
+
+// Each VPL, moved offset_cells along its normal, adds Phi/pi * cosine lobe into its cell.
+Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims, float offset_cells);
+
+// Blocking potential SH on the +X, +Y, +Z faces of every cell (3 per cell), or empty.
+using FaceBlocking = std::vector<glm::vec4>;
+
+// One propagation iteration from `grid` (what each cell holds), with the face blocking
+// applied if given.
+Grid propagate(const Grid& grid, const FaceBlocking& blocking = {});
+
+}  // namespace lpv_ref

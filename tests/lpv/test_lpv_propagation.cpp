@@ -1,0 +1,140 @@
+// Conservation laws of LPV propagation, on the CPU reference (lpv_cpu_reference.hpp), which
+// shares its formulas with the GPU passes and is checked against them in test_lpv_gpu.cpp:
+// flux is conserved per iteration away from the border, never grows with occlusion, nothing
+// negative travels, and a thousand iterations stay finite and bounded.
+#include "lpv_cpu_reference.hpp"
+
+#include "shaders/shared/lpv_sh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace {
+
+using lpv_ref::Grid;
+
+double total_flux(const Grid& g) { return g.flux(0) + g.flux(1) + g.flux(2); }
+
+bool all_finite(const Grid& g) {
+  for (const glm::vec4& v : g.sh)
+    for (int k = 0; k < 4; ++k)
+      if (!std::isfinite(v[k])) return false;
+  return true;
+}
+
+// The flux a cell sends through all 30 faces, negative face fluxes dropped, after the scale.
+double sent_flux(glm::vec4 sh) {
+  const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const glm::vec4 sent = sh * gpu::lpv_outgoing_scale(sh);
+  double total = 0.0;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      if (j != i && j / 2 == i / 2) continue;
+      const bool far = i == j;
+      const glm::vec3 w = far ? axes[i] : gpu::lpv_face_direction(axes[i], axes[j]);
+      const double omega = far ? gpu::LPV_FAR_FACE_SOLID_ANGLE : gpu::LPV_SIDE_FACE_SOLID_ANGLE;
+      total += omega * std::max(gpu::sh_evaluate(sent, w), 0.0f);
+    }
+  return total;
+}
+
+TEST(OutgoingScale, NaiveClampingOfNegativeLobesGainsEnergyAndTheScaleRemovesTheGain) {
+  // A single VPL's cosine lobe has negative directions in 2-band SH.
+  const glm::vec4 lobe = gpu::sh_diffuse_emitter(glm::normalize(glm::vec3(0.3f, 1.0f, -0.2f)), 1.0f);
+  EXPECT_LT(gpu::lpv_outgoing_scale(lobe), 0.99f);
+  const double clamped_unscaled = sent_flux(lobe) / gpu::lpv_outgoing_scale(lobe);
+  EXPECT_GT(clamped_unscaled, 1.05) << "clamping the negative face fluxes alone adds energy";
+  EXPECT_NEAR(sent_flux(lobe), 1.0, 1e-5) << "the scaled positive face fluxes carry exactly the flux";
+}
+
+TEST(OutgoingScale, EveryCellSendsExactlyItsFluxWhateverItsShape) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  for (int n = 0; n < 2000; ++n) {
+    const glm::vec4 sh(std::abs(u(rng)) + 0.01f, 2.0f * u(rng), 2.0f * u(rng), 2.0f * u(rng));
+    EXPECT_NEAR(sent_flux(sh), gpu::sh_flux(sh), 1e-5 * gpu::sh_flux(sh));
+    const float scale = gpu::lpv_outgoing_scale(sh);
+    EXPECT_GT(scale, 0.0f);
+    EXPECT_LE(scale, 1.0f);
+  }
+  EXPECT_EQ(gpu::lpv_outgoing_scale(glm::vec4(0.0f, 1.0f, 0.0f, 0.0f)), 0.0f) << "no flux: nothing is sent";
+  EXPECT_EQ(gpu::lpv_outgoing_scale(glm::vec4(1.0f, 0.1f, 0.0f, 0.0f)), 1.0f) << "no negative face: unchanged";
+}
+
+Grid isotropic_source(glm::ivec3 dims, glm::ivec3 cell, float flux) {
+  Grid g(dims);
+  for (int c = 0; c < 3; ++c) g.at(cell, c) = glm::vec4(flux / (2.0f * std::sqrt(3.14159265f)), 0, 0, 0);
+  return g;
+}
+
+TEST(CpuPropagation, IsotropicSourceAwayFromTheBorderConservesFluxEveryIteration) {
+  Grid g = isotropic_source({21, 21, 21}, {10, 10, 10}, 5.0f);
+  const double injected = total_flux(g);
+  for (int k = 1; k <= 9; ++k) {  // the front stays inside the grid for 10 iterations
+    g = lpv_ref::propagate(g);
+    EXPECT_NEAR(total_flux(g), injected, 1e-3 * injected) << "iteration " << k;
+  }
+}
+
+TEST(CpuPropagation, DirectionalSourcesConserveFluxToo) {
+  Grid g({15, 15, 15});
+  g.at({7, 7, 7}, 0) = gpu::sh_diffuse_emitter(glm::normalize(glm::vec3(1, 2, 0.5f)), 2.0f);
+  g.at({7, 6, 7}, 1) = gpu::sh_diffuse_emitter(glm::vec3(0, 0, -1), 1.0f);
+  const double injected = total_flux(g);
+  for (int k = 1; k <= 6; ++k) {
+    g = lpv_ref::propagate(g);
+    EXPECT_NEAR(total_flux(g), injected, 1e-3 * injected) << "iteration " << k;
+  }
+}
+
+TEST(CpuPropagation, OcclusionNeverIncreasesTheFlux) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const glm::ivec3 dims(9, 9, 9);
+  lpv_ref::FaceBlocking blocking(std::size_t(dims.x) * dims.y * dims.z * 3);
+  for (glm::vec4& b : blocking) {
+    const glm::vec3 n = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
+    b = gpu::sh_cosine_lobe(n) * (2.0f * u(rng));  // up to twice a full face
+  }
+  Grid g(dims);
+  for (int n = 0; n < 40; ++n) {
+    const glm::ivec3 cell(int(u(rng) * 9) % 9, int(u(rng) * 9) % 9, int(u(rng) * 9) % 9);
+    const glm::vec3 normal = glm::normalize(glm::vec3(u(rng) - 0.5f, u(rng) - 0.5f, u(rng) - 0.5f));
+    g.at(cell, n % 3) += gpu::sh_diffuse_emitter(normal, u(rng));
+  }
+  double previous = total_flux(g);
+  for (int k = 1; k <= 30; ++k) {
+    g = lpv_ref::propagate(g, blocking);
+    const double now = total_flux(g);
+    EXPECT_LE(now, previous * (1.0 + 1e-6)) << "iteration " << k;
+    previous = now;
+  }
+}
+
+TEST(CpuPropagation, AThousandIterationsStayFiniteAndBounded) {
+  // A closed box: every face blocks fully, so light stays and bounces around, the hardest
+  // case for growth. And an open grid, where the light leaves through the border.
+  const glm::ivec3 dims(6, 6, 6);
+  lpv_ref::FaceBlocking walls(std::size_t(dims.x) * dims.y * dims.z * 3, glm::vec4(0.0f));
+  for (int z = 0; z < 6; ++z)
+    for (int y = 0; y < 6; ++y)
+      walls[((z * 6 + y) * 6 + 2) * 3 + 0] = gpu::sh_cosine_lobe(glm::vec3(-1, 0, 0)) * 1.5f;  // a wall at x = 3
+  for (const bool occluded : {false, true}) {
+    Grid g = isotropic_source(dims, {1, 2, 3}, 1.0f);
+    const double injected = total_flux(g);
+    Grid accumulated = g;
+    for (int k = 1; k <= 1000; ++k) {
+      g = lpv_ref::propagate(g, occluded ? walls : lpv_ref::FaceBlocking{});
+      for (std::size_t i = 0; i < g.sh.size(); ++i) accumulated.sh[i] += g.sh[i];
+      ASSERT_LE(total_flux(g), injected * (1.0 + 1e-5)) << "iteration " << k;
+    }
+    EXPECT_TRUE(all_finite(g));
+    EXPECT_TRUE(all_finite(accumulated));
+    EXPECT_LT(total_flux(g), 1e-6 * injected) << "the light has left the open grid";
+    EXPECT_LT(total_flux(accumulated), 20.0 * injected) << "the accumulated light converges";
+  }
+}
+
+}  // namespace

@@ -1,0 +1,205 @@
+// The LPV passes on the device: flux conservation of injection for every light type, the
+// GPU grids against the CPU reference, no energy gain, determinism, and what the Cornell box
+// must show (indirect light where direct light does not reach, colour bleeding).
+#include "gpu_test.hpp"
+#include "lpv_cpu_reference.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace {
+
+class Lpv : public gpu_test::GpuTest {};
+
+api::RenderRequest lpv_request(const std::string& scene, api::View view = api::View::indirect) {
+  api::RenderRequest r;
+  r.scene = scene;
+  r.output.width = r.output.height = 64;
+  r.output.format = api::ImageFormat::exr;
+  r.output.view = view;
+  return r;
+}
+
+double relative_difference(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-30); }
+
+TEST_F(Lpv, InjectionConservesTheVplFluxForEveryLightType) {
+  for (const char* scene : {"cornell-box", "cornell-box-point", "sun-courtyard"}) {
+    SCOPED_TRACE(scene);
+    const auto result = gpu_test::renderer().render(lpv_request(scene), renderer::kReadbackLinear);
+    ASSERT_TRUE(result.stats.lpv.has_value());
+    const api::LpvStats& lpv = *result.stats.lpv;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_GT(lpv.vpl_flux[c], 0.0);
+      EXPECT_LT(relative_difference(lpv.cascades[0].injected_flux[c], lpv.vpl_flux[c]), 1e-4) << "channel " << c;
+    }
+  }
+}
+
+TEST_F(Lpv, VplFluxOfAPointLightInAClosedBoxIsAlbedoTimesTheLightsFlux) {
+  scene::SceneBuilder b("closed-grey-box");
+  const auto grey = b.add_material({"grey", glm::vec3(0.5f), {}});
+  b.add_quad({-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, grey);
+  b.add_quad({-1, 2, -1}, {1, 2, -1}, {1, 2, 1}, {-1, 2, 1}, grey);
+  b.add_quad({-1, 0, -1}, {1, 0, -1}, {1, 2, -1}, {-1, 2, -1}, grey);
+  b.add_quad({1, 0, 1}, {-1, 0, 1}, {-1, 2, 1}, {1, 2, 1}, grey);
+  b.add_quad({-1, 0, 1}, {-1, 0, -1}, {-1, 2, -1}, {-1, 2, 1}, grey);
+  b.add_quad({1, 0, -1}, {1, 0, 1}, {1, 2, 1}, {1, 2, -1}, grey);
+  api::Light point;
+  point.type = api::LightType::point;
+  point.position = {0.1f, 1.2f, -0.2f};
+  point.intensity = 2.0f;
+  b.add_light(point);
+  b.set_camera(api::Camera{});
+  const scene::Scene scene = b.build();
+  const auto result = gpu_test::renderer().render(scene, lpv_request("closed-grey-box"), renderer::kReadbackLinear);
+  ASSERT_TRUE(result.stats.lpv.has_value());
+  const double want = 0.5 * 4.0 * gpu_test::kPi * 2.0;  // every ray of the light hits a wall
+  for (int c = 0; c < 3; ++c) EXPECT_LT(relative_difference(result.stats.lpv->vpl_flux[c], want), 0.01);
+}
+
+// The cornell box in an 8^3 grid, small enough for the CPU reference.
+api::RenderRequest small_grid_request(std::uint32_t iterations) {
+  api::RenderRequest r = lpv_request("cornell-box");
+  r.lpv.grid = glm::uvec3(8);
+  r.lpv.rsm_resolution = 32;
+  r.lpv.iterations = iterations;
+  r.lpv.occlusion = false;
+  return r;
+}
+
+lpv_ref::Grid grid_of(const renderer::LpvSnapshot::Cascade& cascade) {
+  lpv_ref::Grid g{glm::ivec3(cascade.dims)};
+  g.sh = cascade.accumulated;
+  return g;
+}
+
+// Largest difference of two grids, relative to the largest coefficient.
+double grid_difference(const lpv_ref::Grid& a, const lpv_ref::Grid& b) {
+  double diff = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < a.sh.size(); ++i)
+    for (int k = 0; k < 4; ++k) {
+      diff = std::max(diff, double(std::abs(a.sh[i][k] - b.sh[i][k])));
+      scale = std::max(scale, double(std::abs(b.sh[i][k])));
+    }
+  return diff / scale;
+}
+
+TEST_F(Lpv, InjectedGridMatchesTheCpuReference) {
+  const auto result = gpu_test::renderer().render(small_grid_request(0), renderer::kReadbackLinear | renderer::kReadbackLpv);
+  const renderer::LpvSnapshot& snap = result.lpv;
+  ASSERT_EQ(snap.cascades.size(), 1u);
+  std::vector<lpv_ref::Vpl> vpls;
+  for (std::size_t i = 0; i < snap.rsm_position.size(); ++i)
+    if (snap.rsm_position[i].w != 0.0f)
+      vpls.push_back({glm::vec3(snap.rsm_position[i]), glm::normalize(glm::vec3(snap.rsm_normal[i])),
+                      glm::vec3(snap.rsm_flux[i])});
+  ASSERT_FALSE(vpls.empty());
+  const auto& c = snap.cascades[0];
+  const lpv_ref::Grid cpu = lpv_ref::inject(vpls, c.origin, c.cell_size, glm::ivec3(c.dims), 0.5f);
+  EXPECT_LT(grid_difference(grid_of(c), cpu), 1e-4);
+}
+
+TEST_F(Lpv, PropagatedGridMatchesTheCpuReference) {
+  auto& r = gpu_test::renderer();
+  const auto injected = r.render(small_grid_request(0), renderer::kReadbackLinear | renderer::kReadbackLpv);
+  const auto propagated = r.render(small_grid_request(6), renderer::kReadbackLinear | renderer::kReadbackLpv);
+  lpv_ref::Grid grid = grid_of(injected.lpv.cascades.at(0));
+  lpv_ref::Grid accumulated = grid;
+  for (int k = 0; k < 6; ++k) {
+    grid = lpv_ref::propagate(grid);
+    for (std::size_t i = 0; i < grid.sh.size(); ++i) accumulated.sh[i] += grid.sh[i];
+  }
+  EXPECT_LT(grid_difference(grid_of(propagated.lpv.cascades.at(0)), accumulated), 1e-4);
+}
+
+TEST_F(Lpv, PropagatedFluxNeverExceedsTheInjectedFluxWithOrWithoutOcclusion) {
+  for (const bool occlusion : {false, true}) {
+    for (const std::uint32_t cascades : {1u, 2u}) {
+      SCOPED_TRACE(std::string(occlusion ? "occlusion" : "no occlusion") + ", cascades " + std::to_string(cascades));
+      api::RenderRequest request = lpv_request("cornell-box");
+      request.lpv.occlusion = occlusion;
+      request.lpv.cascades = cascades;
+      request.lpv.iterations = 24;
+      const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear);
+      for (const api::LpvCascadeStats& c : result.stats.lpv->cascades) {
+        ASSERT_EQ(c.propagated_flux.size(), 24u);
+        for (int ch = 0; ch < 3; ++ch) {
+          double previous = c.injected_flux[ch];
+          for (const api::Rgb& flux : c.propagated_flux) {
+            EXPECT_TRUE(std::isfinite(flux[ch]));
+            EXPECT_LE(flux[ch], previous * (1.0 + 1e-5));
+            previous = flux[ch];
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_F(Lpv, IdenticalRequestsGiveBitwiseIdenticalGridsAndImages) {
+  auto& r = gpu_test::renderer();
+  api::RenderRequest request = lpv_request("cornell-box", api::View::final_);
+  request.lpv.cascades = 2;
+  const unsigned readback = renderer::kReadbackLinear | renderer::kReadbackLpv;
+  const auto first = r.render(request, readback);
+  r.render(lpv_request("cornell-box-point"), renderer::kReadbackLinear);  // something else in between
+  const auto second = r.render(request, readback);
+  ASSERT_EQ(first.lpv.cascades.size(), 2u);
+  for (std::size_t c = 0; c < 2; ++c) {
+    const auto& a = first.lpv.cascades[c].accumulated;
+    const auto& b = second.lpv.cascades[c].accumulated;
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])), 0) << "cascade " << c;
+  }
+  EXPECT_EQ(first.linear.pixels, second.linear.pixels);
+}
+
+class CornellLpv : public Lpv {
+ protected:
+  static constexpr std::uint32_t kSize = 96;
+  glm::vec3 at(const renderer::RenderResult& result, glm::vec3 world) {
+    const scene::Scene scene = *scene::make_builtin_scene("cornell-box");
+    const glm::uvec2 p = gpu_test::project_to_pixel(scene.camera, scene, kSize, kSize, world);
+    return gpu_test::pixel(result.linear, p.x, p.y);
+  }
+  renderer::RenderResult render(api::View view, bool lpv = true) {
+    api::RenderRequest r = lpv_request("cornell-box", view);
+    r.output.width = r.output.height = kSize;
+    r.lpv.enabled = lpv;
+    r.lpv.grid = glm::uvec3(16);
+    r.lpv.iterations = 16;  // enough for the light of the floor to reach the ceiling
+    return gpu_test::renderer().render(r, renderer::kReadbackLinear);
+  }
+};
+
+TEST_F(CornellLpv, CeilingIsBlackInDirectAndLitInIndirect) {
+  const glm::vec3 ceiling(0.0f, 2.0f, 0.2f);
+  EXPECT_EQ(at(render(api::View::direct), ceiling), glm::vec3(0.0f));
+  const glm::vec3 indirect = at(render(api::View::indirect), ceiling);
+  EXPECT_GT(indirect.r + indirect.g + indirect.b, 1e-3f);
+}
+
+TEST_F(CornellLpv, FloorNearTheRedWallIsRedderThanNearTheGreenWall) {
+  const auto indirect = render(api::View::indirect);
+  const glm::vec3 near_red = at(indirect, {-0.85f, 0.0f, 0.5f});
+  const glm::vec3 near_green = at(indirect, {0.85f, 0.0f, 0.5f});
+  ASSERT_GT(near_red.g, 0.0f);
+  ASSERT_GT(near_green.g, 0.0f);
+  EXPECT_GT(near_red.r / near_red.g, 1.2f * (near_green.r / near_green.g));
+}
+
+TEST_F(CornellLpv, TurningLpvOffMakesFinalEqualDirect) {
+  const auto off = render(api::View::final_, false);
+  EXPECT_EQ(off.linear.pixels, render(api::View::direct).linear.pixels);
+  EXPECT_FALSE(off.stats.lpv.has_value());
+  for (const api::PassStats& pass : off.stats.passes)
+    if (pass.name == "rsm" || pass.name == "inject" || pass.name == "propagate") {
+      EXPECT_FALSE(pass.ran);
+      EXPECT_EQ(pass.reason, "lpv disabled");
+    }
+  EXPECT_NE(render(api::View::final_).linear.pixels, off.linear.pixels);
+}
+
+}  // namespace
