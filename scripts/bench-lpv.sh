@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Prints the numbers the LPV is measured by, on the default device (lavapipe): per-pass
+# device ms of cornell-box at 512x512 (median of 10 frames) for grids of 16^3, 32^3 and 64^3
+# cells and 4, 8 and 16 iterations (one cascade, RSM 256^2, occlusion on), and propagation
+# throughput in cell-iterations per second. Builds first if needed.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+[ -x "$root/build/lpv-render" ] || "$root/scripts/build.sh"
+bin="$root/build/lpv-render"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+
+printf '%-6s %-5s %s\n' grid iters "per-pass device ms (median of 10 frames) | propagation throughput"
+for grid in 16 32 64; do
+  for iterations in 4 8 16; do
+    echo "{\"output\": {\"width\": 512, \"height\": 512}, \"repeat\": 10,
+           \"lpv\": {\"grid\": $grid, \"iterations\": $iterations}}" >request.json
+    # The summary's second line: "gpu T ms (median): shadow a rsm b ... propagate p ...".
+    line=$("$bin" request.json -o frame.png 2>&1 | sed -n 2p)
+    echo "$line" | awk -v g="$grid" -v n="$iterations" '{
+      for (i = 1; i <= NF; ++i) if ($i == "propagate") p = $(i + 1);
+      sub(/^ +gpu /, "total ");
+      rate = (p > 0) ? g * g * g * n / (p / 1000) : 0;
+      printf "%-6s %-5s %s | %.1f M cell-iterations/s\n", g "^3", n, $0, rate / 1e6 }'
+  done
+done
