@@ -15,8 +15,8 @@ PACKAGES=(
   libglm-dev libtinygltf-dev libcpp-httplib-dev nlohmann-json3-dev
   # image I/O: fast deflate for PNG encoding, stb for decoding in tests, tinyexr for EXR
   libdeflate-dev libstb-dev libtinyexr-dev zlib1g-dev
-  # tests and benchmarks
-  libgtest-dev libbenchmark-dev
+  # tests and benchmarks; curl for the README's examples and scripts/bench-server.sh
+  libgtest-dev libbenchmark-dev curl
 )
 
 missing=()

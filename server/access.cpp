@@ -1,0 +1,44 @@
+#include "server/access.hpp"
+
+#include <arpa/inet.h>
+
+#include <cstddef>
+
+namespace server {
+
+bool equal_in_constant_time(std::string_view a, std::string_view b) {
+  // Walk the longer length in full whatever the contents; a length mismatch still fails.
+  const std::size_t n = a.size() > b.size() ? a.size() : b.size();
+  unsigned char diff = a.size() == b.size() ? 0 : 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const unsigned char x = i < a.size() ? static_cast<unsigned char>(a[i]) : 0;
+    const unsigned char y = i < b.size() ? static_cast<unsigned char>(b[i]) : 0;
+    diff |= static_cast<unsigned char>(x ^ y);
+  }
+  return diff == 0;
+}
+
+bool bearer_token_matches(std::string_view authorization, std::string_view token) {
+  constexpr std::string_view scheme = "Bearer ";
+  if (authorization.size() < scheme.size()) return false;
+  // The scheme is case-insensitive (RFC 7235); the token is compared exactly.
+  for (std::size_t i = 0; i < scheme.size(); ++i) {
+    const char c = authorization[i];
+    const char lower = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+    const char expected = (scheme[i] >= 'A' && scheme[i] <= 'Z') ? char(scheme[i] - 'A' + 'a') : scheme[i];
+    if (lower != expected) return false;
+  }
+  return equal_in_constant_time(authorization.substr(scheme.size()), token);
+}
+
+bool is_loopback_host(std::string_view host) {
+  if (host == "localhost") return true;
+  const std::string text(host);
+  in_addr v4{};
+  if (inet_pton(AF_INET, text.c_str(), &v4) == 1) return (ntohl(v4.s_addr) >> 24) == 127;
+  in6_addr v6{};
+  if (inet_pton(AF_INET6, text.c_str(), &v6) == 1) return IN6_IS_ADDR_LOOPBACK(&v6);
+  return false;
+}
+
+}  // namespace server

@@ -1,0 +1,60 @@
+#include "server/http_errors.hpp"
+
+#include "renderer/scene/builtin_scenes.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace server {
+namespace {
+
+// RequestError::what() is "field: message"; the body carries the two apart.
+std::string message_of(const api::RequestError& error) {
+  std::string what = error.what();
+  const std::string prefix = error.field() + ": ";
+  if (!error.field().empty() && what.starts_with(prefix)) what.erase(0, prefix.size());
+  return what;
+}
+
+std::string builtin_scene_names() {
+  std::string names;
+  for (const auto& info : scene::builtin_scenes()) names += (names.empty() ? "" : ", ") + info.name;
+  return names;
+}
+
+}  // namespace
+
+void send_error(httplib::Response& response, const HttpError& error) {
+  const nlohmann::json body = {
+      {"error", {{"code", error.code}, {"message", error.message}, {"field", error.field}}}};
+  response.status = error.status;
+  response.set_content(body.dump() + "\n", "application/json");
+}
+
+HttpError parse_error(const api::RequestError& error) {
+  std::string message = message_of(error);
+  const bool malformed = error.field().empty() && message.starts_with("invalid JSON");
+  return {400, malformed ? "malformed_json" : "invalid_value", std::move(message), error.field()};
+}
+
+HttpError limit_error(const LimitExceeded& error) { return {422, "limit_exceeded", error.what(), error.field()}; }
+
+HttpError render_error(const api::RequestError& error) {
+  if (error.field() == "scene") return {404, "scene_not_found", message_of(error), "scene"};
+  return {422, "does_not_fit", message_of(error), error.field()};
+}
+
+HttpError unknown_scene(const std::string& name) {
+  return {404, "scene_not_found", "unknown scene '" + name + "'; built-in scenes: " + builtin_scene_names(), "scene"};
+}
+
+HttpError error_for_status(int status, const httplib::Request& request) {
+  switch (status) {
+    case 400: return {400, "bad_http_request", "the HTTP request could not be read", ""};
+    case 404: return {404, "not_found", "no route " + request.method + " " + request.path, ""};
+    case 413: return {413, "payload_too_large", "the request body is over the server's limit", ""};
+    case 414: return {414, "uri_too_long", "the request target is too long", ""};
+    default: return {status, "http_" + std::to_string(status), "HTTP status " + std::to_string(status), ""};
+  }
+}
+
+}  // namespace server

@@ -1,0 +1,37 @@
+// Every error the server answers is JSON: {"error": {"code", "message", "field"}}.
+// This file maps the failures of each layer to a status and a stable code.
+#pragma once
+
+#include "api/request_error.hpp"
+#include "server/limits.hpp"
+
+#include <httplib.h>
+
+#include <string>
+
+namespace server {
+
+struct HttpError {
+  int status = 500;
+  std::string code;     // stable, for programs: "invalid_value", "queue_full", ...
+  std::string message;  // for people
+  std::string field;    // JSON path into the request, or "" when no one field is at fault
+};
+
+// Sets status, the JSON body and its content type.
+void send_error(httplib::Response& response, const HttpError& error);
+
+// The request did not parse or did not validate against the schema: 400.
+HttpError parse_error(const api::RequestError& error);
+// The request is valid but over this server's limits: 422.
+HttpError limit_error(const LimitExceeded& error);
+// The renderer refused a valid request: unknown scene 404, otherwise it does not fit
+// the scene or the device budgets: 422.
+HttpError render_error(const api::RequestError& error);
+HttpError unknown_scene(const std::string& name);
+
+// For statuses httplib sets itself (no route, body too large, unparsable HTTP) and
+// any other status that reached the client without a body.
+HttpError error_for_status(int status, const httplib::Request& request);
+
+}  // namespace server

@@ -1,0 +1,25 @@
+#include "server/limits.hpp"
+
+namespace server {
+
+void check_limits(const api::RenderRequest& request, const RenderLimits& limits) {
+  const std::uint64_t pixels = std::uint64_t(request.output.width) * request.output.height;
+  if (pixels > limits.max_pixels)
+    throw LimitExceeded("output", "width x height is " + std::to_string(pixels) + " pixels; this server allows at most " +
+                                      std::to_string(limits.max_pixels));
+  // Checked whether or not LPV is enabled: the grid is cheap to describe and expensive to
+  // allocate, and a view such as "lpv" may need it regardless.
+  const auto& grid = request.lpv.grid;
+  const std::uint64_t cells = std::uint64_t(grid.x) * grid.y * grid.z * request.lpv.cascades;
+  if (cells > limits.max_grid_cells)
+    throw LimitExceeded("lpv.grid", "grid x * y * z * cascades is " + std::to_string(cells) +
+                                        " cells; this server allows at most " + std::to_string(limits.max_grid_cells));
+  if (request.lpv.iterations > limits.max_iterations)
+    throw LimitExceeded("lpv.iterations", "is " + std::to_string(request.lpv.iterations) +
+                                              "; this server allows at most " + std::to_string(limits.max_iterations));
+  if (request.repeat > limits.max_repeat)
+    throw LimitExceeded("repeat", "is " + std::to_string(request.repeat) + "; this server allows at most " +
+                                      std::to_string(limits.max_repeat));
+}
+
+}  // namespace server

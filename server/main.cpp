@@ -1,0 +1,165 @@
+// lpv-server: keeps a Vulkan device, its pipelines and the built-in scenes warm and
+// serves render requests over HTTP (api/openapi.yaml).
+#include "server/render_queue.hpp"
+#include "server/request_log.hpp"
+#include "server/routes.hpp"
+#include "server/server_options.hpp"
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <pthread.h>
+#include <signal.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <thread>
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitUsage = 2;
+
+vkx::DeviceOptions device_options(const server::ServerOptions& options) {
+  vkx::DeviceOptions device = vkx::DeviceOptions::from_environment();
+  // --data-dir holds the pipeline cache unless LPV_PIPELINE_CACHE says where (or "off").
+  if (!options.data_dir.empty() && !std::getenv("LPV_PIPELINE_CACHE")) {
+    std::filesystem::create_directories(options.data_dir);
+    device.pipeline_cache_file = options.data_dir / "pipeline-cache.bin";
+  }
+  return device;
+}
+
+// "http://host:port", with IPv6 addresses in brackets.
+std::string base_url(std::string host, int port) {
+  if (host.find(':') != std::string::npos) host = "[" + host + "]";
+  return "http://" + host + ":" + std::to_string(port);
+}
+
+// A command that renders the default scene from this server, for people starting it
+// by hand (scripts/run.sh): the address a local client reaches, and the token header
+// with a placeholder rather than the secret itself.
+std::string example_curl(const server::ServerOptions& options, int port) {
+  std::string host = options.host;
+  if (host == "0.0.0.0") host = "127.0.0.1";
+  if (host == "::") host = "::1";
+  std::string command = "curl -o cornell-box.png -H 'Content-Type: application/json' -d '{}'";
+  if (!options.token.empty()) command += " -H 'Authorization: Bearer <token>'";
+  return command + " " + base_url(host, port) + "/v1/render";
+}
+
+// httplib's stop() does nothing until listen_after_bind() has started, so a stop asked
+// for earlier (a signal or a failed device right at start-up) waits for it.
+void stop_server(httplib::Server& http, const std::atomic<bool>& listening_over) {
+  while (!http.is_running() && !listening_over) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  http.stop();
+}
+
+// SIGINT and SIGTERM are blocked in every thread and taken by this one with sigwait, so
+// the shutdown runs as ordinary code rather than in a signal handler.
+class SignalWatcher {
+ public:
+  SignalWatcher() {
+    sigemptyset(&signals_);
+    sigaddset(&signals_, SIGINT);
+    sigaddset(&signals_, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &signals_, nullptr);  // before any other thread starts
+  }
+  // Calls `on_signal` from the watcher thread when the first signal arrives.
+  void start(std::function<void(int)> on_signal) {
+    thread_ = std::thread([this, on_signal = std::move(on_signal)] {
+      int signal = 0;
+      sigwait(&signals_, &signal);
+      if (!stopped_) on_signal(signal);
+    });
+  }
+  // Ends the watcher when the server stopped for another reason.
+  void stop() {
+    if (!thread_.joinable()) return;
+    stopped_ = true;
+    pthread_kill(thread_.native_handle(), SIGTERM);
+    thread_.join();
+  }
+  ~SignalWatcher() { stop(); }
+
+ private:
+  sigset_t signals_{};
+  std::thread thread_;
+  std::atomic<bool> stopped_{false};
+};
+
+void log_event(const std::string& event, nlohmann::json fields = nlohmann::json::object()) {
+  fields["event"] = event;
+  server::write_log_line(fields);
+}
+
+int run(int argc, char** argv) {
+  const server::ServerOptions options =
+      server::parse_server_options(argc, argv, [](const char* name) { return std::getenv(name); });
+  if (options.help) {
+    std::fputs(server::server_usage(), stdout);
+    return 0;
+  }
+
+  SignalWatcher signals;
+  httplib::Server http;
+  std::atomic<bool> listening_over{false};
+  std::atomic<int> exit_code{0};
+  server::Metrics metrics;
+  server::RenderQueue queue({options.queue_capacity, options.render_workers, device_options(options)},
+                            [&](const std::string& message) {
+                              log_event("fatal", {{"message", message}});
+                              exit_code = kExitFailure;
+                              stop_server(http, listening_over);
+                            });
+  server::Service service{options, queue, metrics};
+  server::install_routes(http, service);
+  http.new_task_queue = [n = options.http_threads] { return new httplib::ThreadPool(n); };
+  http.set_payload_max_length(options.max_body_bytes);
+  http.set_tcp_nodelay(true);  // the headers and body go out in separate writes
+  http.set_keep_alive_max_count(1000);
+  http.set_keep_alive_timeout(2);  // also how long shutdown may wait for an idle connection
+
+  const int port = options.port == 0 ? http.bind_to_any_port(options.host)
+                                     : (http.bind_to_port(options.host, options.port) ? options.port : -1);
+  if (port < 0) {
+    std::fprintf(stderr, "lpv-server: cannot listen on %s:%d\n", options.host.c_str(), options.port);
+    listening_over = true;
+    queue.shutdown();
+    return kExitFailure;
+  }
+  // The first line: scripts and tests read the port from it.
+  std::printf("lpv-server listening on %s\n", base_url(options.host, port).c_str());
+  std::fflush(stdout);
+  std::fprintf(stderr, "lpv-server: try  %s\n", example_curl(options, port).c_str());
+
+  signals.start([&](int signal) {
+    log_event("shutdown", {{"signal", signal == SIGINT ? "SIGINT" : "SIGTERM"}});
+    stop_server(http, listening_over);  // listen_after_bind returns once open requests are answered
+  });
+  http.listen_after_bind();
+  listening_over = true;
+  signals.stop();
+  queue.shutdown();  // renders still queued or running finish before their device closes
+  log_event("stopped", {{"exit_code", exit_code.load()}});
+  return exit_code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const server::OptionsError& e) {
+    std::fprintf(stderr, "lpv-server: %s\n\n%s", e.what(), server::server_usage());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lpv-server: %s\n", e.what());
+    return kExitFailure;
+  }
+}

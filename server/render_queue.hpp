@@ -1,0 +1,103 @@
+// The bounded queue between HTTP threads and the render workers. Each worker owns one
+// Vulkan device and one renderer (neither is thread-safe) for its whole life, so renders
+// on one device are serialised; more workers mean more devices rendering in parallel.
+// A full queue refuses at once instead of piling up; a job whose deadline passed, or whose
+// client went away, before a worker took it never renders.
+#pragma once
+
+#include "api/render_request.hpp"
+#include "renderer/renderer.hpp"
+#include "renderer/vulkan/device.hpp"
+#include "server/metrics.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace server {
+
+using Clock = std::chrono::steady_clock;
+
+class RenderQueue;
+
+class RenderJob {
+ public:
+  RenderJob(api::RenderRequest request, Clock::time_point deadline)
+      : request(std::move(request)), deadline(deadline) {}
+
+  const api::RenderRequest request;
+  const Clock::time_point deadline;
+
+  // Valid once RenderQueue::wait returned Outcome::done: one of the two is set.
+  std::optional<renderer::RenderResult> result;
+  std::exception_ptr error;
+  double queue_wait_ms = 0.0;  // from submission to a worker taking it (or dropping it)
+
+ private:
+  friend class RenderQueue;
+  enum class State { queued, running, done, expired, withdrawn };
+  State state_ = State::queued;
+  Clock::time_point submitted_;
+};
+
+class RenderQueue {
+ public:
+  struct Config {
+    std::size_t capacity = 8;
+    std::size_t workers = 1;
+    vkx::DeviceOptions device;
+  };
+  // Called from a worker thread when its device cannot be opened or warmed up.
+  using FatalHandler = std::function<void(const std::string& message)>;
+
+  RenderQueue(Config config, FatalHandler on_fatal);
+  ~RenderQueue();  // shutdown()
+  RenderQueue(const RenderQueue&) = delete;
+  RenderQueue& operator=(const RenderQueue&) = delete;
+
+  enum class Admission { accepted, full, stopping };
+  Admission submit(const std::shared_ptr<RenderJob>& job);
+
+  enum class Outcome { done, deadline_exceeded, client_gone };
+  // Blocks until the job is done, its deadline passes or `client_gone` (polled every
+  // 50 ms) says nobody waits for it. In the last two cases a queued job is removed; a
+  // running one finishes on its worker and its result is dropped.
+  Outcome wait(RenderJob& job, const std::function<bool()>& client_gone);
+
+  // Every worker has its device warm, the queue has room and no shutdown has begun.
+  bool ready() const;
+  QueueGauges gauges() const;
+  // GET /v1/device: the first worker's device, once it is open.
+  std::optional<nlohmann::json> device_report() const;
+
+  // Refuses new jobs, lets the workers finish what is queued and running, joins them.
+  void shutdown();
+
+ private:
+  void work(std::size_t index);
+  void withdraw(RenderJob& job);  // with mutex_ held
+
+  const Config config_;
+  const FatalHandler on_fatal_;
+  mutable std::mutex mutex_;
+  std::condition_variable work_available_;
+  std::condition_variable job_finished_;
+  std::deque<std::shared_ptr<RenderJob>> queue_;
+  std::size_t in_flight_ = 0;
+  std::size_t ready_workers_ = 0;
+  bool stopping_ = false;
+  std::optional<nlohmann::json> device_report_;
+  std::vector<std::thread> workers_;
+};
+
+}  // namespace server

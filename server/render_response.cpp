@@ -1,0 +1,86 @@
+#include "server/render_response.hpp"
+
+#include "api/request_json.hpp"
+#include "renderer/output.hpp"
+#include "server/base64.hpp"
+#include "server/request_log.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+
+namespace server {
+namespace {
+
+std::string ascii_json(const nlohmann::json& j) { return j.dump(-1, ' ', true); }
+
+std::string timing_entry(const std::string& name, double ms, const char* description) {
+  char text[160];
+  std::snprintf(text, sizeof(text), "%s;dur=%.3f;desc=\"%s\"", name.c_str(), ms, description);
+  return text;
+}
+
+}  // namespace
+
+std::string stats_header_value(const nlohmann::json& stats, std::string& omitted) {
+  omitted.clear();
+  std::string value = ascii_json(stats);
+  if (value.size() <= kMaxStatsHeaderBytes || !stats.contains("lpv")) return value;
+  nlohmann::json shorter = stats;
+  if (shorter["lpv"].contains("cascades"))
+    for (auto& cascade : shorter["lpv"]["cascades"]) cascade.erase("propagated_flux");
+  omitted = "lpv.cascades[].propagated_flux";
+  value = ascii_json(shorter);
+  if (value.size() <= kMaxStatsHeaderBytes) return value;
+  shorter.erase("lpv");
+  omitted = "lpv";
+  return ascii_json(shorter);
+}
+
+std::string server_timing_value(const api::RenderStats& stats, double queue_ms, double encode_ms, double total_ms) {
+  std::string value;
+  for (const auto& pass : stats.passes)
+    if (pass.ran) value += timing_entry(pass.name, pass.gpu_ms.median, "pass") + ", ";
+  value += timing_entry("gpu", stats.gpu_ms.median, "sum of passes") + ", ";
+  value += timing_entry("wall", stats.wall_ms.median, "one frame") + ", ";
+  value += timing_entry("queue", queue_ms, "wait for a worker") + ", ";
+  value += timing_entry("encode", encode_ms, "image encoding") + ", ";
+  value += timing_entry("total", total_ms, "arrival to response");
+  return value;
+}
+
+void send_render_result(httplib::Response& response, renderer::RenderResult& result, api::ImageFormat format,
+                        bool as_json, double queue_ms) {
+  const auto encode_start = std::chrono::steady_clock::now();
+  const std::vector<std::uint8_t> bytes = renderer::encode_output(result, format);
+  const double encode_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - encode_start).count();
+  result.stats.cpu_ms["encode"] = api::TimeSummary::of({encode_ms});
+  // The pixels are no longer needed; free them before building the response.
+  result.display = {};
+  result.linear = {};
+
+  const nlohmann::json stats = api::to_json(result.stats);
+  response.status = 200;
+  if (as_json) {
+    const nlohmann::json body = {
+        {"stats", stats},
+        {"queue_ms", queue_ms},
+        {"image",
+         {{"format", api::to_string(format)},
+          {"media_type", renderer::media_type(format)},
+          {"width", result.stats.width},
+          {"height", result.stats.height},
+          {"base64", base64_encode(bytes)}}}};
+    response.set_content(ascii_json(body), "application/json");
+  } else {
+    std::string omitted;
+    response.set_header("X-Render-Stats", stats_header_value(stats, omitted));
+    if (!omitted.empty()) response.set_header("X-Render-Stats-Omitted", omitted);
+    response.set_content(std::string(bytes.begin(), bytes.end()), renderer::media_type(format));
+  }
+  response.set_header("Server-Timing", server_timing_value(result.stats, queue_ms, encode_ms, request_elapsed_ms().value_or(0.0)));
+}
+
+}  // namespace server

@@ -1,0 +1,152 @@
+#include "server/server_options.hpp"
+
+#include "server/access.hpp"
+
+#include <charconv>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace server {
+namespace {
+
+std::uint64_t parse_count(std::string_view source, std::string_view text, std::uint64_t lo, std::uint64_t hi) {
+  std::uint64_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || value < lo || value > hi)
+    throw OptionsError(std::string(source) + ": expected an integer in [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + "], got '" + std::string(text) + "'");
+  return value;
+}
+
+bool parse_switch(std::string_view source, std::string_view text) {
+  if (text == "1" || text == "true" || text == "yes") return true;
+  if (text == "0" || text == "false" || text == "no" || text.empty()) return false;
+  throw OptionsError(std::string(source) + ": expected 1/0, true/false or yes/no, got '" + std::string(text) + "'");
+}
+
+// One setting: its flag, its environment variable, and how a value is stored.
+struct Setting {
+  std::string_view flag;  // "--port"
+  bool takes_value = true;
+  std::function<void(ServerOptions&, std::string_view source, std::string_view value)> apply;
+
+  std::string environment_name() const {
+    std::string name = "LPV_SERVER_";
+    for (char c : flag.substr(2)) name += c == '-' ? '_' : char(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+    return name;
+  }
+};
+
+const std::vector<Setting>& settings() {
+  using S = std::string_view;
+  static const std::vector<Setting> table = {
+      {"--host", true, [](ServerOptions& o, S, S v) { o.host = std::string(v); }},
+      {"--port", true, [](ServerOptions& o, S s, S v) { o.port = int(parse_count(s, v, 0, 65535)); }},
+      {"--data-dir", true, [](ServerOptions& o, S, S v) { o.data_dir = std::string(v); }},
+      {"--token", true,
+       [](ServerOptions& o, S s, S v) {
+         if (v.empty()) throw OptionsError(std::string(s) + ": the token must not be empty");
+         o.token = std::string(v);
+       }},
+      {"--insecure", false, [](ServerOptions& o, S s, S v) { o.insecure = parse_switch(s, v); }},
+      {"--threads", true, [](ServerOptions& o, S s, S v) { o.http_threads = parse_count(s, v, 1, 1024); }},
+      {"--workers", true, [](ServerOptions& o, S s, S v) { o.render_workers = parse_count(s, v, 1, 16); }},
+      {"--queue", true, [](ServerOptions& o, S s, S v) { o.queue_capacity = parse_count(s, v, 1, 10000); }},
+      {"--deadline-ms", true,
+       [](ServerOptions& o, S s, S v) { o.deadline = std::chrono::milliseconds(parse_count(s, v, 1, 3600000)); }},
+      {"--max-body-bytes", true,
+       [](ServerOptions& o, S s, S v) { o.max_body_bytes = parse_count(s, v, 64, 64u << 20); }},
+      {"--max-pixels", true,
+       [](ServerOptions& o, S s, S v) { o.limits.max_pixels = parse_count(s, v, 1, api::limits::max_image_pixels); }},
+      {"--max-grid-cells", true,
+       [](ServerOptions& o, S s, S v) {
+         const std::uint64_t side = api::limits::max_grid_side;
+         o.limits.max_grid_cells = parse_count(s, v, 1, side * side * side * api::limits::max_cascades);
+       }},
+      {"--max-iterations", true,
+       [](ServerOptions& o, S s, S v) {
+         o.limits.max_iterations = std::uint32_t(parse_count(s, v, 1, api::limits::max_iterations));
+       }},
+      {"--max-repeat", true,
+       [](ServerOptions& o, S s, S v) {
+         o.limits.max_repeat = std::uint32_t(parse_count(s, v, 1, api::limits::max_repeat));
+       }},
+  };
+  return table;
+}
+
+const Setting* find_setting(std::string_view flag) {
+  for (const Setting& s : settings())
+    if (s.flag == flag) return &s;
+  return nullptr;
+}
+
+}  // namespace
+
+const char* server_usage() {
+  return R"(usage: lpv-server [options]
+
+Serves render requests over HTTP (see api/openapi.yaml). Prints the address it
+listens on as its first line, then one JSON line per request.
+
+options (each also read from the environment variable in brackets; a flag wins):
+  --host ADDR            address to bind (127.0.0.1) [LPV_SERVER_HOST]
+  --port N               port, 0 for any free one (8080) [LPV_SERVER_PORT]
+  --data-dir DIR         keeps the pipeline cache in DIR [LPV_SERVER_DATA_DIR]
+  --token TOKEN          require "Authorization: Bearer TOKEN" [LPV_SERVER_TOKEN]
+  --insecure             allow a non-loopback --host without a token [LPV_SERVER_INSECURE=1]
+  --threads N            HTTP connections served at once (16) [LPV_SERVER_THREADS]
+  --workers N            render workers, each with its own device (1) [LPV_SERVER_WORKERS]
+  --queue N              renders that may wait for a worker; more get 503 (8) [LPV_SERVER_QUEUE]
+  --deadline-ms N        time from arrival to image before 504 (30000) [LPV_SERVER_DEADLINE_MS]
+  --max-body-bytes N     request body size before 413 (262144) [LPV_SERVER_MAX_BODY_BYTES]
+  --max-pixels N         output width x height before 422 (16777216) [LPV_SERVER_MAX_PIXELS]
+  --max-grid-cells N     lpv.grid x*y*z*cascades before 422 (2097152) [LPV_SERVER_MAX_GRID_CELLS]
+  --max-iterations N     lpv.iterations before 422 (64) [LPV_SERVER_MAX_ITERATIONS]
+  --max-repeat N         repeat before 422 (100) [LPV_SERVER_MAX_REPEAT]
+  -h, --help             this text
+
+Vulkan: LPV_DEVICE, LPV_VALIDATION, LPV_PIPELINE_CACHE as for lpv-render.
+SIGINT or SIGTERM: stop accepting, finish the renders in flight, exit 0.
+exit status: 0 after a clean shutdown, 2 bad usage, 1 failure (device, bind)
+)";
+}
+
+ServerOptions parse_server_options(int argc, const char* const* argv, const EnvironmentLookup& environment) {
+  ServerOptions options;
+  for (const Setting& s : settings()) {
+    const std::string name = s.environment_name();
+    if (const char* value = environment(name.c_str())) s.apply(options, name, value);
+  }
+  for (int i = 1; i < argc; ++i) {
+    std::string_view arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      options.help = true;
+      continue;
+    }
+    // Both "--port 80" and "--port=80".
+    std::optional<std::string_view> inline_value;
+    if (const auto eq = arg.find('='); arg.starts_with("--") && eq != std::string_view::npos) {
+      inline_value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+    }
+    const Setting* setting = find_setting(arg);
+    if (!setting) throw OptionsError("unknown option " + std::string(argv[i]));
+    if (!setting->takes_value) {
+      setting->apply(options, arg, inline_value.value_or("1"));
+    } else if (inline_value) {
+      setting->apply(options, arg, *inline_value);
+    } else {
+      if (i + 1 >= argc) throw OptionsError("option " + std::string(arg) + " needs a value");
+      setting->apply(options, arg, argv[++i]);
+    }
+  }
+  if (!options.help && options.token.empty() && !options.insecure && !is_loopback_host(options.host))
+    throw OptionsError("refusing to listen on " + options.host +
+                       " without a token: anyone who can reach it could use the server. Set --token "
+                       "(or LPV_SERVER_TOKEN), or pass --insecure if that is really intended");
+  return options;
+}
+
+}  // namespace server

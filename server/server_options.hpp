@@ -1,0 +1,45 @@
+// lpv-server's settings: command-line flags, each also readable from an environment
+// variable for containers (--max-pixels <-> LPV_SERVER_MAX_PIXELS); a flag wins over
+// its variable. Values are validated here so the server never starts half-configured.
+#pragma once
+
+#include "server/limits.hpp"
+
+#include <chrono>
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace server {
+
+struct ServerOptions {
+  std::string host = "127.0.0.1";
+  int port = 8080;                 // 0: any free port; the bound one is printed at start
+  std::filesystem::path data_dir;  // empty: no state on disk besides LPV_PIPELINE_CACHE
+  std::string token;               // empty: no authentication
+  bool insecure = false;           // allow a non-loopback address without a token
+  std::size_t http_threads = 16;   // connections served at once
+  std::size_t render_workers = 1;  // each owns its own device and renderer
+  std::size_t queue_capacity = 8;  // renders waiting for a worker; more are answered 503
+  std::chrono::milliseconds deadline{30000};  // from arrival to the rendered image
+  std::size_t max_body_bytes = 256 * 1024;
+  RenderLimits limits;
+  bool help = false;
+};
+
+class OptionsError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The value of an environment variable, or nullptr when it is unset (std::getenv in main).
+using EnvironmentLookup = std::function<const char*(const char* name)>;
+
+// Throws OptionsError with a message that names the flag (or variable) and the problem.
+ServerOptions parse_server_options(int argc, const char* const* argv, const EnvironmentLookup& environment);
+
+const char* server_usage();
+
+}  // namespace server

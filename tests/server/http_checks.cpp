@@ -1,0 +1,105 @@
+#include "http_checks.hpp"
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#include <stb/stb_image.h>
+
+#include <cstdlib>
+
+namespace server_test {
+namespace {
+
+const char* type_name(const nlohmann::json& j) {
+  if (j.is_number()) return "number";  // integer and float examples match either
+  return j.type_name();
+}
+
+::testing::AssertionResult shape(const nlohmann::json& example, const nlohmann::json& actual, const std::string& path) {
+  if (std::string(type_name(example)) != type_name(actual))
+    return ::testing::AssertionFailure() << path << ": expected a " << type_name(example) << ", got "
+                                         << actual.dump();
+  if (example.is_object()) {
+    for (const auto& [key, value] : example.items()) {
+      if (!actual.contains(key)) return ::testing::AssertionFailure() << path << "." << key << " is missing";
+      if (auto r = shape(value, actual.at(key), path + "." + key); !r) return r;
+    }
+  } else if (example.is_array() && !example.empty()) {
+    for (std::size_t i = 0; i < actual.size(); ++i)
+      if (auto r = shape(example.front(), actual.at(i), path + "[" + std::to_string(i) + "]"); !r) return r;
+  }
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+std::optional<ImageSize> png_size(const std::string& bytes) {
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &width,
+                                          &height, &channels, 4);
+  if (!pixels) return std::nullopt;
+  stbi_image_free(pixels);
+  return ImageSize{width, height};
+}
+
+std::string base64_decode(const std::string& text) {
+  static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::uint32_t bits = 0;
+  int count = 0;
+  for (char c : text) {
+    if (c == '=') break;
+    const auto v = alphabet.find(c);
+    if (v == std::string::npos) continue;
+    bits = (bits << 6) | std::uint32_t(v);
+    count += 6;
+    if (count >= 8) {
+      count -= 8;
+      out += char((bits >> count) & 0xff);
+    }
+  }
+  return out;
+}
+
+std::map<std::string, double> parse_server_timing(const std::string& header) {
+  std::map<std::string, double> entries;
+  std::size_t start = 0;
+  while (start < header.size()) {
+    std::size_t end = header.find(',', start);
+    if (end == std::string::npos) end = header.size();
+    std::string entry = header.substr(start, end - start);
+    start = end + 1;
+    entry.erase(0, entry.find_first_not_of(' '));
+    const auto semicolon = entry.find(';');
+    const auto dur = entry.find("dur=");
+    if (semicolon == std::string::npos || dur == std::string::npos) continue;
+    entries[entry.substr(0, semicolon)] = std::strtod(entry.c_str() + dur + 4, nullptr);
+  }
+  return entries;
+}
+
+::testing::AssertionResult is_json_error(const httplib::Result& result, int status, const std::string& code,
+                                         const std::string& field) {
+  if (!result) return ::testing::AssertionFailure() << "no response: " << httplib::to_string(result.error());
+  if (result->status != status)
+    return ::testing::AssertionFailure() << "status " << result->status << ", expected " << status << "; body "
+                                         << result->body;
+  if (result->get_header_value("Content-Type") != "application/json")
+    return ::testing::AssertionFailure() << "Content-Type " << result->get_header_value("Content-Type");
+  const auto body = nlohmann::json::parse(result->body, nullptr, false);
+  if (body.is_discarded() || !body.contains("error"))
+    return ::testing::AssertionFailure() << "not an error body: " << result->body;
+  const auto& error = body["error"];
+  if (!error.value("code", nlohmann::json()).is_string() || !error.value("message", nlohmann::json()).is_string() ||
+      !error.value("field", nlohmann::json()).is_string())
+    return ::testing::AssertionFailure() << "error needs string code, message and field: " << result->body;
+  if (error["code"] != code || error["field"] != field || error["message"].get<std::string>().empty())
+    return ::testing::AssertionFailure() << "expected code '" << code << "' and field '" << field << "', got "
+                                         << result->body;
+  return ::testing::AssertionSuccess();
+}
+
+::testing::AssertionResult has_shape_of(const nlohmann::json& example, const nlohmann::json& actual) {
+  return shape(example, actual, "$");
+}
+
+}  // namespace server_test

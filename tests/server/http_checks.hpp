@@ -1,0 +1,36 @@
+// What the HTTP tests check again and again: error bodies, images, timing headers.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <optional>
+#include <string>
+
+namespace server_test {
+
+struct ImageSize {
+  int width = 0;
+  int height = 0;
+};
+
+// Decodes a PNG with stb_image; empty when the bytes are not a PNG.
+std::optional<ImageSize> png_size(const std::string& bytes);
+
+std::string base64_decode(const std::string& text);
+
+// Server-Timing "name;dur=1.5;desc=..., ..." as name -> dur.
+std::map<std::string, double> parse_server_timing(const std::string& header);
+
+// The response is `status` with the JSON error body {"error": {"code", "message", "field"}}:
+// code and field as given (field "" = no field), a non-empty message.
+::testing::AssertionResult is_json_error(const httplib::Result& result, int status, const std::string& code,
+                                         const std::string& field);
+
+// Every key of `example` is in `actual` with a value of the same JSON type, recursively;
+// array elements of `actual` are compared with the example's first element.
+::testing::AssertionResult has_shape_of(const nlohmann::json& example, const nlohmann::json& actual);
+
+}  // namespace server_test

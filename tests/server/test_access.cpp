@@ -1,0 +1,57 @@
+#include "server/access.hpp"
+#include "server/base64.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace server {
+namespace {
+
+TEST(Access, ConstantTimeEqualityIsEquality) {
+  EXPECT_TRUE(equal_in_constant_time("", ""));
+  EXPECT_TRUE(equal_in_constant_time("token", "token"));
+  EXPECT_FALSE(equal_in_constant_time("token", "tokem"));
+  EXPECT_FALSE(equal_in_constant_time("token", "token2"));
+  EXPECT_FALSE(equal_in_constant_time("token", ""));
+  EXPECT_FALSE(equal_in_constant_time(std::string_view("a\0b", 3), std::string_view("a\0c", 3)));
+}
+
+TEST(Access, BearerTokenNeedsTheSchemeAndTheExactToken) {
+  EXPECT_TRUE(bearer_token_matches("Bearer abc", "abc"));
+  EXPECT_TRUE(bearer_token_matches("bearer abc", "abc"));
+  EXPECT_FALSE(bearer_token_matches("Bearer abcd", "abc"));
+  EXPECT_FALSE(bearer_token_matches("Basic abc", "abc"));
+  EXPECT_FALSE(bearer_token_matches("abc", "abc"));
+  EXPECT_FALSE(bearer_token_matches("", "abc"));
+  EXPECT_FALSE(bearer_token_matches("Bearer ", "abc"));
+}
+
+TEST(Access, LoopbackHosts) {
+  EXPECT_TRUE(is_loopback_host("127.0.0.1"));
+  EXPECT_TRUE(is_loopback_host("127.8.9.10"));
+  EXPECT_TRUE(is_loopback_host("::1"));
+  EXPECT_TRUE(is_loopback_host("localhost"));
+  EXPECT_FALSE(is_loopback_host("0.0.0.0"));
+  EXPECT_FALSE(is_loopback_host("::"));
+  EXPECT_FALSE(is_loopback_host("192.168.1.2"));
+  EXPECT_FALSE(is_loopback_host("example.com"));
+}
+
+TEST(Base64, MatchesRfc4648TestVectors) {
+  auto encode = [](std::string_view s) {
+    return base64_encode(std::span(reinterpret_cast<const std::uint8_t*>(s.data()), s.size()));
+  };
+  EXPECT_EQ(encode(""), "");
+  EXPECT_EQ(encode("f"), "Zg==");
+  EXPECT_EQ(encode("fo"), "Zm8=");
+  EXPECT_EQ(encode("foo"), "Zm9v");
+  EXPECT_EQ(encode("foob"), "Zm9vYg==");
+  EXPECT_EQ(encode("fooba"), "Zm9vYmE=");
+  EXPECT_EQ(encode("foobar"), "Zm9vYmFy");
+  const std::vector<std::uint8_t> high = {0xff, 0xfe, 0xfd};
+  EXPECT_EQ(base64_encode(high), "//79");
+}
+
+}  // namespace
+}  // namespace server

@@ -1,0 +1,70 @@
+#include "server/server_options.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <vector>
+
+namespace server {
+namespace {
+
+ServerOptions parse(std::vector<const char*> args, std::map<std::string, std::string> env = {}) {
+  args.insert(args.begin(), "lpv-server");
+  return parse_server_options(int(args.size()), args.data(), [&env](const char* name) -> const char* {
+    const auto it = env.find(name);
+    return it == env.end() ? nullptr : it->second.c_str();
+  });
+}
+
+TEST(ServerOptions, DefaultsAreLoopbackPort8080AndSafeLimits) {
+  const ServerOptions o = parse({});
+  EXPECT_EQ(o.host, "127.0.0.1");
+  EXPECT_EQ(o.port, 8080);
+  EXPECT_TRUE(o.token.empty());
+  EXPECT_EQ(o.limits.max_pixels, 4096u * 4096u);
+  EXPECT_EQ(o.limits.max_grid_cells, 128u * 128u * 128u);
+  EXPECT_EQ(o.limits.max_iterations, 64u);
+}
+
+TEST(ServerOptions, FlagsAndEnvironmentWithFlagsWinning) {
+  const ServerOptions o = parse({"--port", "9000", "--queue=3", "--max-iterations", "12"},
+                                {{"LPV_SERVER_PORT", "7000"}, {"LPV_SERVER_WORKERS", "2"},
+                                 {"LPV_SERVER_TOKEN", "abc"}, {"LPV_SERVER_DEADLINE_MS", "1500"}});
+  EXPECT_EQ(o.port, 9000);
+  EXPECT_EQ(o.queue_capacity, 3u);
+  EXPECT_EQ(o.render_workers, 2u);
+  EXPECT_EQ(o.token, "abc");
+  EXPECT_EQ(o.deadline.count(), 1500);
+  EXPECT_EQ(o.limits.max_iterations, 12u);
+}
+
+TEST(ServerOptions, BadValuesNameTheFlagOrVariable) {
+  auto message = [](std::vector<const char*> args, std::map<std::string, std::string> env = {}) -> std::string {
+    try {
+      parse(std::move(args), std::move(env));
+    } catch (const OptionsError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(message({"--port", "65536"}).find("--port"), std::string::npos);
+  EXPECT_NE(message({"--port", "80x"}).find("--port"), std::string::npos);
+  EXPECT_NE(message({"--queue", "0"}).find("--queue"), std::string::npos);
+  EXPECT_NE(message({"--max-pixels", "-1"}).find("--max-pixels"), std::string::npos);
+  EXPECT_NE(message({"--max-iterations", "1025"}).find("--max-iterations"), std::string::npos);
+  EXPECT_NE(message({"--workers"}).find("needs a value"), std::string::npos);
+  EXPECT_NE(message({"--verbose"}).find("unknown option"), std::string::npos);
+  EXPECT_NE(message({}, {{"LPV_SERVER_THREADS", "many"}}).find("LPV_SERVER_THREADS"), std::string::npos);
+  EXPECT_NE(message({"--token", ""}).find("--token"), std::string::npos);
+}
+
+TEST(ServerOptions, APublicAddressNeedsATokenOrInsecure) {
+  EXPECT_THROW(parse({"--host", "0.0.0.0"}), OptionsError);
+  EXPECT_THROW(parse({}, {{"LPV_SERVER_HOST", "192.168.1.5"}}), OptionsError);
+  EXPECT_EQ(parse({"--host", "0.0.0.0", "--token", "t"}).host, "0.0.0.0");
+  EXPECT_TRUE(parse({"--host", "0.0.0.0", "--insecure"}).insecure);
+  EXPECT_TRUE(parse({"--host", "::1"}).token.empty());
+}
+
+}  // namespace
+}  // namespace server
