@@ -13,8 +13,6 @@ struct SourceConstants {
   std::uint32_t source;
 };
 
-std::uint32_t groups(std::uint32_t n, std::uint32_t size) { return (n + size - 1) / size; }
-
 void compute_to_compute(VkCommandBuffer cmd) {
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
@@ -81,24 +79,24 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
   inject_.bind(cmd);
   if (sources.rsm) {
     inject_.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_RSM});
-    vkCmdDispatch(cmd, groups(maps.resolution, gpu::LPV_VPL_GROUP), groups(maps.resolution, gpu::LPV_VPL_GROUP),
+    vkCmdDispatch(cmd, vkx::group_count(maps.resolution, gpu::LPV_VPL_GROUP), vkx::group_count(maps.resolution, gpu::LPV_VPL_GROUP),
                   maps.layers);
   }
   if (sources.camera) {
     inject_.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA});
     const std::uint32_t s = sources.camera_stride;
-    vkCmdDispatch(cmd, groups(groups(camera.width, s), gpu::LPV_VPL_GROUP),
-                  groups(groups(camera.height, s), gpu::LPV_VPL_GROUP), 1);
+    vkCmdDispatch(cmd, vkx::group_count(vkx::group_count(camera.width, s), gpu::LPV_VPL_GROUP),
+                  vkx::group_count(vkx::group_count(camera.height, s), gpu::LPV_VPL_GROUP), 1);
   }
   compute_to_compute(cmd);
   const glm::uvec3 d = volumes.dims;
   corners_.bind(cmd);
   corners_.push(cmd, cascade);
-  vkCmdDispatch(cmd, groups(d.x + 1, gpu::LPV_GROUP), groups(d.y + 1, gpu::LPV_GROUP), groups(d.z + 1, gpu::LPV_GROUP));
+  vkCmdDispatch(cmd, vkx::group_count(d.x + 1, gpu::LPV_GROUP), vkx::group_count(d.y + 1, gpu::LPV_GROUP), vkx::group_count(d.z + 1, gpu::LPV_GROUP));
   compute_to_compute(cmd);
   resolve_.bind(cmd);
   resolve_.push(cmd, cascade);
-  vkCmdDispatch(cmd, groups(d.x, gpu::LPV_GROUP), groups(d.y, gpu::LPV_GROUP), groups(d.z, gpu::LPV_GROUP));
+  vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), vkx::group_count(d.z, gpu::LPV_GROUP));
   compute_to_compute(cmd);
 }
 

@@ -12,8 +12,6 @@ struct CascadeConstants {
   std::uint32_t stats_offset;
 };
 
-std::uint32_t groups(std::uint32_t n, std::uint32_t size) { return (n + size - 1) / size; }
-
 }  // namespace
 
 LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
@@ -71,13 +69,13 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
   }
   inject_.bind(cmd);
   inject_.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_offset(cascade)});
-  vkCmdDispatch(cmd, groups(vpls_per_side, gpu::LPV_VPL_GROUP), groups(vpls_per_side, gpu::LPV_VPL_GROUP), maps.layers);
+  vkCmdDispatch(cmd, vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP), vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP), maps.layers);
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   resolve_.bind(cmd);
   resolve_.push(cmd, CascadeConstants{cascade, volumes.grid_flux_offset(cascade, 0)});
   const glm::uvec3 d = volumes.dims;
-  vkCmdDispatch(cmd, groups(d.x, gpu::LPV_GROUP), groups(d.y, gpu::LPV_GROUP), groups(d.z, gpu::LPV_GROUP));
+  vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), vkx::group_count(d.z, gpu::LPV_GROUP));
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }

@@ -12,8 +12,6 @@ struct IterationConstants {
   std::uint32_t iteration;  // 1-based
 };
 
-std::uint32_t groups(std::uint32_t n) { return (n + gpu::LPV_GROUP - 1) / gpu::LPV_GROUP; }
-
 }  // namespace
 
 LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) {
@@ -48,7 +46,8 @@ void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::u
   const glm::uvec3 d = volumes.dims;
   for (std::uint32_t k = 1; k <= iterations; ++k) {
     pipeline_.push(cmd, IterationConstants{cascade, volumes.grid_flux_offset(cascade, k), k});
-    vkCmdDispatch(cmd, groups(d.x), groups(d.y), groups(d.z));
+    vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
+                  vkx::group_count(d.z, gpu::LPV_GROUP));
     vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   }

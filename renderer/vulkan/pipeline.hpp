@@ -89,6 +89,9 @@ class DescriptorWriter {
   std::vector<bool> is_image_;
 };
 
+// Work groups of `size` invocations that cover `n` items.
+inline std::uint32_t group_count(std::uint32_t n, std::uint32_t size) { return (n + size - 1) / size; }
+
 // Shorthand for a layout binding visible to `stages`.
 inline VkDescriptorSetLayoutBinding binding(std::uint32_t index, VkDescriptorType type, VkShaderStageFlags stages) {
   return VkDescriptorSetLayoutBinding{index, type, 1, stages, nullptr};
