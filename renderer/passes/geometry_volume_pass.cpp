@@ -13,38 +13,19 @@ struct SourceConstants {
   std::uint32_t source;
 };
 
-void compute_to_compute(VkCommandBuffer cmd) {
-  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-}
-
 }  // namespace
 
 GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(device) {
-  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-  vkx::PipelineLayoutDesc inject;
-  inject.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs)};
-  for (std::uint32_t b = 1; b <= 6; ++b) inject.bindings.push_back(vkx::binding(b, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs));
-  inject.bindings.push_back(vkx::binding(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs));
-  inject.push_constant_bytes = sizeof(SourceConstants);
-  inject.push_constant_stages = cs;
-  inject_ = vkx::Pipeline(device, inject, spirv_lpv_geometry_inject_comp);
-
-  vkx::PipelineLayoutDesc corners;
-  corners.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs)};
-  corners.push_constant_bytes = sizeof(std::uint32_t);
-  corners.push_constant_stages = cs;
-  corners_ = vkx::Pipeline(device, corners, spirv_lpv_geometry_corners_comp);
-
-  vkx::PipelineLayoutDesc resolve;
-  resolve.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs)};
-  resolve.push_constant_bytes = sizeof(std::uint32_t);
-  resolve.push_constant_stages = cs;
-  resolve_ = vkx::Pipeline(device, resolve, spirv_lpv_geometry_resolve_comp);
+  const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  inject_ = vkx::Pipeline(
+      device, vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants)),
+      spirv_lpv_geometry_inject_comp);
+  corners_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image}, sizeof(std::uint32_t)),
+                           spirv_lpv_geometry_corners_comp);
+  resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, image, image}, sizeof(std::uint32_t)),
+                           spirv_lpv_geometry_resolve_comp);
 }
 
 void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
@@ -88,16 +69,16 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
     vkCmdDispatch(cmd, vkx::group_count(vkx::group_count(camera.width, s), gpu::LPV_VPL_GROUP),
                   vkx::group_count(vkx::group_count(camera.height, s), gpu::LPV_VPL_GROUP), 1);
   }
-  compute_to_compute(cmd);
+  vkx::compute_barrier(cmd);
   const glm::uvec3 d = volumes.dims;
   corners_.bind(cmd);
   corners_.push(cmd, cascade);
   vkCmdDispatch(cmd, vkx::group_count(d.x + 1, gpu::LPV_GROUP), vkx::group_count(d.y + 1, gpu::LPV_GROUP), vkx::group_count(d.z + 1, gpu::LPV_GROUP));
-  compute_to_compute(cmd);
+  vkx::compute_barrier(cmd);
   resolve_.bind(cmd);
   resolve_.push(cmd, cascade);
   vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), vkx::group_count(d.z, gpu::LPV_GROUP));
-  compute_to_compute(cmd);
+  vkx::compute_barrier(cmd);
 }
 
 }  // namespace renderer

@@ -15,29 +15,14 @@ struct CascadeConstants {
 }  // namespace
 
 LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
-  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-  vkx::PipelineLayoutDesc inject;
-  inject.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
-  inject.push_constant_bytes = sizeof(CascadeConstants);
-  inject.push_constant_stages = cs;
-  inject_ = vkx::Pipeline(device, inject, spirv_lpv_inject_comp);
-
-  vkx::PipelineLayoutDesc resolve;
-  resolve.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                      vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                      vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                      vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                      vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
-  resolve.push_constant_bytes = sizeof(CascadeConstants);
-  resolve.push_constant_stages = cs;
-  resolve_ = vkx::Pipeline(device, resolve, spirv_lpv_inject_resolve_comp);
+  const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  const std::uint32_t push = sizeof(CascadeConstants);
+  inject_ = vkx::Pipeline(device, vkx::compute_layout({uniform, image, image, image, buffer, buffer}, push),
+                          spirv_lpv_inject_comp);
+  resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image, image, image, image, buffer}, push),
+                           spirv_lpv_inject_resolve_comp);
 }
 
 void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
@@ -70,14 +55,12 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
   inject_.bind(cmd);
   inject_.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_offset(cascade)});
   vkCmdDispatch(cmd, vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP), vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP), maps.layers);
-  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  vkx::compute_barrier(cmd);
   resolve_.bind(cmd);
   resolve_.push(cmd, CascadeConstants{cascade, volumes.grid_flux_offset(cascade, 0)});
   const glm::uvec3 d = volumes.dims;
   vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), vkx::group_count(d.z, gpu::LPV_GROUP));
-  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  vkx::compute_barrier(cmd);
 }
 
 }  // namespace renderer

@@ -15,18 +15,12 @@ struct IterationConstants {
 }  // namespace
 
 LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) {
-  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-  vkx::PipelineLayoutDesc layout;
-  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(4, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs)};
-  layout.push_constant_bytes = sizeof(IterationConstants);
-  layout.push_constant_stages = cs;
-  pipeline_ = vkx::Pipeline(device, layout, spirv_lpv_propagate_comp);
+  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  pipeline_ = vkx::Pipeline(device,
+                            vkx::compute_layout({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, image, image, image, image, image,
+                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                                sizeof(IterationConstants)),
+                            spirv_lpv_propagate_comp);
 }
 
 void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t iterations,
@@ -48,8 +42,7 @@ void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::u
     pipeline_.push(cmd, IterationConstants{cascade, volumes.grid_flux_offset(cascade, k), k});
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
                   vkx::group_count(d.z, gpu::LPV_GROUP));
-    vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    vkx::compute_barrier(cmd);
   }
 }
 

@@ -7,21 +7,12 @@
 namespace renderer {
 
 ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
-  const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-  vkx::PipelineLayoutDesc layout;
-  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, cs),
-                     vkx::binding(4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs),
-                     vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, cs),
-                     vkx::binding(9, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, cs),
-                     vkx::binding(10, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs),
-                     vkx::binding(11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs),
-                     vkx::binding(12, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cs)};
+  const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  const vkx::PipelineLayoutDesc layout = vkx::compute_layout(
+      {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, sampled, sampled, sampled});
   pipeline_ = vkx::Pipeline(device, layout, spirv_shade_comp);
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
   grid_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR);

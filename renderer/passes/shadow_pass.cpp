@@ -1,5 +1,6 @@
 #include "renderer/passes/shadow_pass.hpp"
 
+#include "renderer/vulkan/rendering.hpp"
 #include "shaders/shadow.vert.h"
 
 namespace renderer {
@@ -26,29 +27,12 @@ ShadowPass::ShadowPass(const vkx::Device& device) : device_(device) {
 
 void ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, const ShadowAtlas& atlas,
                         std::span<const glm::mat4> views) const {
-  vkx::transition(cmd, atlas.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                  VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                  VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-  const float res = static_cast<float>(atlas.resolution);
-  const VkViewport viewport{0.0f, 0.0f, res, res, 0.0f, 1.0f};
-  const VkRect2D area{{0, 0}, {atlas.resolution, atlas.resolution}};
+  vkx::prepare_attachments(cmd, {}, &atlas.depth);
   for (std::uint32_t layer = 0; layer < views.size(); ++layer) {
-    VkRenderingAttachmentInfoKHR depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
-    depth.imageView = atlas.depth.layer_view(layer);
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    depth.clearValue.depthStencil = {1.0f, 0};
-    VkRenderingInfoKHR info{VK_STRUCTURE_TYPE_RENDERING_INFO_KHR};
-    info.renderArea = area;
-    info.layerCount = 1;
-    info.pDepthAttachment = &depth;
-    device_.cmd_begin_rendering(cmd, &info);
+    vkx::begin_cleared_rendering(device_, cmd, {}, atlas.depth.layer_view(layer), {atlas.resolution, atlas.resolution},
+                                 true);
     if (scene.index_count > 0) {
       pipeline_.bind(cmd);
-      vkCmdSetViewport(cmd, 0, 1, &viewport);
-      vkCmdSetScissor(cmd, 0, 1, &area);
       vkCmdSetDepthBias(cmd, 0.0f, 0.0f, kSlopeBias);
       pipeline_.push(cmd, views[layer]);
       scene.bind_geometry(cmd);

@@ -6,11 +6,8 @@
 namespace renderer {
 
 TonemapPass::TonemapPass(const vkx::Device& device) : device_(device) {
-  vkx::PipelineLayoutDesc layout;
-  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT),
-                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT)};
-  layout.push_constant_bytes = sizeof(gpu::GpuTonemapParams);
-  layout.push_constant_stages = VK_SHADER_STAGE_COMPUTE_BIT;
+  const vkx::PipelineLayoutDesc layout = vkx::compute_layout(
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, sizeof(gpu::GpuTonemapParams));
   pipeline_ = vkx::Pipeline(device, layout, spirv_tonemap_comp);
 }
 

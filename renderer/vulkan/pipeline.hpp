@@ -8,6 +8,7 @@
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <utility>
 #include <vector>
@@ -88,6 +89,11 @@ class DescriptorWriter {
   std::vector<std::pair<std::uint32_t, VkDescriptorType>> slots_;
   std::vector<bool> is_image_;
 };
+
+// The layout of a compute pipeline: binding i has descriptor type types[i]; push constants
+// of `push_constant_bytes` (0: none).
+PipelineLayoutDesc compute_layout(std::initializer_list<VkDescriptorType> types,
+                                  std::uint32_t push_constant_bytes = 0);
 
 // Work groups of `size` invocations that cover `n` items.
 inline std::uint32_t group_count(std::uint32_t n, std::uint32_t size) { return (n + size - 1) / size; }

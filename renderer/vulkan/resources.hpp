@@ -108,6 +108,9 @@ void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkI
                 VkPipelineStageFlags src_stage, VkAccessFlags src_access, VkPipelineStageFlags dst_stage,
                 VkAccessFlags dst_access);
 
+// Compute writes made visible to later compute reads and writes: between dependent dispatches.
+void compute_barrier(VkCommandBuffer cmd);
+
 // A global memory barrier between two pipeline stages.
 void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags src_stage, VkAccessFlags src_access,
                     VkPipelineStageFlags dst_stage, VkAccessFlags dst_access);

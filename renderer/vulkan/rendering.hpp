@@ -1,0 +1,24 @@
+// Dynamic rendering into freshly cleared targets, as the raster passes (shadow maps, RSMs,
+// G-buffer) use it: the layout transitions before and after, the attachments, the viewport.
+#pragma once
+
+#include "renderer/vulkan/device.hpp"
+#include "renderer/vulkan/resources.hpp"
+
+#include <span>
+
+namespace vkx {
+
+// Colour images to COLOR_ATTACHMENT_OPTIMAL and the depth image (if any) to
+// DEPTH_STENCIL_ATTACHMENT_OPTIMAL, their old contents discarded.
+void prepare_attachments(VkCommandBuffer cmd, std::span<const Image* const> colors, const Image* depth);
+
+// After rendering: colour images to GENERAL for compute passes to read.
+void colors_to_compute(VkCommandBuffer cmd, std::span<const Image* const> colors);
+
+// Begins rendering over `extent` into `colors` (cleared to 0) and `depth` (cleared to 1;
+// stored only if `store_depth`), and sets the viewport and scissor to the whole extent.
+void begin_cleared_rendering(const Device& device, VkCommandBuffer cmd, std::span<const VkImageView> colors,
+                             VkImageView depth, VkExtent2D extent, bool store_depth);
+
+}  // namespace vkx
