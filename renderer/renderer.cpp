@@ -198,7 +198,7 @@ struct Renderer::Impl {
                       unsigned readback, double upload_ms);
   void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
   void record_pass(Pass pass, std::uint32_t cascade, const Frame& frame);
-  api::LpvStats lpv_stats(const LpvSetup& lpv) const;
+  api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv) const;
   LpvSnapshot lpv_snapshot(const LpvSetup& lpv) const;
 };
 
@@ -265,18 +265,18 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
     atlas.emplace(device, shadow_res, shadow_layers);
   }
   if (!lpv) {
-    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1, 0);  // something for the shading to bind
+    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1);  // something for the shading to bind
     return;  // RSMs and grids of earlier requests stay for the next that needs them
   }
   if (!rsm_maps || rsm_maps->resolution != request.lpv.rsm_resolution || rsm_maps->layers != rsm_layers) {
     rsm_maps.reset();
     rsm_maps.emplace(device, request.lpv.rsm_resolution, rsm_layers);
   }
-  if (!volumes || volumes->dims != request.lpv.grid || volumes->cascades != request.lpv.cascades ||
-      volumes->iterations != request.lpv.iterations) {
+  if (!volumes || volumes->dims != request.lpv.grid || volumes->cascades != request.lpv.cascades) {
     volumes.reset();
-    volumes.emplace(device, request.lpv.grid, request.lpv.cascades, request.lpv.iterations);
+    volumes.emplace(device, request.lpv.grid, request.lpv.cascades);
   }
+  volumes->set_iterations(device, request.lpv.iterations);
 }
 
 RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
@@ -386,7 +386,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.wall_ms = api::TimeSummary::of(wall_ms);
   stats.device = device.info().name;
   stats.driver = device.info().driver;
-  if (plan.run[kRsm]) stats.lpv = lpv_stats(lpv_setup);
+  if (plan.run[kRsm]) stats.lpv = lpv_stats(request.lpv, lpv_setup);
   if (plan.run[kRsm] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup);
   if (request.lpv.intensity != 1.0f && needs_indirect_light(out.view))
     stats.warnings.push_back("lpv.intensity is " + std::to_string(request.lpv.intensity) +
@@ -397,12 +397,13 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
 }
 
 // The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats.
-api::LpvStats Renderer::Impl::lpv_stats(const LpvSetup& lpv) const {
+api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup& lpv) const {
   volumes->flux_stats.invalidate();
   const double watts_per_unit = 1.0 / double(lpv.gpu.scales.x);
   auto rgb = [](glm::dvec3 v) { return api::Rgb{v.x, v.y, v.z}; };
   api::LpvStats stats;
-  stats.vpl_count = std::uint64_t(lpv.vpls_per_view_side) * lpv.vpls_per_view_side * lpv.rsm_views.size();
+  const std::uint64_t side = vpls_per_view_side(settings);
+  stats.vpl_count = side * side * lpv.rsm_views.size();
   stats.vpl_flux = rgb(volumes->flux_at(volumes->vpl_flux_offset(0), watts_per_unit));
   stats.intensity = lpv.gpu.scales.z;
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
@@ -487,7 +488,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, const Frame& 
       gbuffer.record(cmd, frame.gpu, *targets, frame_uniforms);
       break;
     case kInject:
-      inject.record(cmd, cascade, lpv_uniforms, *rsm_maps, frame.lpv.vpls_per_view_side, *volumes);
+      inject.record(cmd, cascade, lpv_uniforms, *rsm_maps, vpls_per_view_side(lpv), *volumes);
       break;
     case kGeometryVolume:
       geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, *targets,

@@ -89,9 +89,9 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::
   std::uint32_t flags = 0;
   if (lpv.occlusion) flags |= gpu::LPV_FLAG_OCCLUSION;
   if (lpv.occlusion && lpv.bounces > 1) flags |= gpu::LPV_FLAG_BOUNCES;
-  g.info = glm::uvec4(std::uint32_t(setup.cascades.size()), std::uint32_t(views.size()), flags, lpv.vpl_downsample);
+  g.info = glm::uvec4(std::uint32_t(setup.cascades.size()), 0u, flags, lpv.vpl_downsample);
   const std::uint32_t stride = std::max(1u, (image_height + kCameraSurfelRows / 2) / kCameraSurfelRows);
-  g.sizes = glm::uvec4(lpv.rsm_resolution, lpv.iterations, stride, 0u);
+  g.sizes = glm::uvec4(lpv.rsm_resolution, 0u, stride, 0u);
   g.scales = glm::vec4(flux_units_per_watt(vpl_flux_bound(lights, bounds)), kGeometryUnitsPerPotential,
                        lpv.intensity, lpv.injection_offset);
   const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);
@@ -104,7 +104,6 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::
     v.info = glm::uvec4(view.light, view.orthographic ? gpu::RSM_VIEW_ORTHOGRAPHIC : gpu::RSM_VIEW_PERSPECTIVE, 0u, 0u);
     setup.rsm_views.push_back(v);
   }
-  setup.vpls_per_view_side = lpv.rsm_resolution / lpv.vpl_downsample;
   return setup;
 }
 

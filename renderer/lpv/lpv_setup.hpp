@@ -40,8 +40,10 @@ struct LpvSetup {
   std::vector<CascadePlacement> cascades;
   gpu::GpuLpv gpu{};
   std::vector<gpu::GpuRsmView> rsm_views;
-  std::uint32_t vpls_per_view_side = 0;
 };
+
+// VPLs per side of each light view: the RSM's texels, merged vpl_downsample^2 at a time.
+inline std::uint32_t vpls_per_view_side(const api::Lpv& lpv) { return lpv.rsm_resolution / lpv.vpl_downsample; }
 
 // Everything the LPV passes of one frame need. `views` are the emitting lights' views.
 LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::vector<api::Light>& lights,

@@ -52,11 +52,9 @@ std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades) {
          cell_count(dims + 1u) * kCornerBytes;
 }
 
-LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c, std::uint32_t n)
+LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
     : dims(d),
       cascades(c),
-      iterations(n),
-      stats_stride(3 * (n + 2)),
       grids(volume(device, 3 * d.x, d.y, 2 * d.z, false)),
       accumulated{volume(device, d.x, d.y, c * d.z, true), volume(device, d.x, d.y, c * d.z, true),
                   volume(device, d.x, d.y, c * d.z, true)},
@@ -66,7 +64,6 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c,
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   injected = vkx::Buffer(device, cells * kInjectedBytesPerCell, storage, vkx::MemoryUse::gpu_only);
   corner_sums = vkx::Buffer(device, cell_count(d + 1u) * kCornerBytes, storage, vkx::MemoryUse::gpu_only);
-  flux_stats = vkx::Buffer(device, VkDeviceSize(stats_stride) * c * 8, storage, vkx::MemoryUse::readback);
   device.run_once([&](VkCommandBuffer cmd) {
     // The injection resolve clears its accumulators after reading them; they start cleared.
     vkCmdFillBuffer(cmd, injected.handle(), 0, VK_WHOLE_SIZE, 0);
@@ -79,6 +76,15 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c,
     for (const vkx::Image* image : {&accumulated[0], &accumulated[1], &accumulated[2], &faces})
       vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
   });
+}
+
+void LpvVolumes::set_iterations(const vkx::Device& device, std::uint32_t n) {
+  iterations = n;
+  stats_stride = 3 * (n + 2);
+  const VkDeviceSize bytes = VkDeviceSize(stats_stride) * cascades * 8;
+  if (!flux_stats || flux_stats.size() < bytes)
+    flux_stats = vkx::Buffer(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             vkx::MemoryUse::readback);
 }
 
 glm::dvec3 LpvVolumes::flux_at(std::uint32_t offset, double watts_per_unit) const {

@@ -36,7 +36,12 @@ struct RsmMaps {
 struct LpvVolumes {
   static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
-  LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades, std::uint32_t iterations);
+  LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades);
+
+  // Sizes the flux statistics for `iterations` per cascade. Only that small buffer depends on
+  // the iteration count, so a sweep over iterations keeps the grids; it is reallocated only
+  // when it must grow.
+  void set_iterations(const vkx::Device& device, std::uint32_t iterations);
 
   // Device memory the volumes of these sizes take.
   static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades);
@@ -52,8 +57,8 @@ struct LpvVolumes {
 
   glm::uvec3 dims;
   std::uint32_t cascades;
-  std::uint32_t iterations;
-  std::uint32_t stats_stride;
+  std::uint32_t iterations = 0;    // of the current frame (set_iterations)
+  std::uint32_t stats_stride = 0;  // int64 per cascade in flux_stats: 3 * (iterations + 2)
   vkx::Buffer injected;  // int64[12] per cell: fixed-point SH of the injected VPLs
   vkx::Buffer corner_sums;  // int64[LPV_GV_WORDS] per corner and source: geometry volume sums
   vkx::Buffer flux_stats;  // int64 fixed-point fluxes, host-visible

@@ -6,10 +6,6 @@
 
 uint lpv_cell_index(uvec3 cell, uvec3 dims) { return cell.x + dims.x * (cell.y + dims.y * cell.z); }
 
-uvec3 lpv_cell_of_index(uint index, uvec3 dims) {
-  return uvec3(index % dims.x, (index / dims.x) % dims.y, index / (dims.x * dims.y));
-}
-
 // Position in cell units of cascade g (0 at the minimum corner, dims at the maximum).
 vec3 lpv_grid_position(GpuLpvCascade g, vec3 p) { return (p - g.origin.xyz) / g.origin.w; }
 
