@@ -499,7 +499,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, const Frame& 
       break;
     case kShade:
       shade.record(cmd, frame.gpu, *targets,
-                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes});
+                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes, frame.plan.run[kRsm]});
       break;
     case kTonemap:
       tonemap.record(cmd, *targets, frame.request.output.tonemap,

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Prints the numbers the foundation is measured by, on the default device (lavapipe):
-#  - per-pass device ms and wall ms per frame for cornell-box at 512x512 (median of 20 frames),
+#  - per-pass device ms and wall ms per frame for cornell-box at 512x512 with direct light
+#    only (median of 20 frames; scripts/bench-lpv.sh measures the LPV),
 #  - PNG encoding of that frame,
-#  - cold start of lpv-render (process start to PNG on disk) with empty shader caches,
+#  - cold start of lpv-render (process start to PNG on disk, default request: LPV on) with
+#    empty shader caches,
 #    and warm start with Mesa's shader cache and the pipeline cache filled,
 # each start time the median of 7 runs. Builds first if needed.
 set -euo pipefail
@@ -24,8 +26,8 @@ time_run() {  # prints the wall ms of one lpv-render run; env assignments first
   awk -v a="$start" -v b="$end" 'BEGIN {printf "%.1f\n", b - a}'
 }
 
-echo "== cornell-box 512x512, median of 20 frames"
-echo '{"scene": "cornell-box", "output": {"width": 512, "height": 512}, "repeat": 20}' >frame.json
+echo "== cornell-box 512x512, direct light only (lpv off), median of 20 frames"
+echo '{"scene": "cornell-box", "output": {"width": 512, "height": 512}, "lpv": {"enabled": false}, "repeat": 20}' >frame.json
 "$bin" frame.json -o frame.png --stats stats.json 2>&1 | sed 's/^/  /'
 
 echo "== start to PNG on disk (median of $runs runs)"

@@ -10,6 +10,10 @@
 
 layout(local_size_x = SHADE_GROUP_X, local_size_y = SHADE_GROUP_Y) in;
 
+// Specialised to false for frames without LPV: lavapipe runs both sides of a branch under a
+// lane mask, so the indirect-light code would cost every pixel even when no grid exists.
+layout(constant_id = 0) const bool WITH_INDIRECT = true;
+
 layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2D g_position;
 layout(set = 0, binding = 2, rgba16f) uniform readonly image2D g_normal;
@@ -143,12 +147,12 @@ void main() {
     float depth = dot(p - frame.camera_position.xyz, frame.camera_forward.xyz);
     value = vec3(clamp((depth - frame.depth_range.x) / (frame.depth_range.y - frame.depth_range.x), 0.0, 1.0));
   } else if (view == VIEW_LPV) {
-    value = lpv_cell_view(p) * frame.exposure.x;
+    value = WITH_INDIRECT ? lpv_cell_view(p) * frame.exposure.x : vec3(0.0);
   } else {
     vec3 e = vec3(0.0);
     if (view != VIEW_INDIRECT)
       for (uint i = 0u; i < frame.size_view.w; ++i) e += irradiance(lights[i], p, n);
-    if (view != VIEW_DIRECT && lpv.info.x > 0u) e += lpv.scales.z * indirect_irradiance(p, n);
+    if (WITH_INDIRECT && view != VIEW_DIRECT) e += lpv.scales.z * indirect_irradiance(p, n);
     vec3 emitted = view == VIEW_INDIRECT ? vec3(0.0) : materials[material].emissive.rgb;
     value = (albedo / PI * e + emitted) * frame.exposure.x;
   }

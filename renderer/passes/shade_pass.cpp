@@ -13,7 +13,10 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const vkx::PipelineLayoutDesc layout = vkx::compute_layout(
       {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, sampled, sampled, sampled});
-  pipeline_ = vkx::Pipeline(device, layout, spirv_shade_comp);
+  const std::uint32_t with_indirect[] = {VK_TRUE};
+  const std::uint32_t direct_only[] = {VK_FALSE};
+  with_indirect_ = vkx::Pipeline(device, layout, spirv_shade_comp, with_indirect);
+  direct_only_ = vkx::Pipeline(device, layout, spirv_shade_comp, direct_only);
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
   grid_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR);
 }
@@ -23,7 +26,8 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
   const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  vkx::DescriptorWriter(pipeline_.descriptor_set())
+  const vkx::Pipeline& pipeline = in.indirect ? with_indirect_ : direct_only_;
+  vkx::DescriptorWriter(pipeline.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.frame.handle())
       .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.position.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
@@ -39,7 +43,7 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
       .image(12, sampled, in.volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL, grid_sampler_.handle())
       .apply(device_.handle());
 
-  pipeline_.bind(cmd);
+  pipeline.bind(cmd);
   vkCmdDispatch(cmd, (targets.width + gpu::SHADE_GROUP_X - 1) / gpu::SHADE_GROUP_X,
                 (targets.height + gpu::SHADE_GROUP_Y - 1) / gpu::SHADE_GROUP_Y, 1);
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,

@@ -15,7 +15,8 @@ struct ShadeInputs {
   const vkx::Buffer& shadow_views;  // mat4[] per atlas layer
   const ShadowAtlas& atlas;
   const vkx::Buffer& lpv;          // gpu::GpuLpv (cascade count 0: no indirect light)
-  const LpvVolumes& volumes;       // the cascades' accumulated SH (not read when there are none)
+  const LpvVolumes& volumes;       // the cascades' accumulated SH (not read without indirect light)
+  bool indirect;                   // the LPV ran: shade its indirect light
 };
 
 class ShadePass {
@@ -27,7 +28,8 @@ class ShadePass {
 
  private:
   const vkx::Device& device_;
-  vkx::Pipeline pipeline_;
+  vkx::Pipeline with_indirect_;
+  vkx::Pipeline direct_only_;  // the same shader specialised without the LPV lookups
   vkx::Sampler shadow_sampler_;  // depth compare with bilinear 2x2 PCF
   vkx::Sampler grid_sampler_;    // trilinear, clamped to the edge
 };

@@ -61,16 +61,23 @@ void Pipeline::create_layout(const PipelineLayoutDesc& desc) {
   VK_CHECK(vkCreatePipelineLayout(device_, &layout_ci, nullptr, &layout_));
 }
 
-Pipeline::Pipeline(const Device& device, const PipelineLayoutDesc& layout, std::span<const std::uint32_t> compute_spirv)
+Pipeline::Pipeline(const Device& device, const PipelineLayoutDesc& layout, std::span<const std::uint32_t> compute_spirv,
+                   std::span<const std::uint32_t> specialization)
     : device_(device.handle()), bind_point_(VK_PIPELINE_BIND_POINT_COMPUTE) {
   try {
     create_layout(layout);
     ModuleGuard guard{device_, {create_module(device_, compute_spirv)}};
+    std::vector<VkSpecializationMapEntry> entries;
+    for (std::uint32_t i = 0; i < specialization.size(); ++i)
+      entries.push_back({i, i * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+    const VkSpecializationInfo spec{std::uint32_t(entries.size()), entries.data(), specialization.size_bytes(),
+                                    specialization.data()};
     VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     ci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
     ci.stage.module = guard.modules[0];
     ci.stage.pName = "main";
+    ci.stage.pSpecializationInfo = specialization.empty() ? nullptr : &spec;
     ci.layout = layout_;
     VK_CHECK(vkCreateComputePipelines(device_, device.pipeline_cache(), 1, &ci, nullptr, &pipeline_));
   } catch (...) {

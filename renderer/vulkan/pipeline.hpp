@@ -40,7 +40,9 @@ struct GraphicsPipelineDesc {
 class Pipeline {
  public:
   Pipeline() = default;
-  Pipeline(const Device& device, const PipelineLayoutDesc& layout, std::span<const std::uint32_t> compute_spirv);
+  // `specialization[i]` is the value of the shader's constant_id i (32-bit: uint, int, bool).
+  Pipeline(const Device& device, const PipelineLayoutDesc& layout, std::span<const std::uint32_t> compute_spirv,
+           std::span<const std::uint32_t> specialization = {});
   Pipeline(const Device& device, const PipelineLayoutDesc& layout, const GraphicsPipelineDesc& graphics);
   ~Pipeline();
   Pipeline(Pipeline&& other) noexcept { *this = std::move(other); }

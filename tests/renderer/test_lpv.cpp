@@ -200,6 +200,15 @@ TEST_F(CornellLpv, TurningLpvOffMakesFinalEqualDirect) {
       EXPECT_EQ(pass.reason, "lpv disabled");
     }
   EXPECT_NE(render(api::View::final_).linear.pixels, off.linear.pixels);
+  // Without LPV the shading is specialised without the grid lookups: its views show nothing.
+  for (const api::View view : {api::View::indirect, api::View::lpv}) {
+    const auto none = render(view, false);
+    for (std::size_t i = 0; i < none.linear.pixels.size(); i += 4)
+      ASSERT_EQ(glm::vec3(none.linear.pixels[i], none.linear.pixels[i + 1], none.linear.pixels[i + 2]), glm::vec3(0.0f))
+          << api::to_string(view) << " pixel " << i / 4;
+  }
+  const glm::vec3 cells = at(render(api::View::lpv), {0.0f, 0.0f, 0.2f});
+  EXPECT_GT(cells.r + cells.g + cells.b, 0.0f) << "with LPV the lpv view shows the grid";
 }
 
 }  // namespace
