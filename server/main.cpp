@@ -9,12 +9,15 @@
 #include <nlohmann/json.hpp>
 
 #include <pthread.h>
+#include <sys/socket.h>
 #include <signal.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -24,6 +27,12 @@ namespace {
 
 constexpr int kExitFailure = 1;
 constexpr int kExitUsage = 2;
+
+// Connections the kernel may hold before the server accepts them. Debian's httplib listens
+// with a backlog of 5: a burst of clients then overflows the accept queue, the handshakes
+// that overflow stall in retransmits, and httplib closes such a connection unanswered when
+// its request arrives later than the keep-alive timeout. (The kernel caps this at somaxconn.)
+constexpr int kListenBacklog = 1024;
 
 vkx::DeviceOptions device_options(const server::ServerOptions& options) {
   vkx::DeviceOptions device = vkx::DeviceOptions::from_environment();
@@ -124,11 +133,22 @@ int run(int argc, char** argv) {
   http.set_tcp_nodelay(true);  // the headers and body go out in separate writes
   http.set_keep_alive_max_count(1000);
   http.set_keep_alive_timeout(2);  // also how long shutdown may wait for an idle connection
+  int listening_socket = -1;
+  http.set_socket_options([&listening_socket](socket_t socket) {
+    httplib::default_socket_options(socket);
+    listening_socket = socket;  // the last socket bind_to_port tried is the one it kept
+  });
 
   const int port = options.port == 0 ? http.bind_to_any_port(options.host)
                                      : (http.bind_to_port(options.host, options.port) ? options.port : -1);
   if (port < 0) {
     std::fprintf(stderr, "lpv-server: cannot listen on %s:%d\n", options.host.c_str(), options.port);
+    listening_over = true;
+    queue.shutdown();
+    return kExitFailure;
+  }
+  if (::listen(listening_socket, kListenBacklog) != 0) {  // on a listening socket: a new backlog
+    std::fprintf(stderr, "lpv-server: cannot set the listen backlog: %s\n", std::strerror(errno));
     listening_over = true;
     queue.shutdown();
     return kExitFailure;
