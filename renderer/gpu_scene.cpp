@@ -18,6 +18,8 @@ GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene) 
   return g;
 }
 
+std::uint64_t GpuScene::bytes() const { return vertices.size() + indices.size() + materials.size(); }
+
 void GpuScene::bind_geometry(VkCommandBuffer cmd) const {
   const VkDeviceSize offset = 0;
   const VkBuffer vb = vertices.handle();

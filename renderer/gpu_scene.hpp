@@ -17,6 +17,9 @@ struct GpuScene {
 
   static GpuScene upload(const vkx::Device& device, const scene::Scene& scene);
 
+  // Device memory held.
+  std::uint64_t bytes() const;
+
   // Binds the vertex and index buffers for drawing.
   void bind_geometry(VkCommandBuffer cmd) const;
 };

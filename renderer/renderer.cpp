@@ -16,12 +16,12 @@
 #include "renderer/passes/shadow_pass.hpp"
 #include "renderer/passes/tonemap_pass.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
+#include "renderer/scene_cache.hpp"
 #include "renderer/vulkan/vk_check.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <optional>
 
 namespace renderer {
@@ -137,7 +137,7 @@ unsigned readback_for(const api::Output& output) {
 }
 
 struct Renderer::Impl {
-  explicit Impl(const vkx::Device& device)
+  Impl(const vkx::Device& device, RendererOptions options)
       : device(device),
         shadow(device),
         rsm(device),
@@ -147,7 +147,9 @@ struct Renderer::Impl {
         propagate(device),
         shade(device),
         tonemap(device),
-        timer(device) {
+        timer(device),
+        scene_source(std::move(options.scenes)),
+        scenes(options.scene_cache_bytes) {
     VkCommandPoolCreateInfo pool_ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_ci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool_ci.queueFamilyIndex = device.queue_family();
@@ -173,11 +175,8 @@ struct Renderer::Impl {
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandBuffer commands = VK_NULL_HANDLE;
 
-  struct ResidentScene {
-    scene::Scene scene;
-    GpuScene gpu;
-  };
-  std::map<std::string, ResidentScene> builtin_scenes;  // uploaded on first use
+  SceneSource scene_source;
+  SceneCache scenes;
   std::optional<FrameTargets> targets;
   std::optional<ShadowAtlas> atlas;
   std::optional<RsmMaps> rsm_maps;
@@ -195,39 +194,46 @@ struct Renderer::Impl {
   };
 
   RenderResult render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
-                      unsigned readback, double upload_ms);
+                      unsigned readback, double load_ms, double upload_ms);
   void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
   void record_pass(Pass pass, std::uint32_t cascade, const Frame& frame);
   api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv) const;
   LpvSnapshot lpv_snapshot(const LpvSetup& lpv) const;
 };
 
-Renderer::Renderer(const vkx::Device& device) : device_(device), impl_(std::make_unique<Impl>(device)) {}
+Renderer::Renderer(const vkx::Device& device, RendererOptions options)
+    : device_(device), impl_(std::make_unique<Impl>(device, std::move(options))) {}
 Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const api::RenderRequest& request, unsigned readback) {
-  auto it = impl_->builtin_scenes.find(request.scene);
-  double upload_ms = 0.0;
-  if (it == impl_->builtin_scenes.end()) {
-    std::optional<scene::Scene> made = scene::make_builtin_scene(request.scene);
-    if (!made) {
-      std::string names;
-      for (const auto& info : scene::builtin_scenes()) names += (names.empty() ? "" : ", ") + info.name;
-      throw api::RequestError("scene", "unknown scene '" + request.scene + "'; built-in scenes: " + names);
-    }
-    const auto start = Clock::now();
-    GpuScene gpu = GpuScene::upload(device_, *made);
-    upload_ms = ms_since(start);
-    it = impl_->builtin_scenes.emplace(request.scene, Impl::ResidentScene{std::move(*made), std::move(gpu)}).first;
+  if (const ResidentScene* resident = impl_->scenes.find(request.scene))
+    return impl_->render(resident->scene, resident->gpu, request, readback, 0.0, 0.0);
+  const auto load_start = Clock::now();
+  std::optional<scene::Scene> loaded = scene::make_builtin_scene(request.scene);
+  if (!loaded && impl_->scene_source) loaded = impl_->scene_source(request.scene);
+  if (!loaded) {
+    std::string names;
+    for (const auto& info : scene::builtin_scenes()) names += (names.empty() ? "" : ", ") + info.name;
+    throw api::RequestError("scene", "unknown scene '" + request.scene + "'; built-in scenes: " + names);
   }
-  return impl_->render(it->second.scene, it->second.gpu, request, readback, upload_ms);
+  const double load_ms = ms_since(load_start);
+  const auto upload_start = Clock::now();
+  GpuScene gpu = GpuScene::upload(device_, *loaded);
+  const double upload_ms = ms_since(upload_start);
+  const std::uint64_t bytes = loaded->memory_bytes() + gpu.bytes();
+  const ResidentScene& resident = impl_->scenes.insert({request.scene, std::move(*loaded), std::move(gpu), bytes});
+  return impl_->render(resident.scene, resident.gpu, request, readback, load_ms, upload_ms);
 }
 
 RenderResult Renderer::render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback) {
   const auto start = Clock::now();
   GpuScene gpu = GpuScene::upload(device_, scene);
-  return impl_->render(scene, gpu, request, readback, ms_since(start));
+  return impl_->render(scene, gpu, request, readback, 0.0, ms_since(start));
 }
+
+void Renderer::forget_scene(const std::string& name) { impl_->scenes.erase(name); }
+
+SceneCacheStats Renderer::scene_cache() const { return {impl_->scenes.size(), impl_->scenes.bytes()}; }
 
 // Frame targets, shadow maps, RSMs and grids of the sizes the plan needs: checked against
 // their budgets first, kept when the sizes did not change, freed before reallocating.
@@ -280,7 +286,7 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
 }
 
 RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
-                                    unsigned readback, double upload_ms) {
+                                    unsigned readback, double load_ms, double upload_ms) {
   const auto setup_start = Clock::now();
   const api::Output& out = request.output;
   const std::vector<api::Light> lights = resolve_lights(scene, request);
@@ -378,6 +384,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     stats.passes.push_back(std::move(ps));
   }
   stats.gpu_ms = api::TimeSummary::of(total_gpu_ms);
+  stats.cpu_ms["scene_load"] = api::TimeSummary::of({load_ms});
   stats.cpu_ms["scene_upload"] = api::TimeSummary::of({upload_ms});
   stats.cpu_ms["setup"] = api::TimeSummary::of({setup_ms});
   stats.cpu_ms["record"] = api::TimeSummary::of(record_ms);
@@ -388,6 +395,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.driver = device.info().driver;
   if (plan.run[kRsm]) stats.lpv = lpv_stats(request.lpv, lpv_setup);
   if (plan.run[kRsm] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup);
+  stats.warnings = scene.warnings;
   if (request.lpv.intensity != 1.0f && needs_indirect_light(out.view))
     stats.warnings.push_back("lpv.intensity is " + std::to_string(request.lpv.intensity) +
                              ": the indirect light is scaled and no longer physically based");

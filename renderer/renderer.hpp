@@ -11,7 +11,11 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
+#include <functional>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace renderer {
@@ -50,20 +54,41 @@ struct RenderResult {
   api::RenderStats stats;
 };
 
+// Finds the scenes that are not built in (uploaded scenes, by id): nullopt for a name it does
+// not know. It may throw scene::LoadError. Called on the rendering thread, on a cache miss.
+using SceneSource = std::function<std::optional<scene::Scene>(const std::string& name)>;
+
+struct RendererOptions {
+  SceneSource scenes;  // empty: built-in scenes only
+  // Host and device memory of the scenes kept resident between requests; the least recently
+  // used are evicted beyond it (the scene being rendered always stays).
+  std::uint64_t scene_cache_bytes = 1ull << 30;
+};
+
+struct SceneCacheStats {
+  std::size_t scenes = 0;
+  std::uint64_t bytes = 0;
+};
+
 class Renderer {
  public:
-  explicit Renderer(const vkx::Device& device);
+  explicit Renderer(const vkx::Device& device, RendererOptions options = {});
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Renders the built-in scene the request names; throws api::RequestError for an unknown
-  // scene or a request that does not fit the scene.
+  // Renders the scene the request names (built in, or from the scene source); throws
+  // api::RequestError for an unknown scene or a request that does not fit the scene, and
+  // scene::LoadError when the source cannot load it.
   RenderResult render(const api::RenderRequest& request, unsigned readback);
   RenderResult render(const api::RenderRequest& request) { return render(request, readback_for(request.output)); }
 
   // Renders a scene given by the caller, uploaded for this call (request.scene is ignored).
   RenderResult render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback);
+
+  // Drops a resident scene (one that was deleted), so the next request asks the source again.
+  void forget_scene(const std::string& name);
+  SceneCacheStats scene_cache() const;
 
  private:
   struct Impl;

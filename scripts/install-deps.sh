@@ -15,8 +15,12 @@ PACKAGES=(
   libglm-dev libtinygltf-dev libcpp-httplib-dev nlohmann-json3-dev
   # image I/O: fast deflate for PNG encoding, stb for decoding in tests, tinyexr for EXR
   libdeflate-dev libstb-dev libtinyexr-dev zlib1g-dev
+  # content hashes (SHA-256) of uploaded scenes
+  libssl-dev
   # tests and benchmarks; curl for the README's examples and scripts/bench-server.sh
   libgtest-dev libbenchmark-dev curl
+  # real and deliberately broken glTF files; clang for the sanitizer build and libFuzzer
+  assimp-testmodels clang libclang-rt-dev
 )
 
 missing=()

@@ -17,4 +17,11 @@ void Scene::update_bounds() {
   bounds = {lo, hi};
 }
 
+std::size_t Scene::memory_bytes() const {
+  std::size_t bytes = vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t) +
+                      materials.size() * sizeof(Material) + draws.size() * sizeof(Draw);
+  for (const Texture& t : textures) bytes += t.rgba.size();
+  return bytes;
+}
+
 }  // namespace scene

@@ -20,10 +20,30 @@ struct Vertex {
 };
 static_assert(sizeof(Vertex) == 32, "Vertex is uploaded as-is");
 
+// An albedo texture as stored in the file: 8-bit sRGB-encoded RGBA, decoded to linear by
+// the sampler. Mip levels are made at upload.
+struct Texture {
+  enum class Wrap { repeat, clamp_to_edge, mirrored_repeat };
+  enum class Filter { nearest, linear };
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<std::uint8_t> rgba;  // width * height * 4, rows top to bottom
+  Wrap wrap_u = Wrap::repeat;
+  Wrap wrap_v = Wrap::repeat;
+  Filter mag_filter = Filter::linear;
+  Filter min_filter = Filter::linear;
+  bool mipmaps = true;            // minification reads the mip chain
+  Filter mip_filter = Filter::linear;
+};
+
 struct Material {
   std::string name;
   glm::vec3 base_color{0.8f};  // linear albedo (Lambertian reflectance), each channel in [0, 1]
   glm::vec3 emissive{0.0f};    // emitted radiance, W/(m^2 sr)
+  // Index into Scene::textures, or -1. The albedo is base_color times the texture's
+  // linear RGB at the vertex uv (which the loader takes from the texture's texcoord set).
+  std::int32_t base_color_texture = -1;
+  bool double_sided = false;  // emissive surfaces emit from both sides
 };
 
 // A run of triangles sharing one material.
@@ -45,13 +65,18 @@ struct Scene {
   std::vector<Vertex> vertices;
   std::vector<std::uint32_t> indices;
   std::vector<Material> materials;
+  std::vector<Texture> textures;
   std::vector<Draw> draws;
   std::vector<api::Light> lights;
   api::Camera camera;  // the default camera
   Bounds bounds;       // of the geometry; recompute with update_bounds() after edits
+  // What the loader ignored (unsupported optional features); every render's stats repeat them.
+  std::vector<std::string> warnings;
 
   void update_bounds();
   std::size_t triangle_count() const { return indices.size() / 3; }
+  // Host memory the scene holds: vertices, indices and texels.
+  std::size_t memory_bytes() const;
 };
 
 }  // namespace scene
