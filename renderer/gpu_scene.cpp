@@ -4,21 +4,25 @@
 
 namespace renderer {
 
-GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene) {
+GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, const TextureSetLayout& texture_layout) {
   std::vector<gpu::GpuMaterial> materials;
   for (const scene::Material& m : scene.materials)
-    materials.push_back({glm::vec4(m.base_color, 1.0f), glm::vec4(m.emissive, 0.0f)});
+    materials.push_back({glm::vec4(m.base_color, 1.0f), glm::vec4(m.emissive, 0.0f),
+                         glm::uvec4(m.double_sided ? 1u : 0u, 0u, 0u, 0u)});
 
   GpuScene g;
   g.vertices = vkx::upload_buffer(device, std::as_bytes(std::span(scene.vertices)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   g.indices = vkx::upload_buffer(device, std::as_bytes(std::span(scene.indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   g.materials = vkx::upload_buffer(device, std::as_bytes(std::span(materials)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  g.textures = MaterialTextures(device, scene, texture_layout);
   g.index_count = static_cast<std::uint32_t>(scene.indices.size());
   g.draws = scene.draws;
   return g;
 }
 
-std::uint64_t GpuScene::bytes() const { return vertices.size() + indices.size() + materials.size(); }
+std::uint64_t GpuScene::bytes() const {
+  return vertices.size() + indices.size() + materials.size() + textures.bytes();
+}
 
 void GpuScene::bind_geometry(VkCommandBuffer cmd) const {
   const VkDeviceSize offset = 0;

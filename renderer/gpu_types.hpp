@@ -5,7 +5,7 @@
 
 namespace gpu {
 static_assert(sizeof(GpuLight) == 80);
-static_assert(sizeof(GpuMaterial) == 32);
+static_assert(sizeof(GpuMaterial) == 48);
 static_assert(sizeof(GpuFrame) == 144);
 static_assert(sizeof(GpuTonemapParams) == 16);
 static_assert(sizeof(GpuLpvCascade) == 32);

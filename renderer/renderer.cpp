@@ -139,9 +139,10 @@ unsigned readback_for(const api::Output& output) {
 struct Renderer::Impl {
   Impl(const vkx::Device& device, RendererOptions options)
       : device(device),
+        texture_layout(device),
         shadow(device),
-        rsm(device),
-        gbuffer(device),
+        rsm(device, texture_layout),
+        gbuffer(device, texture_layout),
         inject(device),
         geometry(device),
         propagate(device),
@@ -163,6 +164,7 @@ struct Renderer::Impl {
   ~Impl() { vkDestroyCommandPool(device.handle(), pool, nullptr); }
 
   const vkx::Device& device;
+  TextureSetLayout texture_layout;
   ShadowPass shadow;
   RsmPass rsm;
   GBufferPass gbuffer;
@@ -218,7 +220,7 @@ RenderResult Renderer::render(const api::RenderRequest& request, unsigned readba
   }
   const double load_ms = ms_since(load_start);
   const auto upload_start = Clock::now();
-  GpuScene gpu = GpuScene::upload(device_, *loaded);
+  GpuScene gpu = GpuScene::upload(device_, *loaded, impl_->texture_layout);
   const double upload_ms = ms_since(upload_start);
   const std::uint64_t bytes = loaded->memory_bytes() + gpu.bytes();
   const ResidentScene& resident = impl_->scenes.insert({request.scene, std::move(*loaded), std::move(gpu), bytes});
@@ -227,7 +229,7 @@ RenderResult Renderer::render(const api::RenderRequest& request, unsigned readba
 
 RenderResult Renderer::render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback) {
   const auto start = Clock::now();
-  GpuScene gpu = GpuScene::upload(device_, scene);
+  GpuScene gpu = GpuScene::upload(device_, scene, impl_->texture_layout);
   return impl_->render(scene, gpu, request, readback, 0.0, ms_since(start));
 }
 

@@ -9,10 +9,12 @@
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_uv;
 
 layout(std430, set = 0, binding = 0) readonly buffer Views { GpuRsmView views[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 1, binding = 0) uniform sampler2D base_color_texture;  // white when untextured
 layout(push_constant) uniform Draw { uint view; uint material; } draw;
 
 layout(location = 0) out vec4 out_position;  // xyz: world position; w: 1 (0 = nothing seen)
@@ -31,8 +33,9 @@ float albedo_code(vec3 albedo) {
 void main() {
   GpuRsmView view = views[draw.view];
   GpuLight light = lights[view.info.x];
+  GpuMaterial material = materials[draw.material];
   vec3 n = normalize(in_normal);
-  vec3 albedo = materials[draw.material].base_color.rgb;
+  vec3 albedo = material.base_color.rgb * texture(base_color_texture, in_uv).rgb;
   float texel = view.axis.w;  // texel side: at unit distance (perspective) or in metres
 
   vec3 to_light;
@@ -50,6 +53,7 @@ void main() {
     projected_area = solid_angle * dist2;
     incident = intensity * solid_angle;
   }
+  if (material.flags.x != 0u && dot(n, to_light) < 0.0) n = -n;  // double-sided: the lit side reflects
   float cos_surface = dot(n, to_light);
   out_position = vec4(in_world, 1.0);
   out_normal = vec4(n, albedo_code(albedo));

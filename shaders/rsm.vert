@@ -5,15 +5,18 @@
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec2 in_uv;
 
 layout(std430, set = 0, binding = 0) readonly buffer Views { GpuRsmView views[]; };
 layout(push_constant) uniform Draw { uint view; uint material; } draw;
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
+layout(location = 2) out vec2 out_uv;
 
 void main() {
   out_world = in_position;
   out_normal = in_normal;
+  out_uv = in_uv;
   gl_Position = views[draw.view].view_proj * vec4(in_position, 1.0);
 }

@@ -8,10 +8,11 @@
 
 namespace renderer {
 
-GBufferPass::GBufferPass(const vkx::Device& device) : device_(device) {
+GBufferPass::GBufferPass(const vkx::Device& device, const TextureSetLayout& textures) : device_(device) {
   vkx::PipelineLayoutDesc layout;
   layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT),
                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
+  layout.draw_sets = {textures.handle()};
   layout.push_constant_bytes = sizeof(std::uint32_t);
   layout.push_constant_stages = VK_SHADER_STAGE_FRAGMENT_BIT;
   vkx::GraphicsPipelineDesc g;
@@ -23,9 +24,10 @@ GBufferPass::GBufferPass(const vkx::Device& device) : device_(device) {
                      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv)}}};
   g.color_formats = {FrameTargets::kPositionFormat, FrameTargets::kNormalFormat, FrameTargets::kAlbedoFormat};
   g.depth_format = FrameTargets::kDepthFormat;
-  g.cull_mode = VK_CULL_MODE_BACK_BIT;
+  // No culling: the fragment shader drops the back faces of one-sided materials only.
   // Counter-clockwise front faces as in glTF: the projection's Y flip and Vulkan's
   // Y-down framebuffer cancel, so the winding arrives as it was authored.
+  g.cull_mode = VK_CULL_MODE_NONE;
   g.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   pipeline_ = vkx::Pipeline(device, layout, g);
 }
@@ -44,10 +46,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, const Frame
   if (scene.index_count > 0) {
     pipeline_.bind(cmd);
     scene.bind_geometry(cmd);
-    for (const scene::Draw& draw : scene.draws) {
-      pipeline_.push(cmd, draw.material);
-      vkCmdDrawIndexed(cmd, draw.index_count, 1, draw.first_index, 0, 0);
-    }
+    scene.draw_all(cmd, pipeline_.layout(), [&](const scene::Draw& draw) { pipeline_.push(cmd, draw.material); });
   }
   device_.cmd_end_rendering(cmd);
 

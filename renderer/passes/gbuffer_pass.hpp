@@ -1,5 +1,6 @@
-// The camera's G-buffer: world position with material id, normal and albedo per pixel.
-// Back faces are culled: scene surfaces are one-sided.
+// The camera's G-buffer: world position with material id, normal and albedo (base colour
+// times texture) per pixel. Back faces of one-sided materials are dropped; those of
+// double-sided ones are drawn with their normal flipped.
 #pragma once
 
 #include "renderer/frame_targets.hpp"
@@ -10,7 +11,7 @@ namespace renderer {
 
 class GBufferPass {
  public:
-  explicit GBufferPass(const vkx::Device& device);
+  GBufferPass(const vkx::Device& device, const TextureSetLayout& textures);
 
   // `frame` holds a gpu::GpuFrame. Leaves the colour targets ready for compute sampling.
   void record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets, const vkx::Buffer& frame) const;

@@ -16,12 +16,13 @@ struct DrawConstants {
 
 }  // namespace
 
-RsmPass::RsmPass(const vkx::Device& device) : device_(device) {
+RsmPass::RsmPass(const vkx::Device& device, const TextureSetLayout& textures) : device_(device) {
   const VkShaderStageFlags vs_fs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   vkx::PipelineLayoutDesc layout;
   layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vs_fs),
                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT),
                      vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
+  layout.draw_sets = {textures.handle()};
   layout.push_constant_bytes = sizeof(DrawConstants);
   layout.push_constant_stages = vs_fs;
   vkx::GraphicsPipelineDesc g;
@@ -29,7 +30,8 @@ RsmPass::RsmPass(const vkx::Device& device) : device_(device) {
   g.fragment_spirv = spirv_rsm_frag;
   g.vertex_input = {sizeof(scene::Vertex),
                     {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
-                     {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)}}};
+                     {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
+                     {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv)}}};
   g.color_formats = {RsmMaps::kPositionFormat, RsmMaps::kNormalFormat, RsmMaps::kFluxFormat};
   g.depth_format = RsmMaps::kDepthFormat;
   g.cull_mode = VK_CULL_MODE_NONE;  // the first surface the light meets, whichever way it faces
@@ -53,10 +55,8 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
     if (scene.index_count > 0) {
       pipeline_.bind(cmd);
       scene.bind_geometry(cmd);
-      for (const scene::Draw& draw : scene.draws) {
-        pipeline_.push(cmd, DrawConstants{layer, draw.material});
-        vkCmdDrawIndexed(cmd, draw.index_count, 1, draw.first_index, 0, 0);
-      }
+      scene.draw_all(cmd, pipeline_.layout(),
+                     [&](const scene::Draw& draw) { pipeline_.push(cmd, DrawConstants{layer, draw.material}); });
     }
     device_.cmd_end_rendering(cmd);
   }

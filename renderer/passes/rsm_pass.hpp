@@ -10,7 +10,7 @@ namespace renderer {
 
 class RsmPass {
  public:
-  explicit RsmPass(const vkx::Device& device);
+  RsmPass(const vkx::Device& device, const TextureSetLayout& textures);
 
   // Renders every view and leaves the maps in GENERAL layout for the compute passes.
   // `views` holds gpu::GpuRsmView[maps.layers]; `lights` gpu::GpuLight[].

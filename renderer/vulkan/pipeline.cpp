@@ -53,9 +53,11 @@ void Pipeline::create_layout(const PipelineLayoutDesc& desc) {
 
   VkPushConstantRange range{desc.push_constant_stages, 0, desc.push_constant_bytes};
   push_stages_ = desc.push_constant_stages;
+  std::vector<VkDescriptorSetLayout> sets{set_layout_};
+  sets.insert(sets.end(), desc.draw_sets.begin(), desc.draw_sets.end());
   VkPipelineLayoutCreateInfo layout_ci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  layout_ci.setLayoutCount = 1;
-  layout_ci.pSetLayouts = &set_layout_;
+  layout_ci.setLayoutCount = std::uint32_t(sets.size());
+  layout_ci.pSetLayouts = sets.data();
   layout_ci.pushConstantRangeCount = desc.push_constant_bytes ? 1 : 0;
   layout_ci.pPushConstantRanges = &range;
   VK_CHECK(vkCreatePipelineLayout(device_, &layout_ci, nullptr, &layout_));

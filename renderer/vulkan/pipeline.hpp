@@ -16,7 +16,9 @@
 namespace vkx {
 
 struct PipelineLayoutDesc {
-  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  std::vector<VkDescriptorSetLayoutBinding> bindings;  // set 0, owned by the pipeline
+  // Sets 1, 2, ...: layouts owned by the caller, bound per draw by the caller.
+  std::vector<VkDescriptorSetLayout> draw_sets;
   std::uint32_t push_constant_bytes = 0;
   VkShaderStageFlags push_constant_stages = 0;
 };

@@ -100,7 +100,7 @@ Image::Image(const Device& device, const ImageDesc& desc) : device_(device.handl
   ci.imageType = desc.volume ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
   ci.format = desc.format;
   ci.extent = {desc.width, desc.height, desc.volume ? desc.depth : 1};
-  ci.mipLevels = 1;
+  ci.mipLevels = desc.mip_levels;
   ci.arrayLayers = desc.layers;
   ci.samples = VK_SAMPLE_COUNT_1_BIT;
   ci.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -118,7 +118,7 @@ Image::Image(const Device& device, const ImageDesc& desc) : device_(device.handl
       vci.image = image_;
       vci.viewType = type;
       vci.format = desc.format;
-      vci.subresourceRange = {desc.aspect, 0, 1, first, count};
+      vci.subresourceRange = {desc.aspect, 0, desc.mip_levels, first, count};
       VkImageView view = VK_NULL_HANDLE;
       VK_CHECK(vkCreateImageView(device_, &vci, nullptr, &view));
       return view;
@@ -190,6 +190,10 @@ Sampler::Sampler(const Device& device, VkFilter filter, bool compare) : device_(
   VK_CHECK(vkCreateSampler(device_, &ci, nullptr, &sampler_));
 }
 
+Sampler::Sampler(const Device& device, const VkSamplerCreateInfo& create_info) : device_(device.handle()) {
+  VK_CHECK(vkCreateSampler(device_, &create_info, nullptr, &sampler_));
+}
+
 Sampler::~Sampler() {
   if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
 }
@@ -215,7 +219,7 @@ void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkI
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image.handle();
-  barrier.subresourceRange = {image.desc().aspect, 0, 1, 0, image.desc().layers};
+  barrier.subresourceRange = {image.desc().aspect, 0, image.desc().mip_levels, 0, image.desc().layers};
   vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 

@@ -56,6 +56,7 @@ struct ImageDesc {
   bool array = false;  // view() is a 2D array view even with one layer (for sampler2DArray)
   std::uint32_t depth = 1;  // with volume: a 3D image of this depth (layers stays 1)
   bool volume = false;
+  std::uint32_t mip_levels = 1;  // view() covers all of them
 };
 
 class Image {
@@ -83,11 +84,12 @@ class Image {
 };
 
 // A sampler clamped to the edge, filtering nearest or linear; depth-comparing (for hardware
-// PCF) with `compare`.
+// PCF) with `compare`. Or any sampler, from its create info.
 class Sampler {
  public:
   Sampler() = default;
   Sampler(const Device& device, VkFilter filter, bool compare = false);
+  Sampler(const Device& device, const VkSamplerCreateInfo& create_info);
   ~Sampler();
   Sampler(Sampler&& other) noexcept { *this = std::move(other); }
   Sampler& operator=(Sampler&& other) noexcept;

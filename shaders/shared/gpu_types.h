@@ -48,8 +48,9 @@ struct GpuLight {
 };
 
 struct GpuMaterial {
-  vec4 base_color;  // rgb: linear albedo
+  vec4 base_color;  // rgb: linear albedo (times the texture's, read through set 1)
   vec4 emissive;    // rgb: emitted radiance
+  uvec4 flags;      // x: 1 = double-sided (back faces drawn, with the normal flipped)
 };
 
 struct GpuFrame {

@@ -1,0 +1,58 @@
+#include "renderer/texture_mips.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace renderer {
+namespace {
+
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float linear_to_srgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
+
+const std::array<float, 256>& decode_table() {
+  static const std::array<float, 256> table = [] {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i) t[std::size_t(i)] = srgb_to_linear(float(i) / 255.0f);
+    return t;
+  }();
+  return table;
+}
+
+std::uint8_t to_byte(float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+MipLevel half(const MipLevel& src) {
+  const auto& decode = decode_table();
+  MipLevel dst;
+  dst.width = std::max(1u, src.width / 2);
+  dst.height = std::max(1u, src.height / 2);
+  dst.rgba.resize(std::size_t(dst.width) * dst.height * 4);
+  for (std::uint32_t y = 0; y < dst.height; ++y) {
+    for (std::uint32_t x = 0; x < dst.width; ++x) {
+      float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      for (std::uint32_t dy = 0; dy < 2; ++dy) {
+        for (std::uint32_t dx = 0; dx < 2; ++dx) {
+          const std::uint32_t sx = std::min(2 * x + dx, src.width - 1), sy = std::min(2 * y + dy, src.height - 1);
+          const std::uint8_t* p = &src.rgba[(std::size_t(sy) * src.width + sx) * 4];
+          for (int c = 0; c < 3; ++c) sum[c] += decode[p[c]];
+          sum[3] += float(p[3]) / 255.0f;
+        }
+      }
+      std::uint8_t* q = &dst.rgba[(std::size_t(y) * dst.width + x) * 4];
+      for (int c = 0; c < 3; ++c) q[c] = to_byte(linear_to_srgb(sum[c] * 0.25f));
+      q[3] = to_byte(sum[3] * 0.25f);
+    }
+  }
+  return dst;
+}
+
+}  // namespace
+
+std::vector<MipLevel> srgb_mip_chain(std::uint32_t width, std::uint32_t height, const std::vector<std::uint8_t>& rgba) {
+  std::vector<MipLevel> levels;
+  levels.push_back({width, height, rgba});
+  while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(half(levels.back()));
+  return levels;
+}
+
+}  // namespace renderer

@@ -1,0 +1,20 @@
+// Mip chains of albedo textures, made once when a scene is uploaded.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace renderer {
+
+struct MipLevel {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<std::uint8_t> rgba;
+};
+
+// Level 0 is the texture itself; each next level halves both sides (down to 1) with a 2x2
+// box filter. Colour is averaged in linear light and re-encoded as sRGB: averaging the
+// encoded values would darken every minified texture. Alpha is averaged as stored.
+std::vector<MipLevel> srgb_mip_chain(std::uint32_t width, std::uint32_t height, const std::vector<std::uint8_t>& rgba);
+
+}  // namespace renderer
