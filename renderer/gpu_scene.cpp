@@ -1,6 +1,7 @@
 #include "renderer/gpu_scene.hpp"
 
 #include "renderer/gpu_types.hpp"
+#include "renderer/lpv/emitter_surfels.hpp"
 
 namespace renderer {
 
@@ -15,13 +16,17 @@ GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, 
   g.indices = vkx::upload_buffer(device, std::as_bytes(std::span(scene.indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   g.materials = vkx::upload_buffer(device, std::as_bytes(std::span(materials)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   g.textures = MaterialTextures(device, scene, texture_layout);
+  const std::vector<gpu::GpuEmitter> surfels = emitter_surfels(scene);
+  g.emitters = vkx::upload_buffer(device, std::as_bytes(std::span(surfels)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  g.emitter_count = std::uint32_t(surfels.size());
+  g.emitted_flux = emitted_flux_bound(surfels);
   g.index_count = static_cast<std::uint32_t>(scene.indices.size());
   g.draws = scene.draws;
   return g;
 }
 
 std::uint64_t GpuScene::bytes() const {
-  return vertices.size() + indices.size() + materials.size() + textures.bytes();
+  return vertices.size() + indices.size() + materials.size() + emitters.size() + textures.bytes();
 }
 
 void GpuScene::bind_geometry(VkCommandBuffer cmd) const {

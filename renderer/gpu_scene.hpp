@@ -14,6 +14,9 @@ struct GpuScene {
   vkx::Buffer indices;    // uint32
   vkx::Buffer materials;  // gpu::GpuMaterial
   MaterialTextures textures;
+  vkx::Buffer emitters;  // gpu::GpuEmitter: the emissive surfaces as VPLs
+  std::uint32_t emitter_count = 0;
+  double emitted_flux = 0.0;  // the largest channel of their summed flux (W)
   std::uint32_t index_count = 0;
   std::vector<scene::Draw> draws;
 

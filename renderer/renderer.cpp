@@ -80,7 +80,8 @@ struct FramePlan {
   std::string reason[kPassCount];
 };
 
-FramePlan plan_frame(const api::RenderRequest& request, const LightSetup& lights, unsigned readback) {
+FramePlan plan_frame(const api::RenderRequest& request, const LightSetup& lights, const GpuScene& scene,
+                     unsigned readback) {
   FramePlan plan;
   const api::View view = request.output.view;
   const std::string view_name = "view '" + api::to_string(view) + "'";
@@ -101,11 +102,12 @@ FramePlan plan_frame(const api::RenderRequest& request, const LightSetup& lights
     lpv_reason = view_name + " needs no indirect light";
   else if (!request.lpv.enabled)
     lpv_reason = "lpv disabled";
-  else if (lights.views.empty())
-    lpv_reason = "no light emits";
+  else if (lights.views.empty() && scene.emitter_count == 0)
+    lpv_reason = "no light emits and no surface is emissive";
   else if (request.lpv.intensity == 0.0f && view != api::View::lpv)
     lpv_reason = "lpv.intensity is 0";
   for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.reason[p] = lpv_reason;
+  if (lpv_reason.empty() && lights.views.empty()) plan.reason[kRsm] = "no light emits (emissive surfaces inject directly)";
   if (lpv_reason.empty() && !request.lpv.occlusion) plan.reason[kGeometryVolume] = "occlusion disabled";
   if (lpv_reason.empty() && request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
   for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.run[p] = plan.reason[p].empty();
@@ -199,7 +201,7 @@ struct Renderer::Impl {
                       unsigned readback, double load_ms, double upload_ms);
   void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
   void record_pass(Pass pass, std::uint32_t cascade, const Frame& frame);
-  api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv) const;
+  api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran, std::uint32_t emitters) const;
   LpvSnapshot lpv_snapshot(const LpvSetup& lpv) const;
 };
 
@@ -249,8 +251,9 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
                                                       std::to_string(shadow_res) + "^2 need " + mib(atlas_bytes) +
                                                       ", over the budget of " + mib(kShadowAtlasBudgetBytes) +
                                                       ": lower the resolution");
-  const bool lpv = plan.run[kRsm];
-  const std::uint32_t rsm_layers = std::uint32_t(lights.views.size());
+  const bool lpv = plan.run[kInject];
+  // Without a light to draw them the RSMs are not read, but the passes still bind a set.
+  const std::uint32_t rsm_layers = std::max<std::uint32_t>(1, std::uint32_t(lights.views.size()));
   const std::uint64_t rsm_bytes =
       std::uint64_t(request.lpv.rsm_resolution) * request.lpv.rsm_resolution * rsm_layers * RsmMaps::kBytesPerTexel;
   if (lpv && rsm_bytes > kRsmBudgetBytes)
@@ -295,9 +298,9 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const api::Camera camera_request = request.camera.value_or(scene.camera);
   const CameraSetup camera = setup_camera(camera_request, scene.bounds, float(out.width) / float(out.height));
   const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows);
-  const FramePlan plan = plan_frame(request, light_setup, readback);
+  const FramePlan plan = plan_frame(request, light_setup, gpu, readback);
   allocate(plan, request, light_setup);
-  const LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, camera,
+  const LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
                                        camera_request.fov_y_deg, out.height);
 
   gpu::GpuFrame frame{};
@@ -307,7 +310,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   frame.depth_range = glm::vec4(camera.near, camera.far, 0.0f, 0.0f);
   frame.exposure = glm::vec4(std::exp2(out.exposure), 0.0f, 0.0f, 0.0f);
   frame.size_view = glm::uvec4(out.width, out.height, gpu_view(out.view), std::uint32_t(light_setup.lights.size()));
-  const gpu::GpuLpv lpv_params = plan.run[kRsm] ? lpv_setup.gpu : no_lpv();
+  const gpu::GpuLpv lpv_params = plan.run[kInject] ? lpv_setup.gpu : no_lpv();
   const auto light_bytes = light_setup.lights.size() * sizeof(gpu::GpuLight);
   const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);
   const auto rsm_view_bytes = lpv_setup.rsm_views.size() * sizeof(gpu::GpuRsmView);
@@ -395,25 +398,26 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.wall_ms = api::TimeSummary::of(wall_ms);
   stats.device = device.info().name;
   stats.driver = device.info().driver;
-  if (plan.run[kRsm]) stats.lpv = lpv_stats(request.lpv, lpv_setup);
-  if (plan.run[kRsm] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup);
+  if (plan.run[kInject]) stats.lpv = lpv_stats(request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count);
+  if (plan.run[kInject] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup);
   stats.warnings = scene.warnings;
   if (request.lpv.intensity != 1.0f && needs_indirect_light(out.view))
     stats.warnings.push_back("lpv.intensity is " + std::to_string(request.lpv.intensity) +
                              ": the indirect light is scaled and no longer physically based");
-  if (request.lpv.bounces > 1 && !request.lpv.occlusion && plan.run[kRsm])
+  if (request.lpv.bounces > 1 && !request.lpv.occlusion && plan.run[kInject])
     stats.warnings.push_back("lpv.bounces > 1 needs occlusion: light is reflected where the geometry volume blocks it");
   return result;
 }
 
 // The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats.
-api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup& lpv) const {
+api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
+                                        std::uint32_t emitters) const {
   volumes->flux_stats.invalidate();
   const double watts_per_unit = 1.0 / double(lpv.gpu.scales.x);
   auto rgb = [](glm::dvec3 v) { return api::Rgb{v.x, v.y, v.z}; };
   api::LpvStats stats;
   const std::uint64_t side = vpls_per_view_side(settings);
-  stats.vpl_count = side * side * lpv.rsm_views.size();
+  stats.vpl_count = (rsm_ran ? side * side * lpv.rsm_views.size() : 0) + emitters;
   stats.vpl_flux = rgb(volumes->flux_at(volumes->vpl_flux_offset(0), watts_per_unit));
   stats.intensity = lpv.gpu.scales.z;
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
@@ -498,18 +502,20 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, const Frame& 
       gbuffer.record(cmd, frame.gpu, *targets, frame_uniforms);
       break;
     case kInject:
-      inject.record(cmd, cascade, lpv_uniforms, *rsm_maps, vpls_per_view_side(lpv), *volumes);
+      inject.record(cmd, cascade, lpv_uniforms, frame.plan.run[kRsm] ? &*rsm_maps : nullptr, vpls_per_view_side(lpv),
+                    frame.gpu, *volumes);
       break;
     case kGeometryVolume:
       geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, *targets,
-                      {lpv.occlusion_from_rsm, lpv.occlusion_from_camera, frame.lpv.gpu.sizes.z}, *volumes);
+                      {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.z},
+                      *volumes);
       break;
     case kPropagate:
       propagate.record(cmd, cascade, lpv.iterations, lpv_uniforms, *volumes);
       break;
     case kShade:
       shade.record(cmd, frame.gpu, *targets,
-                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes, frame.plan.run[kRsm]});
+                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes, frame.plan.run[kInject]});
       break;
     case kTonemap:
       tonemap.record(cmd, *targets, frame.request.output.tonemap,

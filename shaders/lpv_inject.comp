@@ -1,8 +1,6 @@
 #version 450
 // Injection: every RSM texel (or block of vpl_downsample^2 texels merged into one brighter VPL)
-// is a virtual point light of intensity I(w) = Phi / pi * max(0, <n, w>), whose integral over
-// the sphere is Phi. It is moved injection_offset cells along its normal (against
-// self-illumination) and added as SH into the cell it lands in, in fixed point.
+// is a virtual point light (shared/lpv_inject_vpl.glsl).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
@@ -20,6 +18,7 @@ layout(std430, set = 0, binding = 5) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_offset; } push;
 
 #include "shared/lpv_grid_flux.glsl"
+#include "shared/lpv_inject_vpl.glsl"
 
 void main() {
   uint block = lpv.info.w;
@@ -48,17 +47,5 @@ void main() {
   add_grid_flux(flux, push.stats_offset, lpv.scales.x);
 
   if (weight <= 0.0 || dot(normal, normal) == 0.0) return;
-  position /= weight;
-  normal = normalize(normal);
-  GpuLpvCascade g = lpv.cascades[push.cascade];
-  vec3 q = lpv_grid_position(g, position + normal * (lpv.scales.w * g.origin.w));
-  if (lpv_inside_distance(g, q) < 0.0) return;
-  uvec3 cell = min(uvec3(q), g.dims.xyz - 1u);
-  uint base = lpv_cell_index(cell, g.dims.xyz) * 12u;
-  vec4 lobe = sh_cosine_lobe(normal) / LPV_PI;
-  for (uint c = 0u; c < 3u; ++c) {
-    if (flux[c] == 0.0) continue;
-    vec4 sh = lobe * flux[c];
-    for (uint k = 0u; k < 4u; ++k) atomicAdd(injected[base + c * 4u + k], to_fixed(sh[k], lpv.scales.x));
-  }
+  inject_vpl(lpv.cascades[push.cascade], position / weight, normalize(normal), flux);
 }

@@ -76,8 +76,8 @@ float flux_units_per_watt(double flux_bound) {
 }
 
 LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::vector<api::Light>& lights,
-                   const std::vector<LightView>& views, const CameraSetup& camera, float camera_fov_y_deg,
-                   std::uint32_t image_height) {
+                   const std::vector<LightView>& views, double emitted_flux, const CameraSetup& camera,
+                   float camera_fov_y_deg, std::uint32_t image_height) {
   LpvSetup setup;
   setup.cascades = place_cascades(lpv, bounds, camera.position + camera.forward * glm::length(bounds.center() - camera.position));
   gpu::GpuLpv& g = setup.gpu;
@@ -92,7 +92,7 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::
   g.info = glm::uvec4(std::uint32_t(setup.cascades.size()), 0u, flags, lpv.vpl_downsample);
   const std::uint32_t stride = std::max(1u, (image_height + kCameraSurfelRows / 2) / kCameraSurfelRows);
   g.sizes = glm::uvec4(lpv.rsm_resolution, 0u, stride, 0u);
-  g.scales = glm::vec4(flux_units_per_watt(vpl_flux_bound(lights, bounds)), kGeometryUnitsPerPotential,
+  g.scales = glm::vec4(flux_units_per_watt(vpl_flux_bound(lights, bounds) + emitted_flux), kGeometryUnitsPerPotential,
                        lpv.intensity, lpv.injection_offset);
   const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);
   g.camera = glm::vec4(pixel_footprint, camera.position);

@@ -45,10 +45,11 @@ struct LpvSetup {
 // VPLs per side of each light view: the RSM's texels, merged vpl_downsample^2 at a time.
 inline std::uint32_t vpls_per_view_side(const api::Lpv& lpv) { return lpv.rsm_resolution / lpv.vpl_downsample; }
 
-// Everything the LPV passes of one frame need. `views` are the emitting lights' views.
+// Everything the LPV passes of one frame need. `views` are the emitting lights' views;
+// `emitted_flux` is the largest channel of the emissive surfaces' flux (W), injected too.
 LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::vector<api::Light>& lights,
-                   const std::vector<LightView>& views, const CameraSetup& camera, float camera_fov_y_deg,
-                   std::uint32_t image_height);
+                   const std::vector<LightView>& views, double emitted_flux, const CameraSetup& camera,
+                   float camera_fov_y_deg, std::uint32_t image_height);
 
 // The GpuLpv of a frame without indirect light (the shading reads no grid).
 gpu::GpuLpv no_lpv();

@@ -2,6 +2,7 @@
 
 #include "renderer/gpu_types.hpp"
 #include "shaders/lpv_inject.comp.h"
+#include "shaders/lpv_inject_emitters.comp.h"
 #include "shaders/lpv_inject_resolve.comp.h"
 
 namespace renderer {
@@ -10,6 +11,12 @@ namespace {
 struct CascadeConstants {
   std::uint32_t cascade;
   std::uint32_t stats_offset;
+};
+
+struct EmitterConstants {
+  std::uint32_t cascade;
+  std::uint32_t stats_offset;
+  std::uint32_t count;
 };
 
 }  // namespace
@@ -21,22 +28,32 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
   const std::uint32_t push = sizeof(CascadeConstants);
   inject_ = vkx::Pipeline(device, vkx::compute_layout({uniform, image, image, image, buffer, buffer}, push),
                           spirv_lpv_inject_comp);
+  emitters_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, buffer, buffer}, sizeof(EmitterConstants)),
+                            spirv_lpv_inject_emitters_comp);
   resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image, image, image, image, buffer}, push),
                            spirv_lpv_inject_resolve_comp);
 }
 
-void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
-                           std::uint32_t vpls_per_side, const LpvVolumes& volumes) const {
+void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
+                           std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes) const {
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  vkx::DescriptorWriter(inject_.descriptor_set())
-      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .image(1, image, maps.position.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(2, image, maps.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(3, image, maps.flux.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .buffer(4, storage, volumes.injected.handle())
-      .buffer(5, storage, volumes.flux_stats.handle())
-      .apply(device_.handle());
+  if (maps)
+    vkx::DescriptorWriter(inject_.descriptor_set())
+        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+        .image(1, image, maps->position.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .image(2, image, maps->normal.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .image(3, image, maps->flux.view(), VK_IMAGE_LAYOUT_GENERAL)
+        .buffer(4, storage, volumes.injected.handle())
+        .buffer(5, storage, volumes.flux_stats.handle())
+        .apply(device_.handle());
+  if (scene.emitter_count)
+    vkx::DescriptorWriter(emitters_.descriptor_set())
+        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+        .buffer(1, storage, scene.emitters.handle())
+        .buffer(2, storage, volumes.injected.handle())
+        .buffer(3, storage, volumes.flux_stats.handle())
+        .apply(device_.handle());
   vkx::DescriptorWriter(resolve_.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .buffer(1, storage, volumes.injected.handle())
@@ -52,9 +69,18 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
     vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   }
-  inject_.bind(cmd);
-  inject_.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_offset(cascade)});
-  vkCmdDispatch(cmd, vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP), vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP), maps.layers);
+  if (maps) {
+    inject_.bind(cmd);
+    inject_.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_offset(cascade)});
+    const std::uint32_t groups = vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP);
+    vkCmdDispatch(cmd, groups, groups, maps->layers);
+  }
+  if (scene.emitter_count) {  // after the RSM's VPLs: both add to the same integer sums
+    if (maps) vkx::compute_barrier(cmd);
+    emitters_.bind(cmd);
+    emitters_.push(cmd, EmitterConstants{cascade, volumes.vpl_flux_offset(cascade), scene.emitter_count});
+    vkCmdDispatch(cmd, vkx::group_count(scene.emitter_count, gpu::LPV_EMITTER_GROUP), 1, 1);
+  }
   vkx::compute_barrier(cmd);
   resolve_.bind(cmd);
   resolve_.push(cmd, CascadeConstants{cascade, volumes.grid_flux_offset(cascade, 0)});

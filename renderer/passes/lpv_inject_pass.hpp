@@ -1,8 +1,10 @@
-// LPV injection for one cascade: the RSM texels, merged into VPLs, become fixed-point SH in
-// the cell each lands in (lpv_inject.comp); the sums then become the float grid propagation
-// starts from and the first term of the accumulated light (lpv_inject_resolve.comp).
+// LPV injection for one cascade: the RSM texels, merged into VPLs, and the emissive surfels
+// become fixed-point SH in the cell each lands in (lpv_inject.comp, lpv_inject_emitters.comp);
+// the sums then become the float grid propagation starts from and the first term of the
+// accumulated light (lpv_inject_resolve.comp).
 #pragma once
 
+#include "renderer/gpu_scene.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
@@ -12,13 +14,15 @@ class LpvInjectPass {
  public:
   explicit LpvInjectPass(const vkx::Device& device);
 
-  // `params` is the frame's gpu::GpuLpv. The first cascade also clears the flux statistics.
-  void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
-              std::uint32_t vpls_per_side, const LpvVolumes& volumes) const;
+  // `params` is the frame's gpu::GpuLpv; `maps` are the frame's RSMs, nullptr when no light
+  // drew any. The first cascade also clears the flux statistics.
+  void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
+              std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes) const;
 
  private:
   const vkx::Device& device_;
   vkx::Pipeline inject_;
+  vkx::Pipeline emitters_;
   vkx::Pipeline resolve_;
 };
 

@@ -53,6 +53,13 @@ struct GpuMaterial {
   uvec4 flags;      // x: 1 = double-sided (back faces drawn, with the normal flipped)
 };
 
+// A piece of an emissive surface, injected into the LPV as a VPL of its emitted flux.
+struct GpuEmitter {
+  vec4 position;  // xyz: world position
+  vec4 normal;    // xyz: unit normal of the emitting side
+  vec4 flux;      // rgb: emitted flux, pi * radiance * area (W)
+};
+
 struct GpuFrame {
   mat4 view_proj;         // world -> clip of the camera (Vulkan clip space, Y down)
   vec4 camera_position;   // xyz
@@ -67,6 +74,7 @@ struct GpuFrame {
 LPV_CONST LPV_MAX_CASCADES = 4u;
 LPV_CONST LPV_GROUP = 4u;         // grid passes: work groups of 4 x 4 x 4 cells
 LPV_CONST LPV_VPL_GROUP = 8u;     // injection: work groups of 8 x 8 VPLs
+LPV_CONST LPV_EMITTER_GROUP = 64u;  // injection of emissive surfels: work groups of 64
 LPV_CONST LPV_GV_SOURCES = 2u;    // geometry volume sources: RSM surfels, camera surfels
 LPV_CONST LPV_GV_SOURCE_RSM = 0u;
 LPV_CONST LPV_GV_SOURCE_CAMERA = 1u;
