@@ -38,7 +38,8 @@ bool decode_image(tinygltf::Image* image, const int index, std::string* err, std
                   const unsigned char* bytes, int size, void* user) {
   auto& state = *static_cast<ParseState*>(user);
   const std::size_t budget = state.options.limits.max_texels - std::min(state.options.limits.max_texels, state.texels);
-  DecodedImage decoded = decode_rgba8({bytes, std::size_t(std::max(size, 0))}, budget);
+  DecodedImage decoded =
+      decode_rgba8({bytes, std::size_t(std::max(size, 0))}, budget, state.options.limits.max_texture_side);
   const std::string what = "image " + std::to_string(index);
   if (decoded.over_limit) {
     state.too_complex = what + ": " + decoded.error + " (over all images)";

@@ -34,6 +34,7 @@ struct LoadLimits {
   std::size_t max_triangles = 8'000'000;
   std::size_t max_vertices = 16'000'000;
   std::size_t max_texels = 64u << 20;   // over all textures (4 bytes each)
+  std::uint32_t max_texture_side = 16384;  // what desktop Vulkan devices sample
   std::size_t max_node_instances = 1'000'000;  // meshes placed by the node hierarchy
 };
 

@@ -11,7 +11,7 @@
 
 namespace scene {
 
-DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, std::size_t max_texels) {
+DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, std::size_t max_texels, std::uint32_t max_side) {
   DecodedImage image;
   if (bytes.empty() || bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
     image.error = bytes.empty() ? "no image data" : "image data over 2 GiB";
@@ -23,10 +23,14 @@ DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, std::size_t max_t
     image.error = std::string("not a decodable image (") + stbi_failure_reason() + ")";
     return image;
   }
-  if (w <= 0 || h <= 0 || std::size_t(w) * std::size_t(h) > max_texels) {
+  if (w <= 0 || h <= 0) {
+    image.error = "an image without texels";
+    return image;
+  }
+  if (std::uint32_t(w) > max_side || std::uint32_t(h) > max_side || std::size_t(w) * std::size_t(h) > max_texels) {
     image.over_limit = true;
     image.error = std::to_string(w) + "x" + std::to_string(h) + " texels, over the limit of " +
-                  std::to_string(max_texels);
+                  std::to_string(max_texels) + " texels and " + std::to_string(max_side) + " per side";
     return image;
   }
   stbi_uc* pixels = stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 4);

@@ -15,9 +15,9 @@ struct DecodedImage {
   std::uint32_t height = 0;
   std::vector<std::uint8_t> rgba;  // rows top to bottom
   std::string error;               // set when nothing was decoded
-  bool over_limit = false;         // not decoded because it has more than max_texels texels
+  bool over_limit = false;         // not decoded: more than max_texels texels, or a side over max_side
 };
 
-DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, std::size_t max_texels);
+DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, std::size_t max_texels, std::uint32_t max_side);
 
 }  // namespace scene

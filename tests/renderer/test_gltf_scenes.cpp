@@ -3,6 +3,7 @@
 // camera is the one a request without a camera gets.
 #include "gltf_builder.hpp"
 #include "gpu_test.hpp"
+#include "api/request_error.hpp"
 #include "renderer/scene/gltf_loader.hpp"
 
 #include <gtest/gtest.h>
@@ -117,6 +118,35 @@ TEST_F(GltfScenes, TheFilesCameraIsTheDefault) {
   EXPECT_NEAR(float(p.y), 31.5f, 1.0f);
   const auto depth = gpu_test::renderer().render(scene, request(api::View::albedo), renderer::kReadbackLinear);
   EXPECT_GT(gpu_test::pixel(depth.linear, 32, 32).r, 0.7f) << "the white floor is under the image centre";
+}
+
+TEST_F(GltfScenes, SceneCacheLoadsOnceAndEvictsTheLeastRecentlyUsed) {
+  int loads = 0;
+  renderer::RendererOptions options;
+  options.scenes = [&](const std::string& name) -> std::optional<scene::Scene> {
+    if (name != "a" && name != "b") return std::nullopt;
+    ++loads;
+    return load(textured_wall_scene({255, 255, 255, 255}));
+  };
+  options.scene_cache_bytes = 1;  // room for the scene being rendered only
+  renderer::Renderer r(gpu_test::device(), options);
+  api::RenderRequest req = request(api::View::albedo);
+  req.scene = "a";
+  r.render(req);
+  r.render(req);
+  EXPECT_EQ(loads, 1) << "a resident scene is not loaded again";
+  EXPECT_EQ(r.scene_cache().scenes, 1u);
+  EXPECT_GT(r.scene_cache().bytes, 0u);
+  req.scene = "b";
+  r.render(req);
+  EXPECT_EQ(r.scene_cache().scenes, 1u) << "over budget: 'a' evicted";
+  req.scene = "a";
+  r.render(req);
+  EXPECT_EQ(loads, 3);
+  r.forget_scene("a");
+  EXPECT_EQ(r.scene_cache().scenes, 0u);
+  req.scene = "c";
+  EXPECT_THROW(r.render(req), api::RequestError);
 }
 
 }  // namespace
