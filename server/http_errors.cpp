@@ -27,7 +27,9 @@ void send_error(httplib::Response& response, const HttpError& error) {
   const nlohmann::json body = {
       {"error", {{"code", error.code}, {"message", error.message}, {"field", error.field}}}};
   response.status = error.status;
-  response.set_content(body.dump() + "\n", "application/json");
+  // Messages may quote what a client sent (a path), which need not be UTF-8.
+  response.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
+                       "application/json");
 }
 
 HttpError parse_error(const api::RequestError& error) {
@@ -44,7 +46,29 @@ HttpError render_error(const api::RequestError& error) {
 }
 
 HttpError unknown_scene(const std::string& name) {
-  return {404, "scene_not_found", "unknown scene '" + name + "'; built-in scenes: " + builtin_scene_names(), "scene"};
+  return {404, "scene_not_found",
+          "unknown scene '" + name + "'; built-in scenes: " + builtin_scene_names() +
+              ", or the id of an uploaded scene (GET /v1/scenes lists them)",
+          "scene"};
+}
+
+HttpError load_error(const scene::LoadError& error) {
+  switch (error.kind()) {
+    case scene::LoadError::Kind::invalid: return {422, "invalid_scene", error.what(), ""};
+    case scene::LoadError::Kind::unsupported: return {422, "unsupported_scene", error.what(), ""};
+    case scene::LoadError::Kind::too_complex: return {422, "scene_too_complex", error.what(), ""};
+  }
+  return {422, "invalid_scene", error.what(), ""};
+}
+
+HttpError payload_too_large(std::size_t limit_bytes, const std::string& flag) {
+  return {413, "payload_too_large",
+          "the request body is over this server's limit of " + std::to_string(limit_bytes) + " bytes (" + flag + ")",
+          ""};
+}
+
+HttpError builtin_scene_conflict(const std::string& name) {
+  return {409, "builtin_scene", "'" + name + "' is a built-in scene; only uploaded scenes can be deleted", ""};
 }
 
 HttpError error_for_status(int status, const httplib::Request& request) {

@@ -3,10 +3,12 @@
 #pragma once
 
 #include "api/request_error.hpp"
+#include "renderer/scene/gltf_loader.hpp"
 #include "server/limits.hpp"
 
 #include <httplib.h>
 
+#include <cstddef>
 #include <string>
 
 namespace server {
@@ -28,7 +30,14 @@ HttpError limit_error(const LimitExceeded& error);
 // The renderer refused a valid request: unknown scene 404, otherwise it does not fit
 // the scene or the device budgets: 422.
 HttpError render_error(const api::RequestError& error);
+// A body over `limit_bytes`, which `flag` sets: 413.
+HttpError payload_too_large(std::size_t limit_bytes, const std::string& flag);
+// Neither a built-in scene nor an uploaded one: 404, field "scene".
 HttpError unknown_scene(const std::string& name);
+// A scene file that does not load: 422 invalid_scene, unsupported_scene or scene_too_complex.
+HttpError load_error(const scene::LoadError& error);
+// Built-in scenes are part of the server: deleting one is 409.
+HttpError builtin_scene_conflict(const std::string& name);
 
 // For statuses httplib sets itself (no route, body too large, unparsable HTTP) and
 // any other status that reached the client without a body.

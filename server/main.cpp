@@ -3,6 +3,7 @@
 #include "server/render_queue.hpp"
 #include "server/request_log.hpp"
 #include "server/routes.hpp"
+#include "server/scene_store.hpp"
 #include "server/server_options.hpp"
 
 #include <httplib.h>
@@ -107,6 +108,21 @@ void log_event(const std::string& event, nlohmann::json fields = nlohmann::json:
   server::write_log_line(fields);
 }
 
+// Uploaded scenes go to --data-dir/scenes; without a data dir they live in memory.
+server::SceneStore::Config scene_store_config(const server::ServerOptions& options) {
+  return {options.data_dir.empty() ? std::filesystem::path() : options.data_dir / "scenes", options.scene_limits};
+}
+
+void log_scene_store(const server::SceneStore& store) {
+  const server::SceneStore::Opened& opened = store.opened();
+  log_event("scene_store", {{"directory", store.directory().string()},
+                            {"in_memory", store.in_memory()},
+                            {"scenes", opened.scenes},
+                            {"removed_temporary", opened.removed_temporary},
+                            {"removed_unfinished", opened.removed_unfinished},
+                            {"skipped", opened.skipped}});
+}
+
 int run(int argc, char** argv) {
   const server::ServerOptions options =
       server::parse_server_options(argc, argv, [](const char* name) { return std::getenv(name); });
@@ -120,16 +136,19 @@ int run(int argc, char** argv) {
   std::atomic<bool> listening_over{false};
   std::atomic<int> exit_code{0};
   server::Metrics metrics;
-  server::RenderQueue queue({options.queue_capacity, options.render_workers, device_options(options)},
-                            [&](const std::string& message) {
-                              log_event("fatal", {{"message", message}});
-                              exit_code = kExitFailure;
-                              stop_server(http, listening_over);
-                            });
-  server::Service service{options, queue, metrics};
+  server::SceneStore scenes(scene_store_config(options));
+  server::RenderQueue queue(
+      {options.queue_capacity, options.render_workers, device_options(options), options.scene_cache_bytes}, scenes,
+      [&](const std::string& message) {
+        log_event("fatal", {{"message", message}});
+        exit_code = kExitFailure;
+        stop_server(http, listening_over);
+      });
+  server::Service service{options, queue, metrics, scenes};
   server::install_routes(http, service);
   http.new_task_queue = [n = options.http_threads] { return new httplib::ThreadPool(n); };
-  http.set_payload_max_length(options.max_body_bytes);
+  // One limit for every route: the largest. The routes that take a body hold it to their own.
+  http.set_payload_max_length(server::largest_body_bytes(options));
   http.set_tcp_nodelay(true);  // the headers and body go out in separate writes
   http.set_keep_alive_max_count(1000);
   http.set_keep_alive_timeout(2);  // also how long shutdown may wait for an idle connection
@@ -156,6 +175,7 @@ int run(int argc, char** argv) {
   // The first line: scripts and tests read the port from it.
   std::printf("lpv-server listening on %s\n", base_url(options.host, port).c_str());
   std::fflush(stdout);
+  log_scene_store(scenes);
   std::fprintf(stderr, "lpv-server: try  %s\n", example_curl(options, port).c_str());
 
   signals.start([&](int signal) {

@@ -81,7 +81,7 @@ void Metrics::count_render(const std::string& outcome) {
   ++renders_[outcome];
 }
 
-std::string Metrics::prometheus_text(const QueueGauges& queue) const {
+std::string Metrics::prometheus_text(const QueueGauges& queue, const StoreGauges& store) const {
   std::lock_guard lock(mutex_);
   std::string out;
   header(out, "lpv_http_requests_total", "counter", "HTTP requests answered, by route pattern, method and status.");
@@ -110,6 +110,18 @@ std::string Metrics::prometheus_text(const QueueGauges& queue) const {
   out += "lpv_renders_in_flight " + std::to_string(queue.in_flight) + "\n";
   header(out, "lpv_ready", "gauge", "1 when every render worker has its device ready.");
   out += std::string("lpv_ready ") + (queue.ready ? "1" : "0") + "\n";
+  header(out, "lpv_scene_cache_scenes", "gauge", "Scenes resident on a render worker's device, as of its last render.");
+  for (std::size_t i = 0; i < queue.scene_caches.size(); ++i)
+    out += "lpv_scene_cache_scenes{worker=\"" + std::to_string(i) + "\"} " +
+           std::to_string(queue.scene_caches[i].scenes) + "\n";
+  header(out, "lpv_scene_cache_bytes", "gauge", "Host and device memory of a render worker's resident scenes.");
+  for (std::size_t i = 0; i < queue.scene_caches.size(); ++i)
+    out += "lpv_scene_cache_bytes{worker=\"" + std::to_string(i) + "\"} " +
+           std::to_string(queue.scene_caches[i].bytes) + "\n";
+  header(out, "lpv_uploaded_scenes", "gauge", "Uploaded scenes the server stores.");
+  out += "lpv_uploaded_scenes " + std::to_string(store.scenes) + "\n";
+  header(out, "lpv_uploaded_scene_bytes", "gauge", "Size of the uploaded scenes' files.");
+  out += "lpv_uploaded_scene_bytes " + std::to_string(store.bytes) + "\n";
   return out;
 }
 

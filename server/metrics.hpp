@@ -25,12 +25,25 @@ class Histogram {
   std::uint64_t count_ = 0;
 };
 
+// One render worker's resident scenes, as of its last render.
+struct SceneCacheGauges {
+  std::size_t scenes = 0;
+  std::uint64_t bytes = 0;  // host and device memory
+};
+
 // What the render queue reports at scrape time.
 struct QueueGauges {
   std::size_t depth = 0;
   std::size_t capacity = 0;
   std::size_t in_flight = 0;
   bool ready = false;
+  std::vector<SceneCacheGauges> scene_caches;  // by worker index
+};
+
+// What the scene store holds at scrape time.
+struct StoreGauges {
+  std::size_t scenes = 0;
+  std::uint64_t bytes = 0;  // as uploaded
 };
 
 class Metrics {
@@ -43,7 +56,7 @@ class Metrics {
   // "deadline_exceeded", "client_gone"
   void count_render(const std::string& outcome);
 
-  std::string prometheus_text(const QueueGauges& queue) const;
+  std::string prometheus_text(const QueueGauges& queue, const StoreGauges& store) const;
 
  private:
   mutable std::mutex mutex_;

@@ -29,8 +29,8 @@ void warm_up(renderer::Renderer& renderer) {
 
 }  // namespace
 
-RenderQueue::RenderQueue(Config config, FatalHandler on_fatal)
-    : config_(std::move(config)), on_fatal_(std::move(on_fatal)) {
+RenderQueue::RenderQueue(Config config, const SceneStore& scenes, FatalHandler on_fatal)
+    : config_(std::move(config)), scenes_(scenes), on_fatal_(std::move(on_fatal)), scene_caches_(config_.workers) {
   for (std::size_t i = 0; i < config_.workers; ++i) workers_.emplace_back([this, i] { work(i); });
 }
 
@@ -85,7 +85,7 @@ bool RenderQueue::ready() const {
 
 QueueGauges RenderQueue::gauges() const {
   std::lock_guard lock(mutex_);
-  return {queue_.size(), config_.capacity, in_flight_, ready_workers_ == config_.workers && !stopping_};
+  return {queue_.size(), config_.capacity, in_flight_, ready_workers_ == config_.workers && !stopping_, scene_caches_};
 }
 
 std::optional<nlohmann::json> RenderQueue::device_report() const {
@@ -103,13 +103,21 @@ void RenderQueue::shutdown() {
     if (worker.joinable()) worker.join();
 }
 
+renderer::RenderResult RenderQueue::render(renderer::Renderer& renderer, const api::RenderRequest& request) const {
+  // A deleted scene may still be resident on this worker's device: dropped, so the render
+  // asks the store, which no longer has it, and answers "unknown scene".
+  if (is_scene_id(request.scene) && !scenes_.contains(request.scene)) renderer.forget_scene(request.scene);
+  return renderer.render(request);
+}
+
 void RenderQueue::work(std::size_t index) {
   // Declared in this order so the renderer is destroyed before its device.
   std::optional<vkx::Device> device;
   std::optional<renderer::Renderer> renderer;
   try {
     device.emplace(config_.device);
-    renderer.emplace(*device);
+    renderer.emplace(*device, renderer::RendererOptions{[this](const std::string& id) { return scenes_.load(id); },
+                                                        config_.scene_cache_bytes});
     warm_up(*renderer);
   } catch (const std::exception& e) {
     const std::string message = "render worker " + std::to_string(index) + ": " + e.what();
@@ -131,6 +139,8 @@ void RenderQueue::work(std::size_t index) {
   {
     std::lock_guard lock(mutex_);
     if (index == 0) device_report_ = server::device_report(device->info());
+    const renderer::SceneCacheStats cache = renderer->scene_cache();
+    scene_caches_[index] = {cache.scenes, cache.bytes};
     ++ready_workers_;
   }
 
@@ -155,12 +165,14 @@ void RenderQueue::work(std::size_t index) {
     std::optional<renderer::RenderResult> result;
     std::exception_ptr error;
     try {
-      result = renderer->render(job->request);
+      result = render(*renderer, job->request);
     } catch (...) {
       error = std::current_exception();
     }
+    const renderer::SceneCacheStats cache = renderer->scene_cache();
     {
       std::lock_guard lock(mutex_);
+      scene_caches_[index] = {cache.scenes, cache.bytes};
       --in_flight_;
       job->result = std::move(result);
       job->error = error;

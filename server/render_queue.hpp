@@ -2,13 +2,15 @@
 // Vulkan device and one renderer (neither is thread-safe) for its whole life, so renders
 // on one device are serialised; more workers mean more devices rendering in parallel.
 // A full queue refuses at once instead of piling up; a job whose deadline passed, or whose
-// client went away, before a worker took it never renders.
+// client went away, before a worker took it never renders. Uploaded scenes come from the
+// scene store, loaded by each worker's renderer when it first needs them.
 #pragma once
 
 #include "api/render_request.hpp"
 #include "renderer/renderer.hpp"
 #include "renderer/vulkan/device.hpp"
 #include "server/metrics.hpp"
+#include "server/scene_store.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -56,11 +58,13 @@ class RenderQueue {
     std::size_t capacity = 8;
     std::size_t workers = 1;
     vkx::DeviceOptions device;
+    std::uint64_t scene_cache_bytes = 1ull << 30;  // per worker
   };
   // Called from a worker thread when its device cannot be opened or warmed up.
   using FatalHandler = std::function<void(const std::string& message)>;
 
-  RenderQueue(Config config, FatalHandler on_fatal);
+  // `scenes` must outlive the queue.
+  RenderQueue(Config config, const SceneStore& scenes, FatalHandler on_fatal);
   ~RenderQueue();  // shutdown()
   RenderQueue(const RenderQueue&) = delete;
   RenderQueue& operator=(const RenderQueue&) = delete;
@@ -86,8 +90,10 @@ class RenderQueue {
  private:
   void work(std::size_t index);
   void withdraw(RenderJob& job);  // with mutex_ held
+  renderer::RenderResult render(renderer::Renderer& renderer, const api::RenderRequest& request) const;
 
   const Config config_;
+  const SceneStore& scenes_;
   const FatalHandler on_fatal_;
   mutable std::mutex mutex_;
   std::condition_variable work_available_;
@@ -97,6 +103,7 @@ class RenderQueue {
   std::size_t ready_workers_ = 0;
   bool stopping_ = false;
   std::optional<nlohmann::json> device_report_;
+  std::vector<SceneCacheGauges> scene_caches_;  // by worker
   std::vector<std::thread> workers_;
 };
 

@@ -9,14 +9,15 @@
 #include "server/request_log.hpp"
 #include "server/render_response.hpp"
 #include "server/scene_report.hpp"
+#include "server/utc_time.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
 #include <charconv>
-#include <ctime>
 #include <regex>
+#include <string_view>
 #include <vector>
 
 namespace server {
@@ -25,25 +26,29 @@ namespace {
 struct Route {
   const char* regex;    // what httplib matches
   const char* pattern;  // how docs and metrics name it
-  const char* method;   // the one method it answers; others get 405
+  const char* methods;  // the methods it answers, as Allow lists them; others get 405
 };
 
 constexpr std::array kRoutes = {
     Route{"/healthz", "/healthz", "GET"},
     Route{"/readyz", "/readyz", "GET"},
     Route{"/metrics", "/metrics", "GET"},
-    Route{"/v1/scenes", "/v1/scenes", "GET"},
-    Route{"/v1/scenes/([^/]+)", "/v1/scenes/{id}", "GET"},
+    Route{"/v1/scenes", "/v1/scenes", "GET, POST"},
+    Route{"/v1/scenes/([^/]+)", "/v1/scenes/{id}", "GET, DELETE"},
     Route{"/v1/device", "/v1/device", "GET"},
     Route{"/v1/render", "/v1/render", "POST"},
 };
 
+// The longest a scene's name may be; it is only ever shown.
+constexpr std::size_t kMaxSceneNameBytes = 200;
+
 // Retry-After for 503s: a render takes tens of milliseconds, so a second is ample.
 constexpr const char* kRetryAfterSeconds = "1";
 
-void send_json(httplib::Response& response, const nlohmann::json& body) {
-  response.status = 200;
-  response.set_content(body.dump(-1, ' ', true) + "\n", "application/json");
+void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200) {
+  response.status = status;
+  response.set_content(body.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace) + "\n",
+                       "application/json");
 }
 
 void send_unavailable(httplib::Response& response, const std::string& code, const std::string& message) {
@@ -51,17 +56,21 @@ void send_unavailable(httplib::Response& response, const std::string& code, cons
   response.set_header("Retry-After", kRetryAfterSeconds);
 }
 
-std::string utc_timestamp() {
-  const auto now = std::chrono::system_clock::now();
-  const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
-  const auto ms = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
-  std::tm utc{};
-  gmtime_r(&seconds, &utc);
-  char text[32];
-  std::strftime(text, sizeof(text), "%Y-%m-%dT%H:%M:%S", &utc);
-  char with_ms[40];
-  std::snprintf(with_ms, sizeof(with_ms), "%s.%03dZ", text, int(ms));
-  return with_ms;
+// httplib percent-decodes the path, which then need not be UTF-8, and JSON must be: the log
+// line percent-encodes every byte outside printable ASCII again.
+std::string loggable_path(const std::string& path) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  for (const unsigned char c : path) {
+    if (c >= 0x20 && c < 0x7f && c != '%') {
+      out += char(c);
+    } else {
+      out += '%';
+      out += kHex[c >> 4];
+      out += kHex[c & 0xf];
+    }
+  }
+  return out;
 }
 
 std::string known_method(const std::string& method) {
@@ -92,35 +101,49 @@ bool wants_json(const httplib::Request& request) {
   return request.get_header_value("Accept").find("application/json") != std::string::npos;
 }
 
+// Reads the body ourselves, up to `limit` bytes: httplib's payload limit is the largest of
+// all routes' (largest_body_bytes: scene uploads) and covers Content-Length but not a
+// chunked body. A body over `limit` is still read to its end, as httplib does past its own
+// limit, so the 413 comes after it and the connection stays usable; but a chunked one only
+// up to httplib's limit. Empty after answering 413, or 400 for a body that ended early (the
+// client went away).
+std::optional<std::string> read_body(const httplib::Request& request, httplib::Response& response,
+                                     const httplib::ContentReader& content, const ServerOptions& options,
+                                     std::size_t limit, const char* flag) {
+  std::string body;
+  std::size_t received = 0;
+  const bool complete = content([&](const char* data, std::size_t length) {
+    received += length;
+    if (received <= limit) body.append(data, length);
+    return received <= largest_body_bytes(options);
+  });
+  if (received > limit || response.status == 413) {
+    send_error(response, payload_too_large(limit, flag));
+    return std::nullopt;
+  }
+  if (!complete) {
+    send_error(response, error_for_status(400, request));
+    return std::nullopt;
+  }
+  return body;
+}
+
 void handle_render(const httplib::Request& request, httplib::Response& response,
                    const httplib::ContentReader& content, Service& service) {
-  // Read the body ourselves: httplib's payload limit covers Content-Length but not a
-  // chunked upload, which is cut off here as soon as it is too long.
-  std::string body;
-  bool too_large = false;
-  const bool complete = content([&](const char* data, std::size_t length) {
-    if (body.size() + length > service.options.max_body_bytes) {
-      too_large = true;
-      return false;
-    }
-    body.append(data, length);
-    return true;
-  });
-  if (!complete) {
-    send_error(response, error_for_status(too_large || response.status == 413 ? 413 : 400, request));
-    return;
-  }
+  const std::optional<std::string> body =
+      read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
+  if (!body) return;
 
   api::RenderRequest render_request;
   std::chrono::milliseconds deadline{};
   try {
-    render_request = api::parse_render_request(body);
+    render_request = api::parse_render_request(*body);
     deadline = deadline_for(request, service.options);
   } catch (const api::RequestError& e) {
     send_error(response, parse_error(e));
     return;
   }
-  if (!is_builtin_scene(render_request.scene)) {
+  if (!is_builtin_scene(render_request.scene) && !service.scenes.contains(render_request.scene)) {
     send_error(response, unknown_scene(render_request.scene));
     return;
   }
@@ -168,6 +191,10 @@ void handle_render(const httplib::Request& request, httplib::Response& response,
     } catch (const api::RequestError& e) {
       service.metrics.count_render("rejected");
       send_error(response, render_error(e));
+    } catch (const scene::LoadError& e) {
+      // A stored scene over limits lowered since it was uploaded.
+      service.metrics.count_render("rejected");
+      send_error(response, load_error(e));
     } catch (const std::exception& e) {
       service.metrics.count_render("failed");
       send_error(response, {500, "render_failed", e.what(), ""});
@@ -178,6 +205,87 @@ void handle_render(const httplib::Request& request, httplib::Response& response,
   for (const auto& pass : job->result->stats.passes)
     if (pass.ran) service.metrics.observe_pass(pass.name, pass.gpu_ms.median / 1000.0);
   send_render_result(response, *job->result, format, wants_json(request), job->queue_wait_ms);
+}
+
+// ?name=: shown in listings, so it must be printable text of a sane length; absent or empty: the id.
+std::string scene_name(const httplib::Request& request) {
+  const std::string name = request.get_param_value("name");
+  if (name.size() > kMaxSceneNameBytes)
+    throw api::RequestError("name", "must be at most " + std::to_string(kMaxSceneNameBytes) + " bytes");
+  if (std::any_of(name.begin(), name.end(), [](unsigned char c) { return c < 0x20 || c == 0x7f; }))
+    throw api::RequestError("name", "must not contain control characters");
+  try {
+    (void)nlohmann::json(name).dump();  // throws on invalid UTF-8
+  } catch (const nlohmann::json::exception&) {
+    throw api::RequestError("name", "must be UTF-8 text");
+  }
+  return name;
+}
+
+void handle_upload(const httplib::Request& request, httplib::Response& response,
+                   const httplib::ContentReader& content, Service& service) {
+  std::string name;
+  try {
+    name = scene_name(request);
+  } catch (const api::RequestError& e) {
+    send_error(response, parse_error(e));
+    return;
+  }
+  const std::optional<std::string> body =
+      read_body(request, response, content, service.options, service.options.max_scene_bytes, "--max-scene-bytes");
+  if (!body) return;
+  try {
+    const SceneStore::Added added = service.scenes.add(*body, name);
+    // The same bytes again are the same scene: 200 with the first upload's report.
+    send_json(response, added.report, added.created ? 201 : 200);
+    response.set_header("Location", "/v1/scenes/" + added.report.at("id").get<std::string>());
+  } catch (const scene::LoadError& e) {
+    send_error(response, load_error(e));
+  }
+}
+
+// Every scene a client can name: the built-in ones, reported once since they never change
+// while the server runs, then the uploaded ones as the store has them now.
+class SceneCatalog {
+ public:
+  explicit SceneCatalog(const SceneStore& store) : builtin_(builtin_scene_reports()), store_(store) {}
+
+  nlohmann::json list() const {
+    nlohmann::json scenes = nlohmann::json::array();
+    for (const auto& report : builtin_) scenes.push_back(report);
+    for (auto& report : store_.reports()) scenes.push_back(std::move(report));
+    return {{"scenes", std::move(scenes)}};
+  }
+  const nlohmann::json* builtin(const std::string& name) const {
+    for (const auto& report : builtin_)
+      if (report["name"] == name) return &report;
+    return nullptr;
+  }
+
+ private:
+  const std::vector<nlohmann::json> builtin_;
+  const SceneStore& store_;
+};
+
+// The scene is named by the path, not by a request field.
+HttpError unknown_scene_in_path(const std::string& id) {
+  HttpError error = unknown_scene(id);
+  error.field = "";
+  return error;
+}
+
+void handle_get_scene(const std::string& id, httplib::Response& response, const SceneCatalog& catalog,
+                      const SceneStore& store) {
+  if (const nlohmann::json* builtin = catalog.builtin(id)) return send_json(response, *builtin);
+  if (const std::optional<nlohmann::json> uploaded = store.report(id)) return send_json(response, *uploaded);
+  send_error(response, unknown_scene_in_path(id));
+}
+
+void handle_delete_scene(const std::string& id, httplib::Response& response, const SceneCatalog& catalog,
+                         SceneStore& store) {
+  if (catalog.builtin(id)) return send_error(response, builtin_scene_conflict(id));
+  if (!store.remove(id)) return send_error(response, unknown_scene_in_path(id));
+  response.status = 204;
 }
 
 void handle_readyz(httplib::Response& response, const RenderQueue& queue) {
@@ -191,18 +299,26 @@ void handle_readyz(httplib::Response& response, const RenderQueue& queue) {
   }
 }
 
+bool allows(const Route& route, std::string_view method) {
+  for (std::string_view rest = route.methods; !rest.empty();) {
+    const auto comma = rest.find(", ");
+    if (rest.substr(0, comma) == method) return true;
+    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 2);
+  }
+  return false;
+}
+
 void install_method_not_allowed(httplib::Server& http, const Route& route) {
   const httplib::Server::Handler refuse = [&route](const httplib::Request& request, httplib::Response& response) {
     send_error(response, {405, "method_not_allowed",
-                          request.method + " is not allowed on " + route.pattern + "; use " + route.method, ""});
-    response.set_header("Allow", route.method);
+                          request.method + " is not allowed on " + route.pattern + "; use " + route.methods, ""});
+    response.set_header("Allow", route.methods);
   };
-  const std::string method = route.method;
-  if (method != "GET") http.Get(route.regex, refuse);  // also HEAD
-  if (method != "POST") http.Post(route.regex, refuse);
-  http.Put(route.regex, refuse);
-  http.Patch(route.regex, refuse);
-  http.Delete(route.regex, refuse);
+  if (!allows(route, "GET")) http.Get(route.regex, refuse);  // also HEAD
+  if (!allows(route, "POST")) http.Post(route.regex, refuse);
+  if (!allows(route, "PUT")) http.Put(route.regex, refuse);
+  if (!allows(route, "PATCH")) http.Patch(route.regex, refuse);
+  if (!allows(route, "DELETE")) http.Delete(route.regex, refuse);
   http.Options(route.regex, refuse);
 }
 
@@ -238,17 +354,23 @@ void install_routes(httplib::Server& http, Service& service) {
     handle_readyz(response, service.queue);
   });
   http.Get("/metrics", [&service](const httplib::Request&, httplib::Response& response) {
-    response.set_content(service.metrics.prometheus_text(service.queue.gauges()), "text/plain; version=0.0.4");
+    const SceneStore::Totals stored = service.scenes.totals();
+    response.set_content(service.metrics.prometheus_text(service.queue.gauges(), {stored.scenes, stored.bytes}),
+                         "text/plain; version=0.0.4");
   });
-  // Scenes are built in code and never change while the server runs: reported once.
-  auto scenes = std::make_shared<const nlohmann::json>(scene_list_report());
-  http.Get("/v1/scenes", [scenes](const httplib::Request&, httplib::Response& response) { send_json(response, *scenes); });
-  http.Get("/v1/scenes/([^/]+)", [scenes](const httplib::Request& request, httplib::Response& response) {
-    for (const auto& scene : (*scenes)["scenes"])
-      if (scene["name"] == request.matches[1].str()) return send_json(response, scene);
-    HttpError error = unknown_scene(request.matches[1].str());
-    error.field = "";  // the scene is named by the path, not by a request field
-    send_error(response, error);
+  auto catalog = std::make_shared<const SceneCatalog>(service.scenes);
+  http.Get("/v1/scenes", [catalog](const httplib::Request&, httplib::Response& response) {
+    send_json(response, catalog->list());
+  });
+  http.Post("/v1/scenes", [&service](const httplib::Request& request, httplib::Response& response,
+                                     const httplib::ContentReader& content) {
+    handle_upload(request, response, content, service);
+  });
+  http.Get("/v1/scenes/([^/]+)", [catalog, &service](const httplib::Request& request, httplib::Response& response) {
+    handle_get_scene(request.matches[1].str(), response, *catalog, service.scenes);
+  });
+  http.Delete("/v1/scenes/([^/]+)", [catalog, &service](const httplib::Request& request, httplib::Response& response) {
+    handle_delete_scene(request.matches[1].str(), response, *catalog, service.scenes);
   });
   http.Get("/v1/device", [&service](const httplib::Request&, httplib::Response& response) {
     if (const auto report = service.queue.device_report()) return send_json(response, *report);
@@ -279,9 +401,14 @@ void install_routes(httplib::Server& http, Service& service) {
     const std::optional<double> ms = request_elapsed_ms();
     const std::string route = route_pattern(request.path);
     service.metrics.count_request(route, known_method(request.method), response.status, ms.value_or(0.0) / 1000.0);
-    nlohmann::json line = {{"time", utc_timestamp()},   {"method", request.method}, {"path", request.path},
-                           {"status", response.status}, {"ms", nullptr},          {"queue_ms", nullptr},
-                           {"bytes", response.body.size()}, {"remote", request.remote_addr}};
+    nlohmann::json line = {{"time", utc_timestamp()},
+                           {"method", request.method},
+                           {"path", loggable_path(request.path)},
+                           {"status", response.status},
+                           {"ms", nullptr},
+                           {"queue_ms", nullptr},
+                           {"bytes", response.body.size()},
+                           {"remote", request.remote_addr}};
     if (ms) line["ms"] = *ms;
     if (const auto wait = queue_wait_ms()) line["queue_ms"] = *wait;
     write_log_line(line);

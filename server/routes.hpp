@@ -4,6 +4,7 @@
 
 #include "server/metrics.hpp"
 #include "server/render_queue.hpp"
+#include "server/scene_store.hpp"
 #include "server/server_options.hpp"
 
 #include <httplib.h>
@@ -16,6 +17,7 @@ struct Service {
   const ServerOptions& options;
   RenderQueue& queue;
   Metrics& metrics;
+  SceneStore& scenes;
 };
 
 // Installs every handler on `http`; `service` must outlive it.

@@ -8,36 +8,46 @@ namespace {
 
 nlohmann::json vec3_json(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
-}  // namespace
-
-std::optional<nlohmann::json> scene_report(std::string_view name) {
-  const std::optional<scene::Scene> made = scene::make_builtin_scene(name);
-  if (!made) return std::nullopt;
-  std::string description;
-  for (const auto& info : scene::builtin_scenes())
-    if (info.name == name) description = info.description;
+// What every scene reports, whatever its source.
+nlohmann::json scene_report(const scene::Scene& scene, const std::string& id, const std::string& name,
+                            const std::string& source, const std::string& description) {
   // The camera and lights in the request schema, written by the same code as requests,
   // so a client can send them back with changes.
   api::RenderRequest as_request;
-  as_request.camera = made->camera;
-  as_request.lights = made->lights;
+  as_request.camera = scene.camera;
+  as_request.lights = scene.lights;
   const nlohmann::json request_json = api::to_json(as_request);
-  return nlohmann::json{{"name", made->name},
+  return nlohmann::json{{"id", id},
+                        {"name", name},
+                        {"source", source},
                         {"description", description},
                         {"bounds",
-                         {{"min", vec3_json(made->bounds.min)},
-                          {"max", vec3_json(made->bounds.max)},
-                          {"center", vec3_json(made->bounds.center())},
-                          {"radius", made->bounds.radius()}}},
+                         {{"min", vec3_json(scene.bounds.min)},
+                          {"max", vec3_json(scene.bounds.max)},
+                          {"center", vec3_json(scene.bounds.center())},
+                          {"radius", scene.bounds.radius()}}},
                         {"camera", request_json.at("camera")},
                         {"lights", request_json.at("lights")},
-                        {"triangles", made->triangle_count()}};
+                        {"triangles", scene.triangle_count()},
+                        {"warnings", scene.warnings}};
 }
 
-nlohmann::json scene_list_report() {
-  nlohmann::json scenes = nlohmann::json::array();
-  for (const auto& info : scene::builtin_scenes()) scenes.push_back(*scene_report(info.name));
-  return {{"scenes", std::move(scenes)}};
+}  // namespace
+
+std::vector<nlohmann::json> builtin_scene_reports() {
+  std::vector<nlohmann::json> reports;
+  for (const auto& info : scene::builtin_scenes())
+    if (const std::optional<scene::Scene> made = scene::make_builtin_scene(info.name))
+      reports.push_back(scene_report(*made, info.name, info.name, "builtin", info.description));
+  return reports;
+}
+
+nlohmann::json uploaded_scene_report(const scene::Scene& scene, const Upload& upload) {
+  nlohmann::json report = scene_report(scene, upload.id, upload.name, "uploaded", "");
+  report["sha256"] = upload.id;
+  report["bytes"] = upload.bytes;
+  report["uploaded_at"] = upload.uploaded_at;
+  return report;
 }
 
 }  // namespace server

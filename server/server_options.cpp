@@ -2,6 +2,7 @@
 
 #include "server/access.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <optional>
 #include <string_view>
@@ -57,6 +58,12 @@ const std::vector<Setting>& settings() {
        [](ServerOptions& o, S s, S v) { o.deadline = std::chrono::milliseconds(parse_count(s, v, 1, 3600000)); }},
       {"--max-body-bytes", true,
        [](ServerOptions& o, S s, S v) { o.max_body_bytes = parse_count(s, v, 64, 64u << 20); }},
+      {"--max-scene-bytes", true,
+       [](ServerOptions& o, S s, S v) { o.max_scene_bytes = parse_count(s, v, 64, 1u << 30); }},
+      {"--max-scene-triangles", true,
+       [](ServerOptions& o, S s, S v) { o.scene_limits.max_triangles = parse_count(s, v, 1, 100'000'000); }},
+      {"--scene-cache-mb", true,
+       [](ServerOptions& o, S s, S v) { o.scene_cache_bytes = parse_count(s, v, 0, 1u << 20) << 20; }},
       {"--max-pixels", true,
        [](ServerOptions& o, S s, S v) { o.limits.max_pixels = parse_count(s, v, 1, api::limits::max_image_pixels); }},
       {"--max-grid-cells", true,
@@ -93,14 +100,21 @@ listens on as its first line, then one JSON line per request.
 options (each also read from the environment variable in brackets; a flag wins):
   --host ADDR            address to bind (127.0.0.1) [LPV_SERVER_HOST]
   --port N               port, 0 for any free one (8080) [LPV_SERVER_PORT]
-  --data-dir DIR         keeps the pipeline cache in DIR [LPV_SERVER_DATA_DIR]
+  --data-dir DIR         keeps the pipeline cache and uploaded scenes (DIR/scenes) in DIR;
+                         without it uploads live in memory until exit [LPV_SERVER_DATA_DIR]
   --token TOKEN          require "Authorization: Bearer TOKEN" [LPV_SERVER_TOKEN]
   --insecure             allow a non-loopback --host without a token [LPV_SERVER_INSECURE=1]
   --threads N            HTTP connections served at once (16) [LPV_SERVER_THREADS]
   --workers N            render workers, each with its own device (1) [LPV_SERVER_WORKERS]
   --queue N              renders that may wait for a worker; more get 503 (8) [LPV_SERVER_QUEUE]
   --deadline-ms N        time from arrival to image before 504 (30000) [LPV_SERVER_DEADLINE_MS]
-  --max-body-bytes N     request body size before 413 (262144) [LPV_SERVER_MAX_BODY_BYTES]
+  --max-body-bytes N     request body size before 413, scene uploads aside (262144)
+                         [LPV_SERVER_MAX_BODY_BYTES]
+  --max-scene-bytes N    scene upload size before 413 (67108864) [LPV_SERVER_MAX_SCENE_BYTES]
+  --max-scene-triangles N  triangles of one uploaded scene before 422 (8000000)
+                         [LPV_SERVER_MAX_SCENE_TRIANGLES]
+  --scene-cache-mb N     memory for scenes kept resident per render worker (1024)
+                         [LPV_SERVER_SCENE_CACHE_MB]
   --max-pixels N         output width x height before 422 (16777216) [LPV_SERVER_MAX_PIXELS]
   --max-grid-cells N     lpv.grid x*y*z*cascades before 422 (2097152) [LPV_SERVER_MAX_GRID_CELLS]
   --max-iterations N     lpv.iterations before 422 (64) [LPV_SERVER_MAX_ITERATIONS]
@@ -111,6 +125,10 @@ Vulkan: LPV_DEVICE, LPV_VALIDATION, LPV_PIPELINE_CACHE as for lpv-render.
 SIGINT or SIGTERM: stop accepting, finish the renders in flight, exit 0.
 exit status: 0 after a clean shutdown, 2 bad usage, 1 failure (device, bind)
 )";
+}
+
+std::size_t largest_body_bytes(const ServerOptions& options) {
+  return std::max(options.max_body_bytes, options.max_scene_bytes);
 }
 
 ServerOptions parse_server_options(int argc, const char* const* argv, const EnvironmentLookup& environment) {

@@ -8,8 +8,11 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <sstream>
+#include <thread>
 
 namespace server_test {
 namespace {
@@ -155,13 +158,26 @@ TEST(HttpMetrics, CountRequestsAndRecordPassTimesAndQueueGauges) {
   auto http = shared_server().client();
   ASSERT_EQ(http->Post("/v1/render", R"({"output": {"width": 32, "height": 32}})", "application/json")->status, 200);
   ASSERT_EQ(http->Get("/v2/nothing")->status, 404);
-  const auto r = http->Get("/metrics");
+  // A request is counted after its answer is sent, and the next request may come on another
+  // connection, served by another thread: wait until both are counted.
+  const std::vector<std::string> counted = {
+      "lpv_http_requests_total{route=\"/v1/render\",method=\"POST\",status=\"200\"}",
+      "lpv_http_requests_total{route=\"unmatched\",method=\"GET\",status=\"404\"}"};
+  const auto all_counted = [&](const httplib::Result& r) {
+    return std::all_of(counted.begin(), counted.end(),
+                       [&](const std::string& series) { return r->body.find(series) != std::string::npos; });
+  };
+  httplib::Result r = http->Get("/metrics");
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (r && !all_counted(r) && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    r = http->Get("/metrics");
+  }
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200);
   EXPECT_EQ(r->get_header_value("Content-Type").rfind("text/plain", 0), 0u);
+  EXPECT_TRUE(all_counted(r)) << r->body;
   const std::string& text = r->body;
-  EXPECT_NE(text.find("lpv_http_requests_total{route=\"/v1/render\",method=\"POST\",status=\"200\"}"), std::string::npos);
-  EXPECT_NE(text.find("lpv_http_requests_total{route=\"unmatched\",method=\"GET\",status=\"404\"}"), std::string::npos);
   EXPECT_NE(text.find("lpv_http_request_duration_seconds_bucket{route=\"/v1/render\",le=\"+Inf\"}"), std::string::npos);
   EXPECT_NE(text.find("lpv_render_pass_gpu_seconds_bucket{pass=\"shade\""), std::string::npos);
   EXPECT_NE(text.find("lpv_render_queue_depth 0"), std::string::npos);

@@ -30,7 +30,9 @@ TEST(Metrics, PrometheusTextHasEverySeriesWithTypes) {
   m.observe_pass("shade", 0.011);
   m.observe_queue_wait(0.002);
   m.count_render("ok");
-  const std::string text = m.prometheus_text({.depth = 3, .capacity = 8, .in_flight = 1, .ready = true});
+  const std::string text = m.prometheus_text(
+      {.depth = 3, .capacity = 8, .in_flight = 1, .ready = true, .scene_caches = {{4, 1000}, {2, 500}}},
+      {.scenes = 2, .bytes = 4696});
   EXPECT_TRUE(has_line(text, "# TYPE lpv_http_requests_total counter"));
   EXPECT_TRUE(has_line(text, "lpv_http_requests_total{route=\"/v1/render\",method=\"POST\",status=\"200\"} 2"));
   EXPECT_TRUE(has_line(text, "lpv_http_requests_total{route=\"unmatched\",method=\"GET\",status=\"404\"} 1"));
@@ -44,6 +46,11 @@ TEST(Metrics, PrometheusTextHasEverySeriesWithTypes) {
   EXPECT_TRUE(has_line(text, "lpv_render_queue_capacity 8"));
   EXPECT_TRUE(has_line(text, "lpv_renders_in_flight 1"));
   EXPECT_TRUE(has_line(text, "lpv_ready 1"));
+  EXPECT_TRUE(has_line(text, "# TYPE lpv_scene_cache_bytes gauge"));
+  EXPECT_TRUE(has_line(text, "lpv_scene_cache_scenes{worker=\"1\"} 2"));
+  EXPECT_TRUE(has_line(text, "lpv_scene_cache_bytes{worker=\"0\"} 1000"));
+  EXPECT_TRUE(has_line(text, "lpv_uploaded_scenes 2"));
+  EXPECT_TRUE(has_line(text, "lpv_uploaded_scene_bytes 4696"));
 }
 
 }  // namespace

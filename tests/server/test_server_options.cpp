@@ -24,6 +24,20 @@ TEST(ServerOptions, DefaultsAreLoopbackPort8080AndSafeLimits) {
   EXPECT_EQ(o.limits.max_pixels, 4096u * 4096u);
   EXPECT_EQ(o.limits.max_grid_cells, 128u * 128u * 128u);
   EXPECT_EQ(o.limits.max_iterations, 64u);
+  EXPECT_TRUE(o.data_dir.empty());
+  EXPECT_EQ(o.max_scene_bytes, 64u << 20);
+  EXPECT_EQ(o.scene_cache_bytes, 1ull << 30);
+}
+
+TEST(ServerOptions, SceneSettingsAndTheLargestBodyHttplibMustAccept) {
+  const ServerOptions o = parse({"--max-scene-bytes", "1000000", "--max-scene-triangles=500", "--scene-cache-mb", "64"},
+                                {{"LPV_SERVER_MAX_BODY_BYTES", "2000000"}});
+  EXPECT_EQ(o.max_scene_bytes, 1000000u);
+  EXPECT_EQ(o.scene_limits.max_triangles, 500u);
+  EXPECT_EQ(o.scene_cache_bytes, 64ull << 20);
+  // Renders may take more than uploads; httplib's one limit must allow both.
+  EXPECT_EQ(largest_body_bytes(o), 2000000u);
+  EXPECT_EQ(largest_body_bytes(parse({"--max-scene-bytes", "5000000"})), 5000000u);
 }
 
 TEST(ServerOptions, FlagsAndEnvironmentWithFlagsWinning) {
@@ -56,6 +70,9 @@ TEST(ServerOptions, BadValuesNameTheFlagOrVariable) {
   EXPECT_NE(message({"--verbose"}).find("unknown option"), std::string::npos);
   EXPECT_NE(message({}, {{"LPV_SERVER_THREADS", "many"}}).find("LPV_SERVER_THREADS"), std::string::npos);
   EXPECT_NE(message({"--token", ""}).find("--token"), std::string::npos);
+  EXPECT_NE(message({"--max-scene-bytes", "2000000000"}).find("--max-scene-bytes"), std::string::npos);
+  EXPECT_NE(message({"--max-scene-triangles", "0"}).find("--max-scene-triangles"), std::string::npos);
+  EXPECT_NE(message({}, {{"LPV_SERVER_SCENE_CACHE_MB", "lots"}}).find("LPV_SERVER_SCENE_CACHE_MB"), std::string::npos);
 }
 
 TEST(ServerOptions, APublicAddressNeedsATokenOrInsecure) {

@@ -1,0 +1,185 @@
+#include "server/scene_store.hpp"
+
+#include "server/durable_files.hpp"
+#include "server/scene_report.hpp"
+#include "server/sha256.hpp"
+#include "server/utc_time.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <span>
+
+namespace server {
+namespace {
+
+constexpr std::string_view kGlbMagic = "glTF";
+
+std::string scene_file_name(const std::string& id, std::string_view bytes) {
+  return id + (bytes.starts_with(kGlbMagic) ? ".glb" : ".gltf");
+}
+
+// A report as add() writes it: the fields reports() and totals() read have their types.
+bool is_report_of(const nlohmann::json& report, const std::string& id) {
+  return report.is_object() && report.contains("id") && report["id"] == id && report.contains("uploaded_at") &&
+         report["uploaded_at"].is_string() && report.contains("bytes") && report["bytes"].is_number_unsigned();
+}
+
+std::optional<std::string> read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return std::nullopt;
+  return bytes;
+}
+
+}  // namespace
+
+bool is_scene_id(std::string_view text) {
+  return text.size() == 64 &&
+         std::all_of(text.begin(), text.end(), [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
+}
+
+SceneStore::SceneStore(Config config) : directory_(std::move(config.directory)), limits_(config.limits) {
+  if (!directory_.empty()) open_directory();
+}
+
+void SceneStore::open_directory() {
+  std::filesystem::create_directories(directory_);
+  opened_.removed_temporary = remove_temporary_files(directory_);
+  std::vector<std::string> unfinished;
+  for (const auto& item : std::filesystem::directory_iterator(directory_)) {
+    const std::string file = item.path().filename().string();
+    const std::string id = item.path().stem().string();
+    if (item.path().extension() != ".json" || !is_scene_id(id)) continue;  // scene files, or not ours
+    const std::optional<std::string> text = read_file(item.path());
+    nlohmann::json report = nlohmann::json::parse(text.value_or(""), nullptr, false);
+    if (!is_report_of(report, id)) {
+      opened_.skipped.push_back(file + ": not a scene report");
+      continue;
+    }
+    std::string scene_file;
+    for (const char* extension : {".glb", ".gltf"})
+      if (std::filesystem::exists(directory_ / (id + extension))) scene_file = id + extension;
+    if (scene_file.empty()) {
+      unfinished.push_back(file);  // the upload stopped between writing its report and its scene
+      continue;
+    }
+    entries_[id] = Entry{std::move(report), scene_file, nullptr};
+  }
+  for (const std::string& file : unfinished) remove_file_durably(directory_, file);
+  opened_.removed_unfinished = unfinished.size();
+  opened_.scenes = entries_.size();
+}
+
+scene::Scene SceneStore::load_bytes(std::string_view bytes, const std::string& id) const {
+  scene::LoadOptions options;
+  options.name = id;
+  options.limits = limits_;  // external_files_dir stays empty: a file cannot make the loader open a path
+  return scene::load_gltf(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()), options);
+}
+
+SceneStore::Added SceneStore::add(std::string_view bytes, const std::string& name) {
+  const std::string id = sha256_hex(bytes);
+  if (std::optional<nlohmann::json> stored = report(id)) return {std::move(*stored), false};
+  // Loading is the validation and the slow part: no lock is held meanwhile.
+  const scene::Scene scene = load_bytes(bytes, id);
+
+  const std::lock_guard writing(writing_);
+  if (std::optional<nlohmann::json> stored = report(id)) return {std::move(*stored), false};  // raced
+  Entry entry;
+  entry.report = uploaded_scene_report(scene, {id, name.empty() ? id : name, bytes.size(), utc_timestamp()});
+  if (in_memory()) {
+    entry.bytes = std::make_shared<const std::string>(bytes);
+  } else {
+    // The report before the scene: a scene file on disk always has its report.
+    const std::string report_file = id + ".json";
+    write_file_durably(directory_, report_file, entry.report.dump() + "\n");
+    entry.file = scene_file_name(id, bytes);
+    try {
+      write_file_durably(directory_, entry.file, bytes);
+    } catch (...) {
+      remove_file_durably(directory_, report_file);
+      throw;
+    }
+  }
+  nlohmann::json created = entry.report;
+  const std::lock_guard lock(mutex_);
+  entries_.emplace(id, std::move(entry));
+  return {std::move(created), true};
+}
+
+std::vector<nlohmann::json> SceneStore::reports() const {
+  std::vector<nlohmann::json> all;
+  {
+    const std::lock_guard lock(mutex_);
+    for (const auto& [id, entry] : entries_) all.push_back(entry.report);
+  }
+  std::stable_sort(all.begin(), all.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return a.value("uploaded_at", "") < b.value("uploaded_at", "");
+  });
+  return all;
+}
+
+std::optional<nlohmann::json> SceneStore::report(const std::string& id) const {
+  if (!is_scene_id(id)) return std::nullopt;
+  const std::lock_guard lock(mutex_);
+  const auto it = entries_.find(id);
+  if (it == entries_.end()) return std::nullopt;
+  return it->second.report;
+}
+
+bool SceneStore::contains(const std::string& id) const {
+  if (!is_scene_id(id)) return false;
+  const std::lock_guard lock(mutex_);
+  return entries_.count(id) != 0;
+}
+
+bool SceneStore::remove(const std::string& id) {
+  if (!is_scene_id(id)) return false;
+  const std::lock_guard writing(writing_);
+  Entry removed;
+  {
+    const std::lock_guard lock(mutex_);
+    const auto it = entries_.find(id);
+    if (it == entries_.end()) return false;
+    removed = std::move(it->second);
+    entries_.erase(it);
+  }
+  if (!in_memory()) {
+    // The scene before its report, for the same reason as in add().
+    remove_file_durably(directory_, removed.file);
+    remove_file_durably(directory_, id + ".json");
+  }
+  return true;
+}
+
+std::optional<scene::Scene> SceneStore::load(const std::string& id) const {
+  if (!is_scene_id(id)) return std::nullopt;
+  std::shared_ptr<const std::string> bytes;
+  std::string file;
+  {
+    const std::lock_guard lock(mutex_);
+    const auto it = entries_.find(id);
+    if (it == entries_.end()) return std::nullopt;
+    bytes = it->second.bytes;
+    file = it->second.file;
+  }
+  if (!bytes) {
+    // Read without the lock; a removal meanwhile makes the file vanish, which reads as unknown.
+    std::optional<std::string> read = read_file(directory_ / file);
+    if (!read) return std::nullopt;
+    bytes = std::make_shared<const std::string>(std::move(*read));
+  }
+  return load_bytes(*bytes, id);
+}
+
+SceneStore::Totals SceneStore::totals() const {
+  const std::lock_guard lock(mutex_);
+  Totals totals;
+  totals.scenes = entries_.size();
+  for (const auto& [id, entry] : entries_) totals.bytes += entry.report.value("bytes", std::uint64_t(0));
+  return totals;
+}
+
+}  // namespace server
