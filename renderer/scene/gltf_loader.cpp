@@ -25,10 +25,13 @@ using gltf::invalid;
 const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
                                                     "KHR_mesh_quantization"};
 
-// What tinygltf's callbacks need: the options, and what went wrong inside them.
+// What tinygltf's callbacks need: the options, the model being parsed, and what went wrong
+// inside them.
 struct ParseState {
   const LoadOptions& options;
+  const tinygltf::Model& model;
   std::size_t texels = 0;
+  std::string invalid;           // an image whose data lies outside its buffer
   std::string too_complex;       // an image over the texel budget
   std::string refused_file;      // an external file that may not be read
   std::vector<std::string> image_warnings;
@@ -37,10 +40,21 @@ struct ParseState {
 bool decode_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
                   const unsigned char* bytes, int size, void* user) {
   auto& state = *static_cast<ParseState*>(user);
+  const std::string what = "image " + std::to_string(index);
+  if (image->bufferView >= 0) {
+    // tinygltf checked that the view and its buffer exist, not that the view fits in the
+    // buffer: `bytes` may reach past its end. (Buffers and views are parsed before images.)
+    const tinygltf::BufferView& view = state.model.bufferViews[std::size_t(image->bufferView)];
+    const std::size_t buffer = state.model.buffers[std::size_t(view.buffer)].data.size();
+    if (view.byteOffset > buffer || view.byteLength > buffer - view.byteOffset) {
+      state.invalid = what + ": its buffer view reaches past the end of its buffer";
+      if (err) *err += state.invalid;
+      return false;
+    }
+  }
   const std::size_t budget = state.options.limits.max_texels - std::min(state.options.limits.max_texels, state.texels);
   DecodedImage decoded =
       decode_rgba8({bytes, std::size_t(std::max(size, 0))}, budget, state.options.limits.max_texture_side);
-  const std::string what = "image " + std::to_string(index);
   if (decoded.over_limit) {
     state.too_complex = what + ": " + decoded.error + " (over all images)";
     if (err) *err += state.too_complex;
@@ -119,11 +133,11 @@ std::string first_lines(const std::string& text) {
 
 tinygltf::Model parse(std::span<const std::uint8_t> bytes, const LoadOptions& options, std::vector<std::string>& warnings) {
   if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail(LoadError::Kind::too_complex, "file over 4 GiB");
-  ParseState state{options};
+  tinygltf::Model model;
+  ParseState state{options, model};
   tinygltf::TinyGLTF parser;
   parser.SetImageLoader(decode_image, &state);
   parser.SetFsCallbacks({file_exists, expand_path, read_file, write_file, &state});
-  tinygltf::Model model;
   std::string err, warn;
   const std::string base_dir = options.external_files_dir.string();
   const bool binary = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
@@ -136,6 +150,7 @@ tinygltf::Model parse(std::span<const std::uint8_t> bytes, const LoadOptions& op
     invalid(std::string("not valid glTF: ") + e.what());
   }
   if (!state.too_complex.empty()) fail(LoadError::Kind::too_complex, state.too_complex);
+  if (!state.invalid.empty()) invalid(state.invalid);
   if (!state.refused_file.empty())
     invalid(options.external_files_dir.empty()
                 ? "the file refers to an external file ('" + state.refused_file +

@@ -1,5 +1,6 @@
 #include "renderer/scene/image_decode.hpp"
 
+#include <algorithm>
 #include <limits>
 
 // stb_image private to this file: other targets (tests) compile their own copy.
@@ -10,11 +11,36 @@
 #include <stb/stb_image.h>
 
 namespace scene {
+namespace {
+
+// A PNG whose chunks each fit in the bytes there are. stb_image trusts a chunk's declared
+// length and grows its buffer to it before reading: a few kilobytes could ask for
+// gigabytes. Other formats are not chunked this way (their allocations follow the image
+// size, checked below). True for anything that is not a PNG.
+bool png_chunks_fit(std::span<const std::uint8_t> bytes) {
+  static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return true;
+  std::size_t at = 8;
+  while (at + 8 <= bytes.size()) {
+    const std::size_t length = std::size_t(bytes[at]) << 24 | std::size_t(bytes[at + 1]) << 16 |
+                               std::size_t(bytes[at + 2]) << 8 | std::size_t(bytes[at + 3]);
+    if (length > bytes.size() - at - 8 || bytes.size() - at - 8 - length < 4) return false;  // data + CRC
+    if (std::equal(bytes.begin() + long(at) + 4, bytes.begin() + long(at) + 8, "IEND")) return true;
+    at += 12 + length;
+  }
+  return false;  // no IEND: truncated
+}
+
+}  // namespace
 
 DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, std::size_t max_texels, std::uint32_t max_side) {
   DecodedImage image;
   if (bytes.empty() || bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
     image.error = bytes.empty() ? "no image data" : "image data over 2 GiB";
+    return image;
+  }
+  if (!png_chunks_fit(bytes)) {
+    image.error = "a PNG whose chunks run past its end (truncated or corrupt)";
     return image;
   }
   const int size = int(bytes.size());
