@@ -499,6 +499,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, const Frame& 
     case kGBuffer:
       // The shading binds the atlas even when no map was drawn (no light samples it then).
       if (!frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
+      if (!frame.plan.run[kRsm] && frame.plan.run[kInject]) RsmPass::record_skipped(cmd, *rsm_maps);
       gbuffer.record(cmd, frame.gpu, *targets, frame_uniforms);
       break;
     case kInject:

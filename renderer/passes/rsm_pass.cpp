@@ -63,4 +63,10 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
   vkx::colors_to_compute(cmd, colors);
 }
 
+void RsmPass::record_skipped(VkCommandBuffer cmd, const RsmMaps& maps) {
+  for (const vkx::Image* image : {&maps.position, &maps.normal, &maps.flux})
+    vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+}
+
 }  // namespace renderer

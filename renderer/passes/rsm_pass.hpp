@@ -16,6 +16,9 @@ class RsmPass {
   // `views` holds gpu::GpuRsmView[maps.layers]; `lights` gpu::GpuLight[].
   void record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& maps, const vkx::Buffer& views,
               const vkx::Buffer& lights) const;
+  // When no light draws the maps but the LPV runs (emissive surfaces alone): the maps the
+  // injection and geometry passes bind, made valid for them to bind (never read).
+  static void record_skipped(VkCommandBuffer cmd, const RsmMaps& maps);
 
  private:
   const vkx::Device& device_;
