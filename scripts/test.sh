@@ -1,8 +1,28 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs every test (CTest) on lavapipe with the
-# Vulkan validation layer on. Arguments are passed to ctest (e.g. -R renderer, -L stress).
+# Installs what is missing, then runs the two test stages (docs/testing.md):
+#  1. builds build/ (Release) and runs every test (CTest) on lavapipe with the Vulkan
+#     validation layer on;
+#  2. builds the sanitizer build build-sanitize/ (clang, LPV_SANITIZE=ON: AddressSanitizer and
+#     UndefinedBehaviorSanitizer; only what its tests need) and runs the tests labelled
+#     "sanitize" there: the CLI test, the glTF corpus through lpv-render and lpv-server, and a
+#     short run of the glTF loader's fuzzer.
+# Arguments are passed to both ctest runs, which select tests within their stage:
+#   scripts/test.sh -R corpus    # the corpus tests, in both builds
+#   scripts/test.sh -R renderer  # the renderer test (the sanitize stage has none: it runs nothing)
+# LPV_TEST_SANITIZE=0 skips stage 2. Both stages run even when the first fails; the exit
+# status is non-zero if either failed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 "$root/scripts/build.sh"
-cd "$root/build"
-ctest --output-on-failure --timeout 600 "$@"
+
+status=0
+(cd "$root/build" && ctest --output-on-failure --timeout 600 "$@") || status=1
+
+if [ "${LPV_TEST_SANITIZE:-1}" != 0 ]; then
+  echo "== sanitizer build (build-sanitize: clang, AddressSanitizer + UndefinedBehaviorSanitizer)"
+  cmake -S "$root" -B "$root/build-sanitize" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DLPV_SANITIZE=ON >/dev/null
+  cmake --build "$root/build-sanitize" --target sanitize-tests --parallel "$(nproc)"
+  (cd "$root/build-sanitize" && ctest --output-on-failure --timeout 600 --parallel "$(nproc)" -L sanitize "$@") || status=1
+fi
+exit "$status"

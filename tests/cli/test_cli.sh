@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # lpv-render as a user runs it: files written, exit codes and messages for bad input.
+#   test_cli.sh LPV_RENDER [GLTF_CORPUS_DIR]
 set -u
 bin="$(realpath "$1")"
+corpus="$(realpath "${2:-/usr/share/assimp/models/glTF2}")"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -75,11 +77,58 @@ run -o no-such-dir/out.png -q
 check "unwritable output exits 1" test "$rc" -eq 1
 check "unwritable output names the path" grep -q "no-such-dir" err.txt
 
+# --scene NAME: a built-in scene instead of the request's.
+echo '{"output": {"width": 80, "height": 48}}' >small.json
+run small.json --scene sun-courtyard -q
+check "--scene NAME exits 0" test "$rc" -eq 0
+check "--scene NAME names the output" test -s sun-courtyard.png
+
+# --scene FILE: a glTF file (binary, embedded data), output named after it.
+box="$corpus/BoxTextured-glTF-Binary/BoxTextured.glb"
+run small.json --scene "$box" -q
+check "--scene FILE.glb exits 0" test "$rc" -eq 0
+check "--scene FILE.glb writes BoxTextured.png" test -s BoxTextured.png
+check "--scene FILE.glb PNG width 80" test "$(u32be BoxTextured.png 16)" -eq 80
+check "--scene FILE.glb PNG height 48" test "$(u32be BoxTextured.png 20)" -eq 48
+# A .gltf whose buffer and texture are files next to it.
+run small.json --scene "$corpus/BoxTextured-glTF/BoxTextured.gltf" -o external.png -q
+check "--scene FILE.gltf with external files exits 0" test "$rc" -eq 0
+check "--scene FILE.gltf with external files writes the PNG" test -s external.png
+
+# Files that cannot be loaded: exit 3, "lpv-render: FILE: what is wrong", nothing written.
+head -c 200 "$box" >truncated.glb
+run --scene truncated.glb -o truncated.png
+check "truncated .glb exits 3" test "$rc" -eq 3
+check "truncated .glb message names the file" grep -q "^lpv-render: truncated.glb: ." err.txt
+check "nothing written for a bad file" test ! -e truncated.png
+echo '{"asset": {"version": "2.0"}, "meshes": [' >broken.gltf
+run --scene broken.gltf
+check "malformed .gltf exits 3" test "$rc" -eq 3
+check "malformed .gltf message names the file" grep -q "^lpv-render: broken.gltf: ." err.txt
+run --scene "$corpus/IndexOutOfRange/IndexOutOfRange.gltf"
+check "indices out of range exit 3" test "$rc" -eq 3
+check "indices out of range are explained" grep -qi "index\|indices" err.txt
+run --scene "$corpus/MissingBin/BoxTextured.gltf"
+check "missing .bin exits 3" test "$rc" -eq 3
+check "missing .bin is named" grep -q "BoxTextured0.bin" err.txt
+run --scene no-such-model.glb
+check "missing scene file exits 3" test "$rc" -eq 3
+check "missing scene file is explained" grep -q "^lpv-render: no-such-model.glb: .*no such file" err.txt
+
+# --scene FILE and a request that names a scene, or --scene twice: bad usage.
+run scene.json --scene "$box"
+check "request scene and --scene FILE exit 2" test "$rc" -eq 2
+check "request scene and --scene FILE are explained" grep -q "give one of them" err.txt
+run --scene cornell-box --scene "$box"
+check "--scene twice exits 2" test "$rc" -eq 2
+
 run --list-scenes
 check "list scenes" grep -q "^cornell-box " out.txt
 
 run --help
 check "help exits 0" test "$rc" -eq 0
+check "help documents --scene FILE" grep -q -- "--scene FILE" out.txt
+check "help documents exit status 3" grep -q "^  3 " out.txt
 
 echo "$passed passed, $failures failed"
 test "$failures" -eq 0

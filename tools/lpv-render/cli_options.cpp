@@ -1,5 +1,6 @@
 #include "cli_options.hpp"
 
+#include <cctype>
 #include <string_view>
 
 namespace cli {
@@ -14,7 +15,10 @@ options:
   -o, --output FILE      output file (default: <scene>.<format>); the extension
                          .exr or .pfm selects that format when the request has none
   --stats FILE           write timing stats as JSON ("-" for standard output)
-  --scene NAME           render this scene instead of the request's
+  --scene NAME           render this built-in scene instead of the request's
+  --scene FILE           render a glTF 2.0 file (.gltf or .glb, or any path with a
+                         '/'); its buffers and images may be embedded or in files
+                         next to it. The request must not name a scene then.
   --device NAME|INDEX    Vulkan device (default: $LPV_DEVICE, else lavapipe)
   --validation           enable the Khronos validation layer ($LPV_VALIDATION=1)
   --list-devices         list Vulkan devices and exit
@@ -23,8 +27,25 @@ options:
   -h, --help             this text
 
 environment: LPV_DEVICE, LPV_VALIDATION, LPV_PIPELINE_CACHE (a file, or "off")
-exit status: 0 success, 2 bad usage or bad request, 1 rendering failure
+exit status:
+  0  success
+  1  rendering failure (device, output file, validation messages)
+  2  bad usage or bad request
+  3  the --scene file cannot be loaded: missing or unreadable, not valid glTF,
+     unsupported or over the limits ("lpv-render: FILE: what is wrong")
 )";
+}
+
+bool names_scene_file(const std::string& value) {
+  auto ends_with = [&](std::string_view suffix) {
+    if (value.size() < suffix.size()) return false;
+    for (std::size_t i = 0; i < suffix.size(); ++i) {
+      const char c = value[value.size() - suffix.size() + i];
+      if (std::tolower(static_cast<unsigned char>(c)) != suffix[i]) return false;
+    }
+    return true;
+  };
+  return ends_with(".gltf") || ends_with(".glb") || value.find('/') != std::string::npos;
 }
 
 Options parse(int argc, char** argv) {
@@ -42,7 +63,13 @@ Options parse(int argc, char** argv) {
     } else if (arg == "--stats") {
       o.stats_file = value(arg);
     } else if (arg == "--scene") {
-      o.scene = value(arg);
+      if (o.scene || o.scene_file) throw UsageError("--scene given more than once");
+      std::string v = value(arg);
+      if (names_scene_file(v)) {
+        o.scene_file = std::move(v);
+      } else {
+        o.scene = std::move(v);
+      }
     } else if (arg == "--device") {
       o.device = value(arg);
     } else if (arg == "--validation") {

@@ -11,7 +11,8 @@ struct Options {
   std::optional<std::string> request_file;  // "-" reads standard input
   std::optional<std::string> output_file;   // default: <scene><extension> in the working directory
   std::optional<std::string> stats_file;
-  std::optional<std::string> scene;         // overrides the request's scene
+  std::optional<std::string> scene;         // a built-in scene; overrides the request's scene
+  std::optional<std::string> scene_file;    // a .gltf/.glb file to render instead of a named scene
   std::optional<std::string> device;        // overrides LPV_DEVICE
   bool validation = false;
   bool list_devices = false;
@@ -24,6 +25,10 @@ class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// --scene takes a built-in scene's name or a glTF file: a value ending in .gltf or .glb
+// (any case) or containing a '/' is a file.
+bool names_scene_file(const std::string& value);
 
 Options parse(int argc, char** argv);
 const char* usage();

@@ -6,6 +6,7 @@
 #include "renderer/output.hpp"
 #include "renderer/renderer.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
+#include "renderer/scene/gltf_loader.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -14,12 +15,34 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
+#include <stdexcept>
 #include <sstream>
 
 namespace {
 
 constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
+constexpr int kExitBadSceneFile = 3;
+
+// A --scene file that cannot be loaded: "lpv-render: <path>: <message>", exit status 3.
+class SceneFileError : public std::runtime_error {
+ public:
+  SceneFileError(const std::string& path, const std::string& message)
+      : std::runtime_error(path + ": " + message) {}
+};
+
+scene::Scene load_scene_file(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) throw SceneFileError(path, "cannot read the scene file: no such file");
+  if (!std::filesystem::is_regular_file(status)) throw SceneFileError(path, "cannot read the scene file: not a regular file");
+  try {
+    return scene::load_gltf_file(path);
+  } catch (const scene::LoadError& e) {
+    throw SceneFileError(path, e.what());
+  }
+}
 
 std::string read_request_text(const std::string& file) {
   std::ostringstream text;
@@ -53,6 +76,7 @@ void print_summary(const api::RenderStats& s, const std::string& file) {
   for (const auto& p : s.passes)
     if (p.ran) std::fprintf(stderr, " %s %.3f", p.name.c_str(), p.gpu_ms.median);
   std::fprintf(stderr, "\n  wall %.3f ms per frame, encode %.3f ms\n", s.wall_ms.median, s.cpu_ms.at("encode").median);
+  for (const auto& warning : s.warnings) std::fprintf(stderr, "  warning: %s\n", warning.c_str());
 }
 
 int run(int argc, char** argv) {
@@ -74,15 +98,26 @@ int run(int argc, char** argv) {
 
   api::RenderRequest request;
   bool format_given = false;
+  bool scene_given = false;
   if (options.request_file) {
     const std::string text = read_request_text(*options.request_file);
     request = api::parse_render_request(text);
     const auto json = nlohmann::json::parse(text);
     format_given = json.contains("output") && json["output"].contains("format");
+    scene_given = json.contains("scene");
   }
   if (options.scene) request.scene = *options.scene;
+  // A scene file is loaded before the device is made, so a bad file fails fast.
+  std::optional<scene::Scene> file_scene;
+  if (options.scene_file) {
+    if (scene_given)
+      throw cli::UsageError("the request names the scene '" + request.scene + "' and --scene names the file '" +
+                            *options.scene_file + "': give one of them");
+    file_scene = load_scene_file(*options.scene_file);
+  }
+  const std::string scene_name = file_scene ? file_scene->name : request.scene;
   const std::string output_file =
-      options.output_file.value_or(request.scene + renderer::file_extension(request.output.format));
+      options.output_file.value_or(scene_name + renderer::file_extension(request.output.format));
   reconcile_format(request, output_file, format_given);
 
   vkx::DeviceOptions device_options = vkx::DeviceOptions::from_environment();
@@ -90,7 +125,16 @@ int run(int argc, char** argv) {
   if (options.validation) device_options.validation = true;
   vkx::Device device(device_options);
   renderer::Renderer renderer(device);
-  renderer::RenderResult result = renderer.render(request);
+  renderer::RenderResult result;
+  if (file_scene) {
+    try {
+      result = renderer.render(*file_scene, request, renderer::readback_for(request.output));
+    } catch (const scene::LoadError& e) {
+      throw SceneFileError(*options.scene_file, e.what());
+    }
+  } else {
+    result = renderer.render(request);
+  }
 
   const auto encode_start = std::chrono::steady_clock::now();
   const std::vector<std::uint8_t> bytes = renderer::encode_output(result, request.output.format);
@@ -123,6 +167,9 @@ int main(int argc, char** argv) {
   } catch (const cli::UsageError& e) {
     std::fprintf(stderr, "lpv-render: %s\n\n%s", e.what(), cli::usage());
     return kExitBadInput;
+  } catch (const SceneFileError& e) {
+    std::fprintf(stderr, "lpv-render: %s\n", e.what());
+    return kExitBadSceneFile;
   } catch (const api::RequestError& e) {
     std::fprintf(stderr, "lpv-render: bad request: %s\n", e.what());
     return kExitBadInput;
