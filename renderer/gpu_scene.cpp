@@ -3,6 +3,8 @@
 #include "renderer/gpu_types.hpp"
 #include "renderer/lpv/emitter_surfels.hpp"
 
+#include <algorithm>
+
 namespace renderer {
 
 GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, const TextureSetLayout& texture_layout) {
@@ -21,7 +23,16 @@ GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, 
   g.emitter_count = std::uint32_t(surfels.size());
   g.emitted_flux = emitted_flux_bound(surfels);
   g.index_count = static_cast<std::uint32_t>(scene.indices.size());
+  for (const scene::Material& m : scene.materials)
+    g.material_variants.push_back({m.double_sided, m.base_color_texture >= 0 &&
+                                                       std::size_t(m.base_color_texture) < scene.textures.size()});
   g.draws = scene.draws;
+  std::stable_sort(g.draws.begin(), g.draws.end(), [&](const scene::Draw& a, const scene::Draw& b) {
+    return g.material_variants[a.material].index() < g.material_variants[b.material].index();
+  });
+  for (const scene::Draw& d : g.draws)
+    if (g.variants_in_use.empty() || g.variants_in_use.back().index() != g.material_variants[d.material].index())
+      g.variants_in_use.push_back(g.material_variants[d.material]);
   return g;
 }
 

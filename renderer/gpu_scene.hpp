@@ -5,9 +5,22 @@
 #include "renderer/scene/scene.hpp"
 #include "renderer/vulkan/resources.hpp"
 
+#include <array>
+#include <memory>
 #include <vector>
 
 namespace renderer {
+
+// What a material's draws need compiled into their pipeline: lavapipe runs both sides of a
+// branch, so untextured and one-sided materials get shaders without the texture read or
+// the back-face handling (specialisation constants), and one-sided ones cull back faces.
+struct MaterialVariant {
+  bool double_sided = false;
+  bool textured = false;
+  std::uint32_t index() const { return (double_sided ? 2u : 0u) + (textured ? 1u : 0u); }
+  static MaterialVariant of_index(std::uint32_t i) { return {(i & 2u) != 0, (i & 1u) != 0}; }
+};
+inline constexpr std::uint32_t kMaterialVariants = 4;
 
 struct GpuScene {
   vkx::Buffer vertices;   // scene::Vertex
@@ -18,7 +31,9 @@ struct GpuScene {
   std::uint32_t emitter_count = 0;
   double emitted_flux = 0.0;  // the largest channel of their summed flux (W)
   std::uint32_t index_count = 0;
-  std::vector<scene::Draw> draws;
+  std::vector<scene::Draw> draws;              // grouped by their material's variant
+  std::vector<MaterialVariant> material_variants;  // per material
+  std::vector<MaterialVariant> variants_in_use;    // of the draws, in their order
 
   static GpuScene upload(const vkx::Device& device, const scene::Scene& scene, const TextureSetLayout& texture_layout);
 
@@ -27,13 +42,21 @@ struct GpuScene {
 
   // Binds the vertex and index buffers for drawing.
   void bind_geometry(VkCommandBuffer cmd) const;
-  // Draws every draw of the scene with `pipeline`, its material's texture bound as set 1;
-  // `push(draw)` sets the draw's push constants first.
-  template <typename Push>
-  void draw_all(VkCommandBuffer cmd, VkPipelineLayout pipeline_layout, Push push) const {
+  // Draws every draw of the scene: `bind(variant)` binds the pipeline for the material
+  // variant and returns its layout; the material's texture is bound as set 1 and
+  // `push(draw)` sets the draw's push constants.
+  template <typename Bind, typename Push>
+  void draw_all(VkCommandBuffer cmd, Bind bind, Push push) const {
+    std::uint32_t bound = kMaterialVariants;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
     for (const scene::Draw& draw : draws) {
+      const MaterialVariant variant = material_variants[draw.material];
+      if (variant.index() != bound) {
+        layout = bind(variant);
+        bound = variant.index();
+      }
       const VkDescriptorSet set = textures.set_of(draw.material);
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_layout, 1, 1, &set, 0, nullptr);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &set, 0, nullptr);
       push(draw);
       vkCmdDrawIndexed(cmd, draw.index_count, 1, draw.first_index, 0, 0);
     }

@@ -14,7 +14,8 @@ layout(location = 2) in vec2 in_uv;
 layout(std430, set = 0, binding = 0) readonly buffer Views { GpuRsmView views[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 1, binding = 0) uniform sampler2D base_color_texture;  // white when untextured
+layout(set = 1, binding = 0) uniform sampler2D base_color_texture;  // read when TEXTURED
+layout(constant_id = 0) const bool TEXTURED = false;
 layout(push_constant) uniform Draw { uint view; uint material; } draw;
 
 layout(location = 0) out vec4 out_position;  // xyz: world position; w: 1 (0 = nothing seen)
@@ -35,7 +36,8 @@ void main() {
   GpuLight light = lights[view.info.x];
   GpuMaterial material = materials[draw.material];
   vec3 n = normalize(in_normal);
-  vec3 albedo = material.base_color.rgb * texture(base_color_texture, in_uv).rgb;
+  vec3 albedo = material.base_color.rgb;
+  if (TEXTURED) albedo *= texture(base_color_texture, in_uv).rgb;
   float texel = view.axis.w;  // texel side: at unit distance (perspective) or in metres
 
   vec3 to_light;

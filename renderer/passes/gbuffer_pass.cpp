@@ -8,45 +8,65 @@
 
 namespace renderer {
 
-GBufferPass::GBufferPass(const vkx::Device& device, const TextureSetLayout& textures) : device_(device) {
+namespace {
+
+vkx::PipelineLayoutDesc gbuffer_layout(const TextureSetLayout& textures) {
   vkx::PipelineLayoutDesc layout;
   layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT),
                      vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
   layout.draw_sets = {textures.handle()};
   layout.push_constant_bytes = sizeof(std::uint32_t);
   layout.push_constant_stages = VK_SHADER_STAGE_FRAGMENT_BIT;
+  return layout;
+}
+
+vkx::GraphicsPipelineDesc gbuffer_pipeline(MaterialVariant variant) {
   vkx::GraphicsPipelineDesc g;
   g.vertex_spirv = spirv_gbuffer_vert;
   g.fragment_spirv = spirv_gbuffer_frag;
+  g.fragment_specialization = {variant.double_sided, variant.textured};
   g.vertex_input = {sizeof(scene::Vertex),
                     {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
                      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
                      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv)}}};
   g.color_formats = {FrameTargets::kPositionFormat, FrameTargets::kNormalFormat, FrameTargets::kAlbedoFormat};
   g.depth_format = FrameTargets::kDepthFormat;
-  // No culling: the fragment shader drops the back faces of one-sided materials only.
   // Counter-clockwise front faces as in glTF: the projection's Y flip and Vulkan's
   // Y-down framebuffer cancel, so the winding arrives as it was authored.
-  g.cull_mode = VK_CULL_MODE_NONE;
+  g.cull_mode = variant.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
   g.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  pipeline_ = vkx::Pipeline(device, layout, g);
+  return g;
+}
+
+}  // namespace
+
+GBufferPass::GBufferPass(const vkx::Device& device, const TextureSetLayout& textures)
+    : device_(device), pipelines_(device, gbuffer_layout(textures), gbuffer_pipeline) {
+  pipelines_.get({});  // the variant every scene without textures uses, made with the others at start
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets,
                          const vkx::Buffer& frame) const {
-  vkx::DescriptorWriter(pipeline_.descriptor_set())
-      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.handle())
-      .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.materials.handle())
-      .apply(device_.handle());
-
+  for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
+    vkx::DescriptorWriter(pipelines_.get(variant).descriptor_set())
+        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.handle())
+        .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.materials.handle())
+        .apply(device_.handle());
   const std::array<const vkx::Image*, 3> colors{&targets.position, &targets.normal, &targets.albedo};
   vkx::prepare_attachments(cmd, colors, &targets.depth);
   const std::array<VkImageView, 3> views{targets.position.view(), targets.normal.view(), targets.albedo.view()};
   vkx::begin_cleared_rendering(device_, cmd, views, targets.depth.view(), {targets.width, targets.height}, false);
   if (scene.index_count > 0) {
-    pipeline_.bind(cmd);
     scene.bind_geometry(cmd);
-    scene.draw_all(cmd, pipeline_.layout(), [&](const scene::Draw& draw) { pipeline_.push(cmd, draw.material); });
+    const vkx::Pipeline* bound = nullptr;
+    scene.draw_all(
+        cmd,
+        [&](MaterialVariant variant) {
+          bound = &pipelines_.get(variant);
+          bound->bind(cmd);
+          return bound->layout();
+        },
+        [&](const scene::Draw& draw) { bound->push(cmd, draw.material); });
   }
   device_.cmd_end_rendering(cmd);
 

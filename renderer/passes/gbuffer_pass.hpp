@@ -1,11 +1,11 @@
 // The camera's G-buffer: world position with material id, normal and albedo (base colour
-// times texture) per pixel. Back faces of one-sided materials are dropped; those of
+// times texture) per pixel. Back faces of one-sided materials are culled; those of
 // double-sided ones are drawn with their normal flipped.
 #pragma once
 
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_scene.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "renderer/passes/material_pipelines.hpp"
 
 namespace renderer {
 
@@ -18,7 +18,7 @@ class GBufferPass {
 
  private:
   const vkx::Device& device_;
-  vkx::Pipeline pipeline_;
+  MaterialPipelines pipelines_;
 };
 
 }  // namespace renderer

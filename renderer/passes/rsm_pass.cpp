@@ -14,9 +14,7 @@ struct DrawConstants {
   std::uint32_t material;
 };
 
-}  // namespace
-
-RsmPass::RsmPass(const vkx::Device& device, const TextureSetLayout& textures) : device_(device) {
+vkx::PipelineLayoutDesc rsm_layout(const TextureSetLayout& textures) {
   const VkShaderStageFlags vs_fs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   vkx::PipelineLayoutDesc layout;
   layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vs_fs),
@@ -25,9 +23,14 @@ RsmPass::RsmPass(const vkx::Device& device, const TextureSetLayout& textures) : 
   layout.draw_sets = {textures.handle()};
   layout.push_constant_bytes = sizeof(DrawConstants);
   layout.push_constant_stages = vs_fs;
+  return layout;
+}
+
+vkx::GraphicsPipelineDesc rsm_pipeline(MaterialVariant variant) {
   vkx::GraphicsPipelineDesc g;
   g.vertex_spirv = spirv_rsm_vert;
   g.fragment_spirv = spirv_rsm_frag;
+  g.fragment_specialization = {variant.textured};
   g.vertex_input = {sizeof(scene::Vertex),
                     {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
                      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
@@ -35,16 +38,27 @@ RsmPass::RsmPass(const vkx::Device& device, const TextureSetLayout& textures) : 
   g.color_formats = {RsmMaps::kPositionFormat, RsmMaps::kNormalFormat, RsmMaps::kFluxFormat};
   g.depth_format = RsmMaps::kDepthFormat;
   g.cull_mode = VK_CULL_MODE_NONE;  // the first surface the light meets, whichever way it faces
-  pipeline_ = vkx::Pipeline(device, layout, g);
+  return g;
+}
+
+// The RSM draws both sides of every surface; only texturing selects its pipeline.
+MaterialVariant rsm_variant(MaterialVariant v) { return {false, v.textured}; }
+
+}  // namespace
+
+RsmPass::RsmPass(const vkx::Device& device, const TextureSetLayout& textures)
+    : device_(device), pipelines_(device, rsm_layout(textures), rsm_pipeline) {
+  pipelines_.get({});
 }
 
 void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& maps, const vkx::Buffer& views,
                      const vkx::Buffer& lights) const {
-  vkx::DescriptorWriter(pipeline_.descriptor_set())
-      .buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, views.handle())
-      .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights.handle())
-      .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.materials.handle())
-      .apply(device_.handle());
+  for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
+    vkx::DescriptorWriter(pipelines_.get(rsm_variant(variant)).descriptor_set())
+        .buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, views.handle())
+        .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights.handle())
+        .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.materials.handle())
+        .apply(device_.handle());
   const std::array<const vkx::Image*, 3> colors{&maps.position, &maps.normal, &maps.flux};
   vkx::prepare_attachments(cmd, colors, &maps.depth);
   for (std::uint32_t layer = 0; layer < maps.layers; ++layer) {
@@ -53,10 +67,16 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
     vkx::begin_cleared_rendering(device_, cmd, views, maps.depth.layer_view(layer),
                                  {maps.resolution, maps.resolution}, false);
     if (scene.index_count > 0) {
-      pipeline_.bind(cmd);
       scene.bind_geometry(cmd);
-      scene.draw_all(cmd, pipeline_.layout(),
-                     [&](const scene::Draw& draw) { pipeline_.push(cmd, DrawConstants{layer, draw.material}); });
+      const vkx::Pipeline* bound = nullptr;
+      scene.draw_all(
+          cmd,
+          [&](MaterialVariant variant) {
+            bound = &pipelines_.get(rsm_variant(variant));
+            bound->bind(cmd);
+            return bound->layout();
+          },
+          [&](const scene::Draw& draw) { bound->push(cmd, DrawConstants{layer, draw.material}); });
     }
     device_.cmd_end_rendering(cmd);
   }

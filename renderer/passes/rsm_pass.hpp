@@ -4,7 +4,7 @@
 
 #include "renderer/gpu_scene.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "renderer/passes/material_pipelines.hpp"
 
 namespace renderer {
 
@@ -22,7 +22,7 @@ class RsmPass {
 
  private:
   const vkx::Device& device_;
-  vkx::Pipeline pipeline_;
+  MaterialPipelines pipelines_;  // by texturing only: both sides of every surface are drawn
 };
 
 }  // namespace renderer

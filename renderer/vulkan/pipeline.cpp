@@ -63,6 +63,18 @@ void Pipeline::create_layout(const PipelineLayoutDesc& desc) {
   VK_CHECK(vkCreatePipelineLayout(device_, &layout_ci, nullptr, &layout_));
 }
 
+namespace {
+
+// Constant_id i takes values[i] (32-bit each); the info points into `entries` and `values`.
+VkSpecializationInfo specialization_info(std::span<const std::uint32_t> values,
+                                         std::vector<VkSpecializationMapEntry>& entries) {
+  for (std::uint32_t i = 0; i < values.size(); ++i)
+    entries.push_back({i, i * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+  return {std::uint32_t(entries.size()), entries.data(), values.size_bytes(), values.data()};
+}
+
+}  // namespace
+
 Pipeline::Pipeline(const Device& device, const PipelineLayoutDesc& layout, std::span<const std::uint32_t> compute_spirv,
                    std::span<const std::uint32_t> specialization)
     : device_(device.handle()), bind_point_(VK_PIPELINE_BIND_POINT_COMPUTE) {
@@ -70,10 +82,7 @@ Pipeline::Pipeline(const Device& device, const PipelineLayoutDesc& layout, std::
     create_layout(layout);
     ModuleGuard guard{device_, {create_module(device_, compute_spirv)}};
     std::vector<VkSpecializationMapEntry> entries;
-    for (std::uint32_t i = 0; i < specialization.size(); ++i)
-      entries.push_back({i, i * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
-    const VkSpecializationInfo spec{std::uint32_t(entries.size()), entries.data(), specialization.size_bytes(),
-                                    specialization.data()};
+    const VkSpecializationInfo spec = specialization_info(specialization, entries);
     VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     ci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -97,12 +106,15 @@ Pipeline::Pipeline(const Device& device, const PipelineLayoutDesc& layout, const
     stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
     stages[0].module = guard.modules[0];
     stages[0].pName = "main";
+    std::vector<VkSpecializationMapEntry> entries;
+    const VkSpecializationInfo spec = specialization_info(g.fragment_specialization, entries);
     if (!g.fragment_spirv.empty()) {
       guard.modules.push_back(create_module(device_, g.fragment_spirv));
       VkPipelineShaderStageCreateInfo fs{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
       fs.stage = VK_SHADER_STAGE_FRAGMENT_BIT;
       fs.module = guard.modules[1];
       fs.pName = "main";
+      fs.pSpecializationInfo = g.fragment_specialization.empty() ? nullptr : &spec;
       stages.push_back(fs);
     }
 

@@ -31,6 +31,7 @@ struct VertexInputDesc {
 struct GraphicsPipelineDesc {
   std::span<const std::uint32_t> vertex_spirv;
   std::span<const std::uint32_t> fragment_spirv;  // empty: depth-only
+  std::vector<std::uint32_t> fragment_specialization;  // value of the fragment shader's constant_id i
   VertexInputDesc vertex_input;
   std::vector<VkFormat> color_formats;
   VkFormat depth_format = VK_FORMAT_UNDEFINED;

@@ -120,6 +120,26 @@ TEST_F(GltfScenes, TheFilesCameraIsTheDefault) {
   EXPECT_GT(gpu_test::pixel(depth.linear, 32, 32).r, 0.7f) << "the white floor is under the image centre";
 }
 
+TEST_F(GltfScenes, BackFacesAreDrawnOnlyForDoubleSidedMaterials) {
+  for (bool double_sided : {false, true}) {
+    GltfBuilder b;
+    const int m = b.add_material({{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1}}}}, {"doubleSided", double_sided}});
+    b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 0, -1}, 2, m)}});  // faces away from the camera
+    b.add_node({{"camera", b.add_camera({{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}})},
+                {"translation", {0, 0, 3}}});
+    const scene::Scene scene = load(b);
+    auto& r = gpu_test::renderer();
+    const glm::vec3 albedo = gpu_test::pixel(r.render(scene, request(api::View::albedo), renderer::kReadbackLinear).linear, 32, 32);
+    const glm::vec3 normal = gpu_test::pixel(r.render(scene, request(api::View::normal), renderer::kReadbackLinear).linear, 32, 32);
+    if (double_sided) {
+      EXPECT_NEAR(albedo.r, 0.8f, 0.01f);
+      EXPECT_GT(normal.z, 0.9f) << "the back face's normal is flipped toward the camera";
+    } else {
+      EXPECT_EQ(albedo, glm::vec3(0.0f)) << "a one-sided quad seen from behind is not there";
+    }
+  }
+}
+
 TEST_F(GltfScenes, SceneCacheLoadsOnceAndEvictsTheLeastRecentlyUsed) {
   int loads = 0;
   renderer::RendererOptions options;
