@@ -47,6 +47,14 @@ std::string to_string(Tonemap t) {
   throw std::invalid_argument("api::to_string: invalid Tonemap");
 }
 
+std::string to_string(PlanMode p) {
+  switch (p) {
+    case PlanMode::auto_: return "auto";
+    case PlanMode::exact: return "exact";
+  }
+  throw std::invalid_argument("api::to_string: invalid PlanMode");
+}
+
 void apply_edit(Light& light, const LightEdit& edit) {
   light.type = edit.type.value_or(light.type);
   light.position = edit.position.value_or(light.position);

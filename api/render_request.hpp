@@ -57,6 +57,9 @@ struct Camera {
 enum class View { final_, direct, indirect, lpv, albedo, normal, depth };
 enum class ImageFormat { png, exr, pfm };
 enum class Tonemap { none, reinhard, aces };
+// auto: the planner skips and shortens what the scene does not need (docs/planner.md);
+// exact: every pass runs as requested.
+enum class PlanMode { auto_, exact };
 
 struct Output {
   std::uint32_t width = 512;
@@ -87,6 +90,9 @@ struct Lpv {
   std::uint32_t bounces = 1;           // 2: light the geometry volume blocks is reflected on
   float injection_offset = 0.5f;       // VPLs move this many cells along their normal
   float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
+  // With plan "auto": propagation stops once the remaining iterations would add less than
+  // this fraction of the light accumulated so far (estimated from its decay; 0: never early).
+  float convergence = 1.0e-3f;
   std::optional<glm::vec3> origin;     // minimum corner of the innermost cascade; absent: fitted
   std::optional<float> extent;         // its longest edge in metres; absent: fitted
 };
@@ -99,6 +105,7 @@ struct RenderRequest {
   Output output;
   Shadows shadows;
   Lpv lpv;
+  PlanMode plan = PlanMode::auto_;
   std::uint32_t repeat = 1;  // frames to render and time
 };
 
@@ -132,5 +139,6 @@ std::string to_string(LightType t);
 std::string to_string(View v);
 std::string to_string(ImageFormat f);
 std::string to_string(Tonemap t);
+std::string to_string(PlanMode p);
 
 }  // namespace api

@@ -38,6 +38,7 @@ struct LpvCascadeStats {
   std::array<std::uint32_t, 3> grid{};
   Rgb injected_flux{};               // flux of the VPLs that landed in this cascade
   std::vector<Rgb> propagated_flux;  // flux of each iteration's propagated grid (1..N)
+  std::uint32_t iterations = 0;      // propagation steps that ran (the planner may stop early)
 };
 
 struct LpvStats {
@@ -60,6 +61,8 @@ struct RenderStats {
   std::string device;
   std::string driver;
   std::optional<LpvStats> lpv;  // present when LPV passes ran
+  std::string plan;                    // "auto" or "exact"
+  std::vector<std::string> decisions;  // what the planner changed from the request, and why
   std::vector<std::string> warnings;
 };
 

@@ -259,10 +259,11 @@ constexpr std::array views{View::final_, View::direct, View::indirect, View::lpv
                            View::albedo, View::normal, View::depth};
 constexpr std::array formats{ImageFormat::png, ImageFormat::exr, ImageFormat::pfm};
 constexpr std::array tonemaps{Tonemap::none, Tonemap::reinhard, Tonemap::aces};
+constexpr std::array plan_modes{PlanMode::auto_, PlanMode::exact};
 
 using Keys = std::string_view;
-constexpr std::array<Keys, 8> request_keys{"scene",  "camera",  "lights", "light_edits",
-                                           "output", "shadows", "lpv",    "repeat"};
+constexpr std::array<Keys, 9> request_keys{"scene",  "camera",  "lights", "light_edits", "output",
+                                           "shadows", "lpv",    "plan",   "repeat"};
 constexpr std::array<Keys, 6> camera_keys{"position", "target", "up", "fov_y_deg", "near", "far"};
 constexpr std::array<Keys, 8> light_keys{"type",      "position", "direction",      "color",
                                          "intensity", "range",    "inner_cone_deg", "outer_cone_deg"};
@@ -273,9 +274,9 @@ constexpr auto light_edit_keys = [] {
 }();
 constexpr std::array<Keys, 6> output_keys{"width", "height", "format", "view", "exposure", "tonemap"};
 constexpr std::array<Keys, 2> shadows_keys{"enabled", "resolution"};
-constexpr std::array<Keys, 13> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
+constexpr std::array<Keys, 14> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
                                         "vpl_downsample", "occlusion", "occlusion_sources", "bounces",
-                                        "injection_offset", "intensity", "origin", "extent"};
+                                        "injection_offset", "intensity", "convergence", "origin", "extent"};
 constexpr std::string_view occlusion_source_rsm = "rsm";
 constexpr std::string_view occlusion_source_camera = "camera";
 
@@ -436,6 +437,7 @@ Lpv read_lpv(const Field& f) {
   if (auto v = obj.get("bounces")) lpv.bounces = as_uint<std::uint32_t>(*v, 1, limits::max_bounces);
   if (auto v = obj.get("injection_offset")) lpv.injection_offset = as_float(*v, 0.0f, limits::max_injection_offset);
   if (auto v = obj.get("intensity")) lpv.intensity = as_float(*v, 0.0f, limits::max_lpv_intensity);
+  if (auto v = obj.get("convergence")) lpv.convergence = as_float(*v, 0.0f, 1.0f);
   if (auto v = obj.get("origin")) lpv.origin = as_point(*v);
   if (auto v = obj.get("extent")) {
     lpv.extent = as_float(*v, 0.0f, 2.0f * limits::max_abs_coordinate);
@@ -459,6 +461,7 @@ RenderRequest read_request(const json& document) {
   if (auto v = obj.get("output")) request.output = read_output(*v);
   if (auto v = obj.get("shadows")) request.shadows = read_shadows(*v);
   if (auto v = obj.get("lpv")) request.lpv = read_lpv(*v);
+  if (auto v = obj.get("plan")) request.plan = as_enum(*v, plan_modes);
   if (auto v = obj.get("repeat")) request.repeat = as_uint<std::uint32_t>(*v, 1, limits::max_repeat);
   return request;
 }
@@ -563,7 +566,8 @@ json lpv_json(const Lpv& lpv) {
             {"occlusion_sources", std::move(sources)},
             {"bounces", lpv.bounces},
             {"injection_offset", shortest(lpv.injection_offset)},
-            {"intensity", shortest(lpv.intensity)}};
+            {"intensity", shortest(lpv.intensity)},
+            {"convergence", shortest(lpv.convergence)}};
   if (lpv.origin) j["origin"] = vector_json(*lpv.origin);
   if (lpv.extent) j["extent"] = shortest(*lpv.extent);
   return j;
@@ -578,7 +582,8 @@ json lpv_stats_json(const LpvStats& lpv) {
                         {"cell_size", c.cell_size},
                         {"grid", c.grid},
                         {"injected_flux", c.injected_flux},
-                        {"propagated_flux", c.propagated_flux}});
+                        {"propagated_flux", c.propagated_flux},
+                        {"iterations", c.iterations}});
   }
   return {{"vpl_count", lpv.vpl_count},
           {"vpl_flux", lpv.vpl_flux},
@@ -617,6 +622,7 @@ nlohmann::json to_json(const RenderRequest& request) {
                  {"tonemap", to_string(out.tonemap)}};
   j["shadows"] = {{"enabled", request.shadows.enabled}, {"resolution", request.shadows.resolution}};
   j["lpv"] = lpv_json(request.lpv);
+  j["plan"] = to_string(request.plan);
   j["repeat"] = request.repeat;
   return j;
 }
@@ -646,6 +652,7 @@ nlohmann::json to_json(const RenderStats& stats) {
           {"wall_ms", summary_json(stats.wall_ms)},
           {"device", stats.device},
           {"driver", stats.driver},
+          {"plan", {{"mode", stats.plan}, {"decisions", stats.decisions}}},
           {"warnings", stats.warnings}};
   if (stats.lpv) result["lpv"] = lpv_stats_json(*stats.lpv);
   return result;

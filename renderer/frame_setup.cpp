@@ -84,12 +84,13 @@ CameraSetup setup_camera(const api::Camera& camera, const scene::Bounds& bounds,
   return c;
 }
 
-std::vector<LightView> light_views(const std::vector<api::Light>& lights, const scene::Bounds& bounds) {
+std::vector<LightView> light_views(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
+                                   const std::vector<bool>& drawn) {
   std::vector<LightView> views;
   if (bounds.radius() <= 0.0f) return views;
   for (std::uint32_t index = 0; index < lights.size(); ++index) {
     const api::Light& light = lights[index];
-    if (!emits(light)) continue;
+    if (!emits(light) || (!drawn.empty() && !drawn[index])) continue;
     if (light.type == api::LightType::directional) {
       const float r = bounds.radius();
       const glm::vec3 eye = bounds.center() - light.direction * (1.05f * r);
@@ -115,9 +116,9 @@ std::vector<LightView> light_views(const std::vector<api::Light>& lights, const 
 }
 
 LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
-                        const api::Shadows& shadows) {
+                        const api::Shadows& shadows, const std::vector<bool>& drawn) {
   LightSetup setup;
-  setup.views = light_views(lights, bounds);
+  setup.views = light_views(lights, bounds, drawn);
   for (const api::Light& light : lights) {
     gpu::GpuLight g{};
     g.position = glm::vec4(light.position, 1.0f);

@@ -43,7 +43,9 @@ struct LightView {
 // The views of every light that emits: a perspective view for a spot, six cube faces (+X, -X,
 // +Y, -Y, +Z, -Z) for a point light and for a spot wider than a perspective map can hold,
 // an orthographic view fitted to the scene for a directional light.
-std::vector<LightView> light_views(const std::vector<api::Light>& lights, const scene::Bounds& bounds);
+// `drawn[i]` false: light i gets no view (the planner found it lights nothing); empty: all do.
+std::vector<LightView> light_views(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
+                                   const std::vector<bool>& drawn = {});
 
 struct LightSetup {
   std::vector<gpu::GpuLight> lights;
@@ -53,6 +55,6 @@ struct LightSetup {
 
 // GPU lights, their views, and the shadow maps' view-projections when shadows are on.
 LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
-                        const api::Shadows& shadows);
+                        const api::Shadows& shadows, const std::vector<bool>& drawn = {});
 
 }  // namespace renderer

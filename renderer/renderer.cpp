@@ -1,6 +1,7 @@
 #include "renderer/renderer.hpp"
 
 #include "api/request_error.hpp"
+#include "renderer/frame_plan.hpp"
 #include "renderer/frame_setup.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_scene.hpp"
@@ -33,33 +34,15 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The passes of a frame. The LPV grid passes run once per cascade.
-enum Pass : std::uint32_t {
-  kShadow,
-  kRsm,
-  kGBuffer,
-  kInject,
-  kGeometryVolume,
-  kPropagate,
-  kShade,
-  kTonemap,
-  kReadback,
-  kPassCount
-};
-constexpr const char* kPassNames[kPassCount] = {"shadow",    "rsm",   "gbuffer", "inject",  "geometry_volume",
-                                                "propagate", "shade", "tonemap", "readback"};
-bool is_grid_pass(std::uint32_t p) { return p == kInject || p == kGeometryVolume || p == kPropagate; }
-
 // Shadow maps and RSMs live in host memory on lavapipe, and so do the grids: bound them so a
 // request cannot exhaust it.
 constexpr std::uint64_t kShadowAtlasBudgetBytes = 1ull << 30;
 constexpr std::uint64_t kRsmBudgetBytes = 1ull << 30;
 constexpr std::uint64_t kLpvBudgetBytes = 2ull << 30;
 
-bool needs_direct_light(api::View v) { return v == api::View::final_ || v == api::View::direct; }
-bool needs_indirect_light(api::View v) {
-  return v == api::View::final_ || v == api::View::indirect || v == api::View::lpv;
-}
+// Propagation steps per submission when the plan may stop early: between chunks the flux of
+// the last step is read back, so the stop comes at most this many steps late.
+constexpr std::uint32_t kConvergenceChunk = 4;
 
 std::uint32_t gpu_view(api::View v) {
   switch (v) {
@@ -72,46 +55,6 @@ std::uint32_t gpu_view(api::View v) {
     case api::View::depth: return gpu::VIEW_DEPTH;
   }
   return gpu::VIEW_FINAL;
-}
-
-// What one request runs, decided before anything is recorded.
-struct FramePlan {
-  bool run[kPassCount] = {};
-  std::string reason[kPassCount];
-};
-
-FramePlan plan_frame(const api::RenderRequest& request, const LightSetup& lights, const GpuScene& scene,
-                     unsigned readback) {
-  FramePlan plan;
-  const api::View view = request.output.view;
-  const std::string view_name = "view '" + api::to_string(view) + "'";
-  plan.run[kGBuffer] = plan.run[kShade] = plan.run[kReadback] = true;
-  plan.run[kTonemap] = (readback & kReadbackDisplay) != 0;
-  if (!plan.run[kTonemap]) plan.reason[kTonemap] = "no 8-bit image requested";
-
-  if (!needs_direct_light(view))
-    plan.reason[kShadow] = view_name + " needs no direct light";
-  else if (!request.shadows.enabled)
-    plan.reason[kShadow] = "shadows disabled";
-  else if (lights.shadow_views.empty())
-    plan.reason[kShadow] = "no light emits";
-  plan.run[kShadow] = plan.reason[kShadow].empty();
-
-  std::string lpv_reason;
-  if (!needs_indirect_light(view))
-    lpv_reason = view_name + " needs no indirect light";
-  else if (!request.lpv.enabled)
-    lpv_reason = "lpv disabled";
-  else if (lights.views.empty() && scene.emitter_count == 0)
-    lpv_reason = "no light emits and no surface is emissive";
-  else if (request.lpv.intensity == 0.0f && view != api::View::lpv)
-    lpv_reason = "lpv.intensity is 0";
-  for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.reason[p] = lpv_reason;
-  if (lpv_reason.empty() && lights.views.empty()) plan.reason[kRsm] = "no light emits (emissive surfaces inject directly)";
-  if (lpv_reason.empty() && !request.lpv.occlusion) plan.reason[kGeometryVolume] = "occlusion disabled";
-  if (lpv_reason.empty() && request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
-  for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.run[p] = plan.reason[p].empty();
-  return plan;
 }
 
 std::string mib(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
@@ -200,8 +143,15 @@ struct Renderer::Impl {
   RenderResult render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
                       unsigned readback, double load_ms, double upload_ms);
   void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
-  void record_pass(Pass pass, std::uint32_t cascade, const Frame& frame);
-  api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran, std::uint32_t emitters) const;
+  // Steps first .. first + count - 1 of propagation (1-based); other passes ignore them.
+  struct Steps {
+    std::uint32_t first = 1;
+    std::uint32_t count = 0;
+  };
+  void record_pass(Pass pass, std::uint32_t cascade, Steps steps, const Frame& frame);
+  api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran, std::uint32_t emitters,
+                          const std::vector<std::uint32_t>& iterations_run) const;
+  bool converged(std::uint32_t cascade, std::uint32_t step, std::uint32_t steps, float convergence) const;
   LpvSnapshot lpv_snapshot(const LpvSetup& lpv) const;
 };
 
@@ -297,11 +247,25 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const std::vector<api::Light> lights = resolve_lights(scene, request);
   const api::Camera camera_request = request.camera.value_or(scene.camera);
   const CameraSetup camera = setup_camera(camera_request, scene.bounds, float(out.width) / float(out.height));
-  const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows);
-  const FramePlan plan = plan_frame(request, light_setup, gpu, readback);
+  auto plan_start = Clock::now();
+  FramePlan plan = plan_frame({request, lights, scene, gpu.emitter_count, (readback & kReadbackDisplay) != 0});
+  double plan_ms = ms_since(plan_start);
+  const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn);
   allocate(plan, request, light_setup);
   const LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
                                        camera_request.fov_y_deg, out.height);
+  // Propagation steps per cascade: as requested, or (auto) no more than light needs to
+  // cross the part of the scene inside the cascade.
+  plan_start = Clock::now();
+  std::vector<std::uint32_t> iterations(lpv_setup.cascades.size(), request.lpv.iterations);
+  for (std::uint32_t c = 0; c < iterations.size() && request.plan == api::PlanMode::auto_ && plan.run[kPropagate]; ++c) {
+    iterations[c] = iterations_needed(lpv_setup.cascades[c], scene.bounds, request.lpv.iterations);
+    if (iterations[c] < request.lpv.iterations)
+      plan.decisions.push_back("cascade " + std::to_string(c) + ": " + std::to_string(iterations[c]) + " of " +
+                               std::to_string(request.lpv.iterations) +
+                               " iterations, as many as light needs to cross the scene's cells in it");
+  }
+  plan_ms += ms_since(plan_start);
 
   gpu::GpuFrame frame{};
   frame.view_proj = camera.view_proj;
@@ -342,22 +306,35 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   std::vector<double> record_ms, wait_ms, readback_ms, wall_ms, total_gpu_ms;
   std::vector<std::vector<double>> pass_ms(kPassCount);
   std::vector<std::vector<std::vector<double>>> cascade_ms(kPassCount, std::vector<std::vector<double>>(cascades));
+  std::vector<std::uint32_t> iterations_run(iterations.size(), 0);
   for (std::uint32_t f = 0; f < request.repeat; ++f) {
     const auto frame_start = Clock::now();
     double frame_record_ms = 0.0, frame_wait_ms = 0.0, frame_gpu_ms = 0.0;
     std::vector<double> frame_pass_ms(kPassCount, 0.0);
     for (const auto& [p, c] : schedule) {
-      const auto record_start = Clock::now();
-      record_pass(p, c, context);
-      frame_record_ms += ms_since(record_start);
-      const auto submit_start = Clock::now();
-      device.submit_and_wait(commands);
-      const double waited = ms_since(submit_start);
-      frame_wait_ms += waited;
-      const double gpu_ms = timer.device_ms(waited);
-      if (is_grid_pass(p)) cascade_ms[p][c].push_back(gpu_ms);
-      frame_pass_ms[p] += gpu_ms;
-      frame_gpu_ms += gpu_ms;
+      // Propagation that may stop early runs in chunks, the flux of each chunk's last step
+      // read in between; every other pass is one submission.
+      const std::uint32_t steps = p == kPropagate ? iterations[c] : 1;
+      const std::uint32_t chunk = p == kPropagate && plan.convergence > 0.0f ? kConvergenceChunk : steps;
+      double pass_gpu_ms = 0.0;
+      std::uint32_t done = 0;
+      while (done < steps) {
+        const std::uint32_t n = std::min(chunk, steps - done);
+        const auto record_start = Clock::now();
+        record_pass(p, c, {done + 1, n}, context);
+        frame_record_ms += ms_since(record_start);
+        const auto submit_start = Clock::now();
+        device.submit_and_wait(commands);
+        const double waited = ms_since(submit_start);
+        frame_wait_ms += waited;
+        pass_gpu_ms += timer.device_ms(waited);
+        done += n;
+        if (p == kPropagate && done < steps && converged(c, done, steps, plan.convergence)) break;
+      }
+      if (p == kPropagate) iterations_run[c] = done;
+      if (is_grid_pass(p)) cascade_ms[p][c].push_back(pass_gpu_ms);
+      frame_pass_ms[p] += pass_gpu_ms;
+      frame_gpu_ms += pass_gpu_ms;
     }
     for (std::uint32_t p = 0; p < kPassCount; ++p)
       if (plan.run[p]) pass_ms[p].push_back(frame_pass_ms[p]);
@@ -378,6 +355,13 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.height = out.height;
   stats.view = api::to_string(out.view);
   stats.frames = request.repeat;
+  stats.plan = api::to_string(request.plan);
+  for (std::uint32_t c = 0; c < iterations.size() && plan.run[kPropagate]; ++c)
+    if (iterations_run[c] < iterations[c])
+      plan.decisions.push_back("cascade " + std::to_string(c) + ": converged after " + std::to_string(iterations_run[c]) +
+                               " of " + std::to_string(iterations[c]) +
+                               " iterations (the steps left would add less than lpv.convergence of the light)");
+  stats.decisions = plan.decisions;
   for (std::uint32_t p = 0; p < kPassCount; ++p) {
     api::PassStats ps;
     ps.name = kPassNames[p];
@@ -392,13 +376,14 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.cpu_ms["scene_load"] = api::TimeSummary::of({load_ms});
   stats.cpu_ms["scene_upload"] = api::TimeSummary::of({upload_ms});
   stats.cpu_ms["setup"] = api::TimeSummary::of({setup_ms});
+  stats.cpu_ms["plan"] = api::TimeSummary::of({plan_ms});
   stats.cpu_ms["record"] = api::TimeSummary::of(record_ms);
   stats.cpu_ms["submit_wait"] = api::TimeSummary::of(wait_ms);
   stats.cpu_ms["readback"] = api::TimeSummary::of(readback_ms);
   stats.wall_ms = api::TimeSummary::of(wall_ms);
   stats.device = device.info().name;
   stats.driver = device.info().driver;
-  if (plan.run[kInject]) stats.lpv = lpv_stats(request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count);
+  if (plan.run[kInject]) stats.lpv = lpv_stats(request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count, iterations_run);
   if (plan.run[kInject] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup);
   stats.warnings = scene.warnings;
   if (request.lpv.intensity != 1.0f && needs_indirect_light(out.view))
@@ -410,8 +395,31 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
 }
 
 // The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats.
+// Whether the steps after `step` (up to `steps`) would add less than `convergence` of the
+// light a cascade has accumulated so far: each step's flux (from the fixed-point sums the
+// passes left in flux_stats, largest channel) decays about geometrically once light has
+// spread, so the rest is the geometric tail f * r (1 - r^n) / (1 - r), with the ratio r
+// measured over the last chunk.
+bool Renderer::Impl::converged(std::uint32_t cascade, std::uint32_t step, std::uint32_t steps,
+                               float convergence) const {
+  volumes->flux_stats.invalidate();
+  auto flux = [&](std::uint32_t k) {
+    const glm::dvec3 f = volumes->flux_at(volumes->grid_flux_offset(cascade, k), 1.0);
+    return std::max({f.x, f.y, f.z});
+  };
+  double accumulated = 0.0;
+  for (std::uint32_t k = 0; k <= step; ++k) accumulated += flux(k);
+  const std::uint32_t back = std::min(step, kConvergenceChunk);
+  const double last = flux(step), earlier = flux(step - back);
+  if (!(accumulated > 0.0) || !(earlier > 0.0)) return accumulated > 0.0;  // nothing moves any more
+  const double r = std::pow(last / earlier, 1.0 / double(back));
+  if (!(r < 1.0)) return false;
+  const double tail = last * r * (1.0 - std::pow(r, double(steps - step))) / (1.0 - r);
+  return tail < double(convergence) * accumulated;
+}
+
 api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
-                                        std::uint32_t emitters) const {
+                                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run) const {
   volumes->flux_stats.invalidate();
   const double watts_per_unit = 1.0 / double(lpv.gpu.scales.x);
   auto rgb = [](glm::dvec3 v) { return api::Rgb{v.x, v.y, v.z}; };
@@ -427,7 +435,8 @@ api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup
     cs.cell_size = p.cell_size;
     cs.grid = {p.dims.x, p.dims.y, p.dims.z};
     cs.injected_flux = rgb(volumes->flux_at(volumes->grid_flux_offset(c, 0), watts_per_unit));
-    for (std::uint32_t k = 1; k <= volumes->iterations; ++k)
+    cs.iterations = iterations_run[c];
+    for (std::uint32_t k = 1; k <= iterations_run[c]; ++k)
       cs.propagated_flux.push_back(rgb(volumes->flux_at(volumes->grid_flux_offset(c, k), watts_per_unit)));
     stats.cascades.push_back(std::move(cs));
   }
@@ -481,7 +490,7 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv) const {
 }
 
 // Records one pass (for the grid passes: one cascade of it), bracketed by the pass timer.
-void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, const Frame& frame) {
+void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, const Frame& frame) {
   VK_CHECK(vkResetCommandBuffer(commands, 0));
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -512,7 +521,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, const Frame& 
                       *volumes);
       break;
     case kPropagate:
-      propagate.record(cmd, cascade, lpv.iterations, lpv_uniforms, *volumes);
+      propagate.record(cmd, cascade, steps.first, steps.count, lpv_uniforms, *volumes);
       break;
     case kShade:
       shade.record(cmd, frame.gpu, *targets,

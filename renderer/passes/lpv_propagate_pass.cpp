@@ -23,7 +23,7 @@ LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) 
                             spirv_lpv_propagate_comp);
 }
 
-void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t iterations,
+void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
                               const vkx::Buffer& params, const LpvVolumes& volumes) const {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
@@ -38,7 +38,7 @@ void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::u
       .apply(device_.handle());
   pipeline_.bind(cmd);
   const glm::uvec3 d = volumes.dims;
-  for (std::uint32_t k = 1; k <= iterations; ++k) {
+  for (std::uint32_t k = first; k < first + count; ++k) {
     pipeline_.push(cmd, IterationConstants{cascade, volumes.grid_flux_offset(cascade, k), k});
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
                   vkx::group_count(d.z, gpu::LPV_GROUP));

@@ -13,7 +13,9 @@ class LpvPropagatePass {
 
   // Expects the injected grid in the first half of volumes.grids, and the geometry volume's
   // faces when the frame's occlusion flag is set.
-  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t iterations, const vkx::Buffer& params,
+  // Records iterations first .. first + count - 1 (1-based: the ping-pong halves and the
+  // start of occlusion follow the iteration number, so a propagation may be cut in chunks).
+  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, const vkx::Buffer& params,
               const LpvVolumes& volumes) const;
 
  private:

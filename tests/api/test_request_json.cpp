@@ -105,6 +105,8 @@ void expect_same(const api::RenderRequest& a, const api::RenderRequest& b) {
   EXPECT_EQ(a.lpv.intensity, b.lpv.intensity);
   EXPECT_EQ(a.lpv.origin, b.lpv.origin);
   EXPECT_EQ(a.lpv.extent, b.lpv.extent);
+  EXPECT_EQ(a.lpv.convergence, b.lpv.convergence);
+  EXPECT_EQ(a.plan, b.plan);
   EXPECT_EQ(a.repeat, b.repeat);
 }
 
@@ -127,6 +129,18 @@ TEST(ToString, SpellsEveryEnumValueAsInJson) {
   EXPECT_EQ(api::to_string(api::Tonemap::none), "none");
   EXPECT_EQ(api::to_string(api::Tonemap::reinhard), "reinhard");
   EXPECT_EQ(api::to_string(api::Tonemap::aces), "aces");
+  EXPECT_EQ(api::to_string(api::PlanMode::auto_), "auto");
+  EXPECT_EQ(api::to_string(api::PlanMode::exact), "exact");
+}
+
+TEST(ParseRequest, PlanModeAndConvergence) {
+  EXPECT_EQ(api::parse_render_request("{}").plan, api::PlanMode::auto_);
+  EXPECT_EQ(api::parse_render_request(R"({"plan": "exact"})").plan, api::PlanMode::exact);
+  EXPECT_FLOAT_EQ(api::parse_render_request("{}").lpv.convergence, 1e-3f);
+  EXPECT_FLOAT_EQ(api::parse_render_request(R"({"lpv": {"convergence": 0}})").lpv.convergence, 0.0f);
+  EXPECT_THROW(api::parse_render_request(R"({"plan": "fast"})"), api::RequestError);
+  EXPECT_THROW(api::parse_render_request(R"({"lpv": {"convergence": 1.5}})"), api::RequestError);
+  EXPECT_THROW(api::parse_render_request(R"({"lpv": {"convergence": -0.1}})"), api::RequestError);
 }
 
 // ---- valid requests ----
@@ -651,6 +665,8 @@ api::RenderRequest full_request() {
   r.lpv.intensity = 1.7f;
   r.lpv.origin = glm::vec3(-2.5f, 0.1f, 3.0f);
   r.lpv.extent = 12.5f;
+  r.lpv.convergence = 0.25f;
+  r.plan = api::PlanMode::exact;
   r.repeat = 7;
   return r;
 }
@@ -779,7 +795,8 @@ TEST(StatsJson, Shape) {
 
   const json j = api::to_json(stats);
   EXPECT_EQ(keys_of(j), (std::set<std::string>{"scene", "width", "height", "view", "frames", "passes", "gpu_ms",
-                                                "cpu_ms", "wall_ms", "device", "driver", "warnings"}));
+                                                "cpu_ms", "wall_ms", "device", "driver", "plan", "warnings"}));
+  EXPECT_EQ(keys_of(j["plan"]), (std::set<std::string>{"mode", "decisions"}));
   EXPECT_EQ(j["scene"], "cornell-box");
   EXPECT_EQ(j["width"], 640);
   EXPECT_EQ(j["height"], 480);

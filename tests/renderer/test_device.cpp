@@ -80,7 +80,7 @@ TEST_F(EdgeScenes, EmptySceneWithoutLightsRendersBlackAndSkipsShadows) {
   for (float v : result.linear.pixels) ASSERT_EQ(v, 0.0f);
   EXPECT_EQ(result.display.pixels.size(), 32u * 24u * 4u);
   EXPECT_FALSE(result.stats.passes[0].ran);
-  EXPECT_EQ(result.stats.passes[0].reason, "no light emits");
+  EXPECT_EQ(result.stats.passes[0].reason, "no light reaches the scene");
 }
 
 TEST_F(EdgeScenes, ZeroIntensityLightGivesBlackLitViewAndNoShadowMap) {

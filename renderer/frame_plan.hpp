@@ -1,0 +1,66 @@
+// The planner: before anything is recorded, decides which passes of a frame run, for which
+// lights, and how many propagation steps, from the request and the scene, and says why.
+// With plan "exact" only the request decides (what it disables or its view does not show
+// is skipped); with "auto" (the default) what cannot change the image is skipped too.
+// Pure CPU maths: unit-tested without a device (docs/planner.md).
+#pragma once
+
+#include "api/render_request.hpp"
+#include "renderer/lpv/lpv_setup.hpp"
+#include "renderer/scene/scene.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace renderer {
+
+// The passes of a frame. The LPV grid passes run once per cascade.
+enum Pass : std::uint32_t {
+  kShadow,
+  kRsm,
+  kGBuffer,
+  kInject,
+  kGeometryVolume,
+  kPropagate,
+  kShade,
+  kTonemap,
+  kReadback,
+  kPassCount
+};
+inline constexpr std::array<const char*, kPassCount> kPassNames = {
+    "shadow", "rsm", "gbuffer", "inject", "geometry_volume", "propagate", "shade", "tonemap", "readback"};
+inline bool is_grid_pass(std::uint32_t p) { return p == kInject || p == kGeometryVolume || p == kPropagate; }
+
+bool needs_direct_light(api::View v);
+bool needs_indirect_light(api::View v);
+
+struct FramePlan {
+  std::array<bool, kPassCount> run{};
+  std::array<std::string, kPassCount> reason;
+  std::vector<bool> light_drawn;       // per light: it gets shadow maps and RSM views
+  float convergence = 0.0f;            // stop when the rest would add less than this share (0: never)
+  std::vector<std::string> decisions;  // what the plan changed from the request, and why
+};
+
+struct PlanInputs {
+  const api::RenderRequest& request;
+  const std::vector<api::Light>& lights;  // the request's lights, resolved against the scene's
+  const scene::Scene& scene;
+  std::uint32_t emitters = 0;  // emissive surfels of the scene
+  bool display_readback = false;  // an 8-bit image is wanted (tonemapping)
+};
+
+FramePlan plan_frame(const PlanInputs& in);
+
+// Why a light cannot light anything in `bounds` (empty when it may): beyond its range, or
+// its cone pointing away from them.
+std::string light_misses(const api::Light& light, const scene::Bounds& bounds);
+
+// The propagation steps a cascade needs: light crosses one cell per step, so after the
+// L1 diameter (in cells) of the part of the scene inside the cascade, every occupied cell
+// has received all the light it can. At most `requested`.
+std::uint32_t iterations_needed(const CascadePlacement& cascade, const scene::Bounds& bounds, std::uint32_t requested);
+
+}  // namespace renderer

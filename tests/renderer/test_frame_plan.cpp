@@ -1,0 +1,106 @@
+// The planner's rules on their own (no device): which lights get maps, which passes run,
+// how many propagation steps a cascade needs; "exact" turns the planner's own rules off.
+#include "renderer/frame_plan.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+const scene::Scene& cornell() {
+  static const scene::Scene s = *scene::make_builtin_scene("cornell-box");
+  return s;
+}
+
+api::Light spot_at(glm::vec3 position, glm::vec3 direction) {
+  api::Light l;
+  l.type = api::LightType::spot;
+  l.position = position;
+  l.direction = glm::normalize(direction);
+  l.intensity = 5.0f;
+  l.outer_cone_deg = 20.0f;
+  return l;
+}
+
+renderer::FramePlan plan(const api::RenderRequest& request, const std::vector<api::Light>& lights,
+                         const scene::Scene& scene, std::uint32_t emitters = 0) {
+  return renderer::plan_frame({request, lights, scene, emitters, true});
+}
+
+TEST(LightMisses, SpotConeAgainstTheScene) {
+  const scene::Bounds& b = cornell().bounds;
+  const glm::vec3 above = b.center() + glm::vec3(0.0f, 5.0f, 0.0f);
+  EXPECT_EQ(renderer::light_misses(spot_at(above, {0, -1, 0}), b), "");
+  EXPECT_EQ(renderer::light_misses(spot_at(above, {0, 1, 0}), b), "its cone points away from the scene");
+  // Inside the scene's bounding sphere a spot may light it whichever way it points.
+  EXPECT_EQ(renderer::light_misses(spot_at(b.center(), {0, 1, 0}), b), "");
+  api::Light point;
+  point.position = above;
+  point.range = 1.0f;
+  EXPECT_EQ(renderer::light_misses(point, b), "the scene is beyond its range");
+  point.range = 0.0f;  // unlimited
+  EXPECT_EQ(renderer::light_misses(point, b), "");
+  api::Light sun;
+  sun.type = api::LightType::directional;
+  EXPECT_EQ(renderer::light_misses(sun, b), "");
+}
+
+TEST(IterationsNeeded, TwiceTheL1DiameterOfTheSceneInCells) {
+  renderer::CascadePlacement cascade;
+  cascade.origin = glm::vec3(0.0f);
+  cascade.cell_size = 1.0f;
+  cascade.dims = glm::uvec3(32);
+  const scene::Bounds small{{1.0f, 1.0f, 1.0f}, {4.0f, 3.0f, 2.0f}};  // 3 + 2 + 1 cells
+  EXPECT_EQ(renderer::iterations_needed(cascade, small, 64), 12u);
+  EXPECT_EQ(renderer::iterations_needed(cascade, small, 4), 4u) << "never more than requested";
+  const scene::Bounds outside{{-10.0f, 0.0f, 0.0f}, {40.0f, 40.0f, 40.0f}};  // clipped to the cascade
+  EXPECT_EQ(renderer::iterations_needed(cascade, outside, 1000), 192u);
+}
+
+TEST(PlanFrame, ALightThatMissesTheSceneGetsNoMapsUnlessExact) {
+  api::RenderRequest request;
+  const std::vector<api::Light> lights = {cornell().lights[0], spot_at({0, 10, 0}, {0, 1, 0})};
+  const renderer::FramePlan automatic = plan(request, lights, cornell());
+  EXPECT_EQ(automatic.light_drawn, (std::vector<bool>{true, false}));
+  ASSERT_EQ(automatic.decisions.size(), 1u);
+  EXPECT_NE(automatic.decisions[0].find("light 1"), std::string::npos);
+  request.plan = api::PlanMode::exact;
+  EXPECT_EQ(plan(request, lights, cornell()).light_drawn, (std::vector<bool>{true, true}));
+}
+
+TEST(PlanFrame, OnlyLightsThatMissMeanNoShadowsAndNoLpv) {
+  api::RenderRequest request;
+  const renderer::FramePlan p = plan(request, {spot_at({0, 10, 0}, {0, 1, 0})}, cornell());
+  EXPECT_FALSE(p.run[renderer::kShadow]);
+  EXPECT_EQ(p.reason[renderer::kShadow], "no light reaches the scene");
+  for (auto pass : {renderer::kRsm, renderer::kInject, renderer::kGeometryVolume, renderer::kPropagate})
+    EXPECT_FALSE(p.run[pass]) << renderer::kPassNames[pass];
+}
+
+TEST(PlanFrame, BlackSurfacesReflectNothingButEmittersStillInject) {
+  scene::Scene black = cornell();
+  for (scene::Material& m : black.materials) m.base_color = glm::vec3(0.0f);
+  api::RenderRequest request;
+  const renderer::FramePlan p = plan(request, black.lights, black);
+  EXPECT_TRUE(p.run[renderer::kShadow]);
+  EXPECT_FALSE(p.run[renderer::kRsm]);
+  EXPECT_FALSE(p.run[renderer::kInject]);
+  EXPECT_NE(p.reason[renderer::kInject].find("every albedo is 0"), std::string::npos);
+
+  const renderer::FramePlan glowing = plan(request, black.lights, black, 100);
+  EXPECT_FALSE(glowing.run[renderer::kRsm]);
+  EXPECT_TRUE(glowing.run[renderer::kInject]) << "emissive surfaces inject without any reflection";
+
+  request.plan = api::PlanMode::exact;
+  EXPECT_TRUE(plan(request, black.lights, black).run[renderer::kRsm]);
+}
+
+TEST(PlanFrame, ConvergenceOnlyWhenAutomatic) {
+  api::RenderRequest request;
+  request.lpv.convergence = 0.01f;
+  EXPECT_FLOAT_EQ(plan(request, cornell().lights, cornell()).convergence, 0.01f);
+  request.plan = api::PlanMode::exact;
+  EXPECT_EQ(plan(request, cornell().lights, cornell()).convergence, 0.0f);
+}
+
+}  // namespace

@@ -1,0 +1,105 @@
+// The planner on the device: for each rule, a scene that triggers it. The skipped pass did
+// not run (no GPU time) and the image equals the "exact" plan's, bitwise where nothing
+// can change, within a stated tolerance where the plan shortens propagation.
+#include "gpu_test.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+class Planner : public gpu_test::GpuTest {};
+
+api::RenderRequest request(api::PlanMode mode) {
+  api::RenderRequest r;
+  r.output.width = r.output.height = 48;
+  r.output.format = api::ImageFormat::pfm;
+  r.plan = mode;
+  return r;
+}
+
+const api::PassStats& pass(const renderer::RenderResult& r, const std::string& name) {
+  for (const api::PassStats& p : r.stats.passes)
+    if (p.name == name) return p;
+  throw std::runtime_error("no pass " + name);
+}
+
+api::Light away_spot() {
+  api::Light l;
+  l.type = api::LightType::spot;
+  l.position = {0.0f, 6.0f, 0.0f};
+  l.direction = {0.0f, 1.0f, 0.0f};
+  l.intensity = 50.0f;
+  l.outer_cone_deg = 30.0f;
+  return l;
+}
+
+TEST_F(Planner, ALightPointingAwayGetsNoMapsAndChangesNothing) {
+  const scene::Scene cornell = *scene::make_builtin_scene("cornell-box");
+  api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
+  a.lights = e.lights = std::vector<api::Light>{cornell.lights[0], away_spot()};
+  auto& r = gpu_test::renderer();
+  const auto automatic = r.render(a, renderer::kReadbackLinear);
+  const auto exact = r.render(e, renderer::kReadbackLinear);
+  EXPECT_EQ(automatic.linear.pixels, exact.linear.pixels);
+  ASSERT_FALSE(automatic.stats.decisions.empty());
+  EXPECT_NE(automatic.stats.decisions[0].find("light 1"), std::string::npos);
+
+  // With only that light, nothing of the light's passes runs.
+  a.lights = e.lights = std::vector<api::Light>{away_spot()};
+  const auto dark = r.render(a, renderer::kReadbackLinear);
+  const auto dark_exact = r.render(e, renderer::kReadbackLinear);
+  for (const char* name : {"shadow", "rsm", "inject", "geometry_volume", "propagate"}) {
+    EXPECT_FALSE(pass(dark, name).ran) << name;
+    EXPECT_EQ(pass(dark, name).gpu_ms.median, 0.0) << name;
+    EXPECT_TRUE(pass(dark_exact, name).ran) << name;
+  }
+  EXPECT_EQ(dark.linear.pixels, dark_exact.linear.pixels);
+}
+
+TEST_F(Planner, BlackSurfacesSkipTheLpvAndChangeNothing) {
+  scene::Scene black = *scene::make_builtin_scene("cornell-box");
+  for (scene::Material& m : black.materials) m.base_color = glm::vec3(0.0f);
+  auto& r = gpu_test::renderer();
+  const auto automatic = r.render(black, request(api::PlanMode::auto_), renderer::kReadbackLinear);
+  const auto exact = r.render(black, request(api::PlanMode::exact), renderer::kReadbackLinear);
+  for (const char* name : {"rsm", "inject", "propagate"}) {
+    EXPECT_FALSE(pass(automatic, name).ran) << name;
+    EXPECT_NE(pass(automatic, name).reason.find("every albedo is 0"), std::string::npos);
+    EXPECT_TRUE(pass(exact, name).ran) << name;
+  }
+  EXPECT_EQ(automatic.linear.pixels, exact.linear.pixels);
+}
+
+TEST_F(Planner, PropagationStopsWhenItConvergesWithinTolerance) {
+  api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
+  a.output.view = e.output.view = api::View::indirect;
+  a.lpv.grid = e.lpv.grid = glm::uvec3(16);
+  a.lpv.iterations = e.lpv.iterations = 64;
+  a.lpv.convergence = 0.02f;
+  auto& r = gpu_test::renderer();
+  const auto automatic = r.render(a, renderer::kReadbackLinear);
+  const auto exact = r.render(e, renderer::kReadbackLinear);
+  ASSERT_TRUE(automatic.stats.lpv && exact.stats.lpv);
+  const std::uint32_t ran = automatic.stats.lpv->cascades[0].iterations;
+  EXPECT_LT(ran, 64u);
+  EXPECT_EQ(exact.stats.lpv->cascades[0].iterations, 64u);
+  // The skipped steps' light, on the image's total: the estimate said under 2% of the
+  // accumulated light; the image's share may differ a little from the grid's.
+  double sum_auto = 0.0, sum_exact = 0.0;
+  for (std::size_t i = 0; i < exact.linear.pixels.size(); i += 4) {
+    sum_auto += automatic.linear.pixels[i] + automatic.linear.pixels[i + 1] + automatic.linear.pixels[i + 2];
+    sum_exact += exact.linear.pixels[i] + exact.linear.pixels[i + 1] + exact.linear.pixels[i + 2];
+  }
+  ASSERT_GT(sum_exact, 0.0);
+  EXPECT_LE(sum_auto, sum_exact);
+  EXPECT_LT((sum_exact - sum_auto) / sum_exact, 0.03) << ran << " of 64 iterations";
+  std::printf("convergence 0.02: %u of 64 iterations, image total %.4f of exact\n", ran, sum_auto / sum_exact);
+  bool mentioned = false;
+  for (const std::string& d : automatic.stats.decisions) mentioned = mentioned || d.find("converged") != std::string::npos;
+  EXPECT_TRUE(mentioned);
+}
+
+}  // namespace
