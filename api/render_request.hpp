@@ -106,6 +106,7 @@ struct RenderRequest {
   Shadows shadows;
   Lpv lpv;
   PlanMode plan = PlanMode::auto_;
+  bool dry_run = false;      // plan only: the stats say what would run, nothing is rendered
   std::uint32_t repeat = 1;  // frames to render and time
 };
 

@@ -262,8 +262,8 @@ constexpr std::array tonemaps{Tonemap::none, Tonemap::reinhard, Tonemap::aces};
 constexpr std::array plan_modes{PlanMode::auto_, PlanMode::exact};
 
 using Keys = std::string_view;
-constexpr std::array<Keys, 9> request_keys{"scene",  "camera",  "lights", "light_edits", "output",
-                                           "shadows", "lpv",    "plan",   "repeat"};
+constexpr std::array<Keys, 10> request_keys{"scene",   "camera", "lights", "light_edits", "output",
+                                            "shadows", "lpv",    "plan",   "dry_run",     "repeat"};
 constexpr std::array<Keys, 6> camera_keys{"position", "target", "up", "fov_y_deg", "near", "far"};
 constexpr std::array<Keys, 8> light_keys{"type",      "position", "direction",      "color",
                                          "intensity", "range",    "inner_cone_deg", "outer_cone_deg"};
@@ -462,6 +462,7 @@ RenderRequest read_request(const json& document) {
   if (auto v = obj.get("shadows")) request.shadows = read_shadows(*v);
   if (auto v = obj.get("lpv")) request.lpv = read_lpv(*v);
   if (auto v = obj.get("plan")) request.plan = as_enum(*v, plan_modes);
+  if (auto v = obj.get("dry_run")) request.dry_run = as_bool(*v);
   if (auto v = obj.get("repeat")) request.repeat = as_uint<std::uint32_t>(*v, 1, limits::max_repeat);
   return request;
 }
@@ -623,6 +624,7 @@ nlohmann::json to_json(const RenderRequest& request) {
   j["shadows"] = {{"enabled", request.shadows.enabled}, {"resolution", request.shadows.resolution}};
   j["lpv"] = lpv_json(request.lpv);
   j["plan"] = to_string(request.plan);
+  if (request.dry_run) j["dry_run"] = true;
   j["repeat"] = request.repeat;
   return j;
 }

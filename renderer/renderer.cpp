@@ -69,6 +69,13 @@ void copy_to_host(const vkx::Buffer& readback, const api::Output& out, Image& im
   std::memcpy(image.pixels.data(), readback.mapped(), image.pixels.size() * sizeof(image.pixels[0]));
 }
 
+// Every pass with whether it runs and why, without times.
+std::vector<api::PassStats> pass_list(const FramePlan& plan) {
+  std::vector<api::PassStats> passes;
+  for (std::uint32_t p = 0; p < kPassCount; ++p) passes.push_back({kPassNames[p], plan.run[p], plan.reason[p], {}, {}});
+  return passes;
+}
+
 void ensure_upload_capacity(const vkx::Device& device, vkx::Buffer& buffer, VkDeviceSize bytes,
                             VkBufferUsageFlags usage) {
   bytes = std::max<VkDeviceSize>(bytes, 256);  // never zero-sized, even with no lights
@@ -142,6 +149,9 @@ struct Renderer::Impl {
 
   RenderResult render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
                       unsigned readback, double load_ms, double upload_ms);
+  // A dry run's result: the plan, nothing rendered.
+  RenderResult planned(const scene::Scene& scene, const api::RenderRequest& request, const FramePlan& plan,
+                       double plan_ms) const;
   void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
   // Steps first .. first + count - 1 of propagation (1-based); other passes ignore them.
   struct Steps {
@@ -251,7 +261,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   FramePlan plan = plan_frame({request, lights, scene, gpu.emitter_count, (readback & kReadbackDisplay) != 0});
   double plan_ms = ms_since(plan_start);
   const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn);
-  allocate(plan, request, light_setup);
+  if (!request.dry_run) allocate(plan, request, light_setup);
   const LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
                                        camera_request.fov_y_deg, out.height);
   // Propagation steps per cascade: as requested, or (auto) no more than light needs to
@@ -266,6 +276,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
                                " iterations, as many as light needs to cross the scene's cells in it");
   }
   plan_ms += ms_since(plan_start);
+  if (request.dry_run) return planned(scene, request, plan, plan_ms);
 
   gpu::GpuFrame frame{};
   frame.view_proj = camera.view_proj;
@@ -362,15 +373,12 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
                                " of " + std::to_string(iterations[c]) +
                                " iterations (the steps left would add less than lpv.convergence of the light)");
   stats.decisions = plan.decisions;
+  stats.passes = pass_list(plan);
   for (std::uint32_t p = 0; p < kPassCount; ++p) {
-    api::PassStats ps;
-    ps.name = kPassNames[p];
-    ps.ran = plan.run[p];
-    ps.reason = plan.reason[p];
+    api::PassStats& ps = stats.passes[p];
     if (ps.ran) ps.gpu_ms = api::TimeSummary::of(pass_ms[p]);
     if (ps.ran && is_grid_pass(p))
       for (const auto& samples : cascade_ms[p]) ps.cascade_gpu_ms.push_back(api::TimeSummary::of(samples));
-    stats.passes.push_back(std::move(ps));
   }
   stats.gpu_ms = api::TimeSummary::of(total_gpu_ms);
   stats.cpu_ms["scene_load"] = api::TimeSummary::of({load_ms});
@@ -394,7 +402,24 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   return result;
 }
 
-// The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats.
+RenderResult Renderer::Impl::planned(const scene::Scene& scene, const api::RenderRequest& request,
+                                     const FramePlan& plan, double plan_ms) const {
+  RenderResult result;
+  api::RenderStats& stats = result.stats;
+  stats.scene = scene.name;
+  stats.width = request.output.width;
+  stats.height = request.output.height;
+  stats.view = api::to_string(request.output.view);
+  stats.plan = api::to_string(request.plan);
+  stats.decisions = plan.decisions;
+  stats.passes = pass_list(plan);
+  stats.cpu_ms["plan"] = api::TimeSummary::of({plan_ms});
+  stats.device = device.info().name;
+  stats.driver = device.info().driver;
+  stats.warnings = scene.warnings;
+  return result;
+}
+
 // Whether the steps after `step` (up to `steps`) would add less than `convergence` of the
 // light a cascade has accumulated so far: each step's flux (from the fixed-point sums the
 // passes left in flux_stats, largest channel) decays about geometrically once light has
@@ -418,6 +443,7 @@ bool Renderer::Impl::converged(std::uint32_t cascade, std::uint32_t step, std::u
   return tail < double(convergence) * accumulated;
 }
 
+// The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats.
 api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
                                         std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run) const {
   volumes->flux_stats.invalidate();

@@ -202,6 +202,8 @@ void handle_render(const httplib::Request& request, httplib::Response& response,
     return;
   }
   service.metrics.count_render("ok");
+  if (job->request.dry_run)  // the plan alone: what would run, nothing rendered (nor timed)
+    return send_json(response, {{"stats", api::to_json(job->result->stats)}, {"queue_ms", job->queue_wait_ms}});
   for (const auto& pass : job->result->stats.passes)
     if (pass.ran) service.metrics.observe_pass(pass.name, pass.gpu_ms.median / 1000.0);
   send_render_result(response, *job->result, format, wants_json(request), job->queue_wait_ms);

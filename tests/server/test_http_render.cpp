@@ -85,6 +85,25 @@ TEST(HttpRender, AcceptJsonReturnsStatsAndTheImageAsBase64) {
   EXPECT_EQ(size->height, 48);
 }
 
+TEST(HttpRender, DryRunReturnsThePlanWithoutAnImage) {
+  auto http = shared_server().client();
+  const nlohmann::json away = {{"type", "spot"}, {"position", {0, 6, 0}}, {"direction", {0, 1, 0}}, {"intensity", 5}};
+  const auto r = post_render(*http, {{"dry_run", true}, {"lights", {away}}});
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/json");
+  const auto body = nlohmann::json::parse(r->body);
+  EXPECT_FALSE(body.contains("image"));
+  EXPECT_EQ(body["stats"]["plan"]["mode"], "auto");
+  ASSERT_EQ(body["stats"]["plan"]["decisions"].size(), 1u);
+  for (const auto& pass : body["stats"]["passes"]) {
+    if (pass["name"] == "shadow") {
+      EXPECT_FALSE(pass["ran"]);
+      EXPECT_EQ(pass["reason"], "no light reaches the scene");
+    }
+  }
+}
+
 TEST(HttpRender, LinearFormatsComeBackAsExrAndPfm) {
   auto http = shared_server().client();
   const auto exr = post_render(*http, {{"output", {{"width", 32}, {"height", 32}, {"format", "exr"}}}});

@@ -136,6 +136,16 @@ int run(int argc, char** argv) {
     result = renderer.render(request);
   }
 
+  if (request.dry_run) {  // the plan alone: its stats on standard output (or --stats), no image
+    const std::string json = api::to_json(result.stats).dump(2) + "\n";
+    if (options.stats_file && *options.stats_file != "-")
+      image::write_file_atomically(*options.stats_file,
+                                   std::span(reinterpret_cast<const std::uint8_t*>(json.data()), json.size()));
+    else
+      std::fputs(json.c_str(), stdout);
+    return 0;
+  }
+
   const auto encode_start = std::chrono::steady_clock::now();
   const std::vector<std::uint8_t> bytes = renderer::encode_output(result, request.output.format);
   const double encode_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - encode_start).count();
