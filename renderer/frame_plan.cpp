@@ -11,6 +11,8 @@ namespace {
 // 1% of the indirect light on the built-in scenes (docs/planner.md); once loses 6%.
 constexpr float kCrossings = 2.0f;
 
+constexpr float kBlendCells = 2.0f;
+
 bool emits(const api::Light& light) {
   return light.intensity > 0.0f && glm::any(glm::greaterThan(light.color, glm::vec3(0.0f)));
 }
@@ -53,6 +55,18 @@ std::uint32_t iterations_needed(const CascadePlacement& cascade, const scene::Bo
   const glm::vec3 cells = glm::ceil(glm::max(hi - lo, glm::vec3(0.0f)) / cascade.cell_size);
   const float diameter = std::max(1.0f, cells.x + cells.y + cells.z);
   return std::min(requested, std::uint32_t(kCrossings * diameter));
+}
+
+std::uint32_t cascades_needed(const std::vector<CascadePlacement>& cascades, const scene::Bounds& bounds) {
+  for (std::uint32_t c = 0; c + 1 < cascades.size(); ++c) {
+    // Shading samples half a cell off the surface and blends over the last kBlendCells
+    // (LPV_BLEND_CELLS in shaders/shared/lpv_grid.glsl) of a cascade.
+    const float margin = (kBlendCells + 0.5f) * cascades[c].cell_size;
+    const glm::vec3 lo = cascades[c].origin + margin;
+    const glm::vec3 hi = cascades[c].origin + glm::vec3(cascades[c].dims) * cascades[c].cell_size - margin;
+    if (glm::all(glm::lessThanEqual(lo, bounds.min)) && glm::all(glm::lessThanEqual(bounds.max, hi))) return c + 1;
+  }
+  return std::uint32_t(cascades.size());
 }
 
 FramePlan plan_frame(const PlanInputs& in) {

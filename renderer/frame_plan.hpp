@@ -63,4 +63,8 @@ std::string light_misses(const api::Light& light, const scene::Bounds& bounds);
 // has received all the light it can. At most `requested`.
 std::uint32_t iterations_needed(const CascadePlacement& cascade, const scene::Bounds& bounds, std::uint32_t requested);
 
+// The cascades a frame needs: up to the first that holds the whole scene clear of its
+// border band (where shading would hand over to the next one), so coarser ones add nothing.
+std::uint32_t cascades_needed(const std::vector<CascadePlacement>& cascades, const scene::Bounds& bounds);
+
 }  // namespace renderer

@@ -262,11 +262,21 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   double plan_ms = ms_since(plan_start);
   const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn);
   if (!request.dry_run) allocate(plan, request, light_setup);
-  const LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
-                                       camera_request.fov_y_deg, out.height);
+  LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
+                                 camera_request.fov_y_deg, out.height);
   // Propagation steps per cascade: as requested, or (auto) no more than light needs to
   // cross the part of the scene inside the cascade.
   plan_start = Clock::now();
+  if (request.plan == api::PlanMode::auto_ && plan.run[kInject]) {
+    const std::uint32_t needed = cascades_needed(lpv_setup.cascades, scene.bounds);
+    if (needed < lpv_setup.cascades.size()) {
+      plan.decisions.push_back(std::to_string(needed) + " of " + std::to_string(lpv_setup.cascades.size()) +
+                               " cascades: cascade " + std::to_string(needed - 1) +
+                               " holds the whole scene, the coarser ones add nothing");
+      lpv_setup.cascades.resize(needed);
+      lpv_setup.gpu.info.x = needed;
+    }
+  }
   std::vector<std::uint32_t> iterations(lpv_setup.cascades.size(), request.lpv.iterations);
   for (std::uint32_t c = 0; c < iterations.size() && request.plan == api::PlanMode::auto_ && plan.run[kPropagate]; ++c) {
     iterations[c] = iterations_needed(lpv_setup.cascades[c], scene.bounds, request.lpv.iterations);
@@ -302,7 +312,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const double setup_ms = ms_since(setup_start);
 
   const Frame context{plan, gpu, request, light_setup, lpv_setup, readback};
-  const std::uint32_t cascades = request.lpv.cascades;
+  const auto cascades = std::uint32_t(lpv_setup.cascades.size());
   // The passes in submission order. The cascades share their working grids, so each runs
   // all its grid passes before the next starts.
   std::vector<std::pair<Pass, std::uint32_t>> schedule;

@@ -80,7 +80,7 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   vec3 dims = vec3(g.dims.xyz);
   vec3 t = clamp(q, vec3(0.5), dims - 0.5);
   t.z += float(c) * dims.z;
-  vec3 uvw = t / vec3(dims.xy, dims.z * float(lpv.info.x));
+  vec3 uvw = t / vec3(dims.xy, dims.z * float(lpv.info.y));
   vec4 lobe = sh_cosine_lobe(-n);
   vec3 e = vec3(dot(textureLod(accumulated_r, uvw, 0.0), lobe), dot(textureLod(accumulated_g, uvw, 0.0), lobe),
                 dot(textureLod(accumulated_b, uvw, 0.0), lobe));

@@ -89,7 +89,8 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::
   std::uint32_t flags = 0;
   if (lpv.occlusion) flags |= gpu::LPV_FLAG_OCCLUSION;
   if (lpv.occlusion && lpv.bounces > 1) flags |= gpu::LPV_FLAG_BOUNCES;
-  g.info = glm::uvec4(std::uint32_t(setup.cascades.size()), 0u, flags, lpv.vpl_downsample);
+  g.info = glm::uvec4(std::uint32_t(setup.cascades.size()), std::uint32_t(setup.cascades.size()), flags,
+                      lpv.vpl_downsample);
   const std::uint32_t stride = std::max(1u, (image_height + kCameraSurfelRows / 2) / kCameraSurfelRows);
   g.sizes = glm::uvec4(lpv.rsm_resolution, 0u, stride, 0u);
   g.scales = glm::vec4(flux_units_per_watt(vpl_flux_bound(lights, bounds) + emitted_flux), kGeometryUnitsPerPotential,

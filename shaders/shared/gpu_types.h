@@ -96,7 +96,7 @@ struct GpuLpvCascade {
 // Everything the LPV passes and the shading read about the volumes of one frame.
 struct GpuLpv {
   GpuLpvCascade cascades[LPV_MAX_CASCADES];
-  uvec4 info;     // x: cascade count (0 = no indirect light); y: unused; z: LPV_FLAG_*; w: VPL downsample
+  uvec4 info;     // x: cascade count (0 = no indirect light); y: cascades the images hold (>= x); z: LPV_FLAG_*; w: VPL downsample
   uvec4 sizes;    // x: RSM resolution; y: unused; z: camera surfel stride (pixels); w: unused
   vec4 scales;    // x: flux fixed-point units per W; y: geometry fixed-point units per unit potential;
                   // z: indirect intensity scale; w: injection offset (cells)

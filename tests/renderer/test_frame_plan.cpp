@@ -57,6 +57,19 @@ TEST(IterationsNeeded, TwiceTheL1DiameterOfTheSceneInCells) {
   EXPECT_EQ(renderer::iterations_needed(cascade, outside, 1000), 192u);
 }
 
+TEST(CascadesNeeded, UpToTheFirstThatHoldsTheSceneClearOfItsBorderBand) {
+  std::vector<renderer::CascadePlacement> cascades(3);
+  for (std::uint32_t c = 0; c < 3; ++c) {
+    cascades[c].cell_size = float(1u << c);
+    cascades[c].dims = glm::uvec3(16);
+    cascades[c].origin = glm::vec3(-8.0f * cascades[c].cell_size);
+  }
+  // 2.5 cells of margin: cascade 0 holds [-5.5, 5.5], cascade 1 [-11, 11].
+  EXPECT_EQ(renderer::cascades_needed(cascades, {glm::vec3(-5.0f), glm::vec3(5.0f)}), 1u);
+  EXPECT_EQ(renderer::cascades_needed(cascades, {glm::vec3(-6.0f), glm::vec3(5.0f)}), 2u);
+  EXPECT_EQ(renderer::cascades_needed(cascades, {glm::vec3(-50.0f), glm::vec3(5.0f)}), 3u);
+}
+
 TEST(PlanFrame, ALightThatMissesTheSceneGetsNoMapsUnlessExact) {
   api::RenderRequest request;
   const std::vector<api::Light> lights = {cornell().lights[0], spot_at({0, 10, 0}, {0, 1, 0})};

@@ -73,6 +73,24 @@ TEST_F(Planner, BlackSurfacesSkipTheLpvAndChangeNothing) {
   EXPECT_EQ(automatic.linear.pixels, exact.linear.pixels);
 }
 
+TEST_F(Planner, CascadesBeyondOneThatHoldsTheSceneAreSkippedAndChangeNothing) {
+  api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
+  for (api::RenderRequest* r : {&a, &e}) {
+    r->lpv.grid = glm::uvec3(16);
+    r->lpv.cascades = 3;
+    r->lpv.origin = glm::vec3(-2.0f, -1.0f, -2.0f);  // 4 m: the Cornell box and 2.5 cells to spare
+    r->lpv.extent = 4.0f;
+  }
+  auto& r = gpu_test::renderer();
+  const auto automatic = r.render(a, renderer::kReadbackLinear);
+  const auto exact = r.render(e, renderer::kReadbackLinear);
+  ASSERT_TRUE(automatic.stats.lpv && exact.stats.lpv);
+  EXPECT_EQ(automatic.stats.lpv->cascades.size(), 1u);
+  EXPECT_EQ(exact.stats.lpv->cascades.size(), 3u);
+  EXPECT_EQ(pass(automatic, "propagate").cascade_gpu_ms.size(), 1u);
+  EXPECT_EQ(automatic.linear.pixels, exact.linear.pixels);
+}
+
 TEST_F(Planner, PropagationStopsWhenItConvergesWithinTolerance) {
   api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
   a.output.view = e.output.view = api::View::indirect;
