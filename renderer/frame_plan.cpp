@@ -97,6 +97,7 @@ FramePlan plan_frame(const PlanInputs& in) {
   else if (!any_drawn)
     plan.reason[kShadow] = "no light reaches the scene";
   plan.run[kShadow] = plan.reason[kShadow].empty();
+  if (!needs_direct_light(view)) plan.reason[kShade] = view_name + ": shaded without the lights' direct light";
 
   const bool reflects = !automatic || reflects_light(in.scene);
   const bool vpls = (any_drawn && reflects) || in.emitters > 0;

@@ -561,7 +561,8 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       break;
     case kShade:
       shade.record(cmd, frame.gpu, *targets,
-                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes, frame.plan.run[kInject]});
+                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes, frame.plan.run[kInject],
+                    needs_direct_light(frame.request.output.view)});
       break;
     case kTonemap:
       tonemap.record(cmd, *targets, frame.request.output.tonemap,

@@ -13,6 +13,7 @@ layout(local_size_x = SHADE_GROUP_X, local_size_y = SHADE_GROUP_Y) in;
 // Specialised to false for frames without LPV: lavapipe runs both sides of a branch under a
 // lane mask, so the indirect-light code would cost every pixel even when no grid exists.
 layout(constant_id = 0) const bool WITH_INDIRECT = true;
+layout(constant_id = 1) const bool WITH_DIRECT = true;  // false: views without direct light skip the lights
 
 layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2D g_position;
@@ -150,7 +151,7 @@ void main() {
     value = WITH_INDIRECT ? lpv_cell_view(p) * frame.exposure.x : vec3(0.0);
   } else {
     vec3 e = vec3(0.0);
-    if (view != VIEW_INDIRECT)
+    if (WITH_DIRECT && view != VIEW_INDIRECT)
       for (uint i = 0u; i < frame.size_view.w; ++i) e += irradiance(lights[i], p, n);
     if (WITH_INDIRECT && view != VIEW_DIRECT) e += lpv.scales.z * indirect_irradiance(p, n);
     vec3 emitted = view == VIEW_INDIRECT ? vec3(0.0) : materials[material].emissive.rgb;

@@ -11,14 +11,19 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  const vkx::PipelineLayoutDesc layout = vkx::compute_layout(
+  layout_ = vkx::compute_layout(
       {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, sampled, sampled, sampled});
-  const std::uint32_t with_indirect[] = {VK_TRUE};
-  const std::uint32_t direct_only[] = {VK_FALSE};
-  with_indirect_ = vkx::Pipeline(device, layout, spirv_shade_comp, with_indirect);
-  direct_only_ = vkx::Pipeline(device, layout, spirv_shade_comp, direct_only);
+  variant(true, true);
+  variant(true, false);
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
   grid_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR);
+}
+
+const vkx::Pipeline& ShadePass::variant(bool direct, bool indirect) const {
+  std::unique_ptr<vkx::Pipeline>& p = variants_[(direct ? 2 : 0) + (indirect ? 1 : 0)];
+  const std::uint32_t constants[] = {indirect ? VK_TRUE : VK_FALSE, direct ? VK_TRUE : VK_FALSE};
+  if (!p) p = std::make_unique<vkx::Pipeline>(device_, layout_, spirv_shade_comp, constants);
+  return *p;
 }
 
 void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets,
@@ -26,7 +31,7 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
   const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  const vkx::Pipeline& pipeline = in.indirect ? with_indirect_ : direct_only_;
+  const vkx::Pipeline& pipeline = variant(in.direct, in.indirect);
   vkx::DescriptorWriter(pipeline.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.frame.handle())
       .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.position.view(), VK_IMAGE_LAYOUT_GENERAL)

@@ -7,6 +7,9 @@
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
+#include <array>
+#include <memory>
+
 namespace renderer {
 
 struct ShadeInputs {
@@ -17,6 +20,7 @@ struct ShadeInputs {
   const vkx::Buffer& lpv;          // gpu::GpuLpv (cascade count 0: no indirect light)
   const LpvVolumes& volumes;       // the cascades' accumulated SH (not read without indirect light)
   bool indirect;                   // the LPV ran: shade its indirect light
+  bool direct;                     // the view shows direct light
 };
 
 class ShadePass {
@@ -27,9 +31,12 @@ class ShadePass {
   void record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets, const ShadeInputs& in) const;
 
  private:
+  // One shader specialised by what the frame shows (lavapipe runs both sides of a branch):
+  // index direct * 2 + indirect; made on first use, the two a final frame needs at start.
+  const vkx::Pipeline& variant(bool direct, bool indirect) const;
   const vkx::Device& device_;
-  vkx::Pipeline with_indirect_;
-  vkx::Pipeline direct_only_;  // the same shader specialised without the LPV lookups
+  vkx::PipelineLayoutDesc layout_;
+  mutable std::array<std::unique_ptr<vkx::Pipeline>, 4> variants_;
   vkx::Sampler shadow_sampler_;  // depth compare with bilinear 2x2 PCF
   vkx::Sampler grid_sampler_;    // trilinear, clamped to the edge
 };
