@@ -6,6 +6,7 @@
 #pragma once
 
 #include "api/render_request.hpp"
+#include "renderer/frame_setup.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/scene/scene.hpp"
 
@@ -62,6 +63,12 @@ std::string light_misses(const api::Light& light, const scene::Bounds& bounds);
 // L1 diameter (in cells) of the part of the scene inside the cascade, every occupied cell
 // has received all the light it can. At most `requested`.
 std::uint32_t iterations_needed(const CascadePlacement& cascade, const scene::Bounds& bounds, std::uint32_t requested);
+
+// The RSM resolution the light views need: VPLs are summed per cell, so a texel on the
+// farthest point of the scene a view sees need not be smaller than a quarter of a cell of
+// the finest cascade. A power of two, at most `requested`.
+std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const std::vector<api::Light>& lights,
+                                    const scene::Bounds& bounds, float cell_size, std::uint32_t requested);
 
 // The cascades a frame needs: up to the first that holds the whole scene clear of its
 // border band (where shading would hand over to the next one), so coarser ones add nothing.

@@ -250,9 +250,10 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
   volumes->set_iterations(device, request.lpv.iterations);
 }
 
-RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
+RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& asked,
                                     unsigned readback, double load_ms, double upload_ms) {
   const auto setup_start = Clock::now();
+  api::RenderRequest request = asked;  // as the plan changes it
   const api::Output& out = request.output;
   const std::vector<api::Light> lights = resolve_lights(scene, request);
   const api::Camera camera_request = request.camera.value_or(scene.camera);
@@ -261,9 +262,23 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   FramePlan plan = plan_frame({request, lights, scene, gpu.emitter_count, (readback & kReadbackDisplay) != 0});
   double plan_ms = ms_since(plan_start);
   const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn);
-  if (!request.dry_run) allocate(plan, request, light_setup);
   LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
                                  camera_request.fov_y_deg, out.height);
+  plan_start = Clock::now();
+  if (request.plan == api::PlanMode::auto_ && plan.run[kRsm]) {
+    const std::uint32_t rsm = rsm_resolution_needed(light_setup.views, lights, scene.bounds,
+                                                    lpv_setup.cascades[0].cell_size, request.lpv.rsm_resolution);
+    if (rsm < request.lpv.rsm_resolution) {
+      plan.decisions.push_back("rsm " + std::to_string(rsm) + " of " + std::to_string(request.lpv.rsm_resolution) +
+                               " texels per side: four texels a cell on the farthest surface the lights see");
+      request.lpv.rsm_resolution = rsm;
+      request.lpv.vpl_downsample = std::min(request.lpv.vpl_downsample, rsm);
+      lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
+                            camera_request.fov_y_deg, out.height);
+    }
+  }
+  plan_ms += ms_since(plan_start);
+  if (!request.dry_run) allocate(plan, request, light_setup);
   // Propagation steps per cascade: as requested, or (auto) no more than light needs to
   // cross the part of the scene inside the cascade.
   plan_start = Clock::now();

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace {
 
 const scene::Scene& cornell() {
@@ -55,6 +57,23 @@ TEST(IterationsNeeded, TwiceTheL1DiameterOfTheSceneInCells) {
   EXPECT_EQ(renderer::iterations_needed(cascade, small, 4), 4u) << "never more than requested";
   const scene::Bounds outside{{-10.0f, 0.0f, 0.0f}, {40.0f, 40.0f, 40.0f}};  // clipped to the cascade
   EXPECT_EQ(renderer::iterations_needed(cascade, outside, 1000), 192u);
+}
+
+TEST(RsmResolutionNeeded, FourTexelsACellOnTheFarthestSurface) {
+  const scene::Bounds box{glm::vec3(-1.0f), glm::vec3(1.0f)};
+  api::Light sun;
+  sun.type = api::LightType::directional;
+  // An orthographic view of half extent 2 m: 4 m / (0.25 m / 4) = 64 texels.
+  const renderer::LightView ortho{glm::mat4(1.0f), glm::vec3(0, -1, 0), true, 2.0f, 0};
+  EXPECT_EQ(renderer::rsm_resolution_needed({ortho}, {sun}, box, 0.25f, 256), 64u);
+  EXPECT_EQ(renderer::rsm_resolution_needed({ortho}, {sun}, box, 0.25f, 32), 32u) << "never more than requested";
+  // A narrow spot 3 m above the box: the farthest corner is |(1, 4, 1)| away.
+  api::Light spot = spot_at({0, 3, 0}, {0, -1, 0});
+  const renderer::LightView narrow{glm::mat4(1.0f), glm::vec3(0, -1, 0), false, 0.1f, 0};
+  const float side = 2.0f * 0.1f * std::sqrt(18.0f);  // one texel at resolution 1
+  const std::uint32_t expected = std::uint32_t(std::exp2(std::ceil(std::log2(side * 4.0f / 0.25f))));
+  EXPECT_EQ(renderer::rsm_resolution_needed({narrow}, {spot}, box, 0.25f, 4096), expected);
+  EXPECT_LT(expected, renderer::rsm_resolution_needed({ortho}, {sun}, box, 0.25f, 4096)) << "a narrow spot needs fewer";
 }
 
 TEST(CascadesNeeded, UpToTheFirstThatHoldsTheSceneClearOfItsBorderBand) {

@@ -80,6 +80,7 @@ TEST_F(Planner, CascadesBeyondOneThatHoldsTheSceneAreSkippedAndChangeNothing) {
     r->lpv.cascades = 3;
     r->lpv.origin = glm::vec3(-2.0f, -1.0f, -2.0f);  // 4 m: the Cornell box and 2.5 cells to spare
     r->lpv.extent = 4.0f;
+    r->lpv.rsm_resolution = 64;  // under what the planner asks for these cells: this test is about cascades
   }
   auto& r = gpu_test::renderer();
   const auto automatic = r.render(a, renderer::kReadbackLinear);
@@ -89,6 +90,34 @@ TEST_F(Planner, CascadesBeyondOneThatHoldsTheSceneAreSkippedAndChangeNothing) {
   EXPECT_EQ(exact.stats.lpv->cascades.size(), 3u);
   EXPECT_EQ(pass(automatic, "propagate").cascade_gpu_ms.size(), 1u);
   EXPECT_EQ(automatic.linear.pixels, exact.linear.pixels);
+}
+
+TEST_F(Planner, ANarrowSpotGetsASmallerRsmWithinTolerance) {
+  api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
+  for (api::RenderRequest* r : {&a, &e}) {
+    r->light_edits.push_back({});
+    r->light_edits[0].outer_cone_deg = 8.0f;
+    r->light_edits[0].inner_cone_deg = 6.0f;
+  }
+  auto& r = gpu_test::renderer();
+  const auto automatic = r.render(a, renderer::kReadbackLinear);
+  const auto exact = r.render(e, renderer::kReadbackLinear);
+  ASSERT_FALSE(automatic.stats.decisions.empty());
+  EXPECT_EQ(automatic.stats.decisions[0].rfind("rsm 64 of 256", 0), 0u) << automatic.stats.decisions[0];
+  ASSERT_TRUE(automatic.stats.lpv && exact.stats.lpv);
+  EXPECT_LT(automatic.stats.lpv->vpl_count, exact.stats.lpv->vpl_count);
+  // The same light, sampled by fewer VPLs: measured 0.9% of the brightest pixel at most.
+  float brightest = 0.0f, worst = 0.0f;
+  double sum_auto = 0.0, sum_exact = 0.0;
+  for (std::size_t i = 0; i < exact.linear.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    brightest = std::max(brightest, exact.linear.pixels[i]);
+    worst = std::max(worst, std::abs(automatic.linear.pixels[i] - exact.linear.pixels[i]));
+    sum_auto += automatic.linear.pixels[i];
+    sum_exact += exact.linear.pixels[i];
+  }
+  EXPECT_LT(worst, 0.02f * brightest);
+  EXPECT_NEAR(sum_auto / sum_exact, 1.0, 0.01);
 }
 
 TEST_F(Planner, PropagationStopsWhenItConvergesWithinTolerance) {
