@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace renderer {
 namespace {
@@ -79,6 +80,42 @@ std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const s
   std::uint32_t resolution = 1;
   while (float(resolution) < needed && resolution < requested) resolution *= 2;
   return std::min(resolution, requested);
+}
+
+namespace {
+
+// Whether a box may be inside the view frustum of `view_proj` (Vulkan clip space, depth
+// 0..1): not when all its corners are outside one plane.
+bool may_be_visible(const scene::Bounds& b, const glm::mat4& view_proj) {
+  std::array<glm::vec4, 8> clip;
+  for (int i = 0; i < 8; ++i)
+    clip[std::size_t(i)] = view_proj * glm::vec4(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y,
+                                                  i & 4 ? b.max.z : b.min.z, 1.0f);
+  auto all_outside = [&](auto outside) {
+    return std::all_of(clip.begin(), clip.end(), outside);
+  };
+  return !(all_outside([](const glm::vec4& c) { return c.x < -c.w; }) ||
+           all_outside([](const glm::vec4& c) { return c.x > c.w; }) ||
+           all_outside([](const glm::vec4& c) { return c.y < -c.w; }) ||
+           all_outside([](const glm::vec4& c) { return c.y > c.w; }) ||
+           all_outside([](const glm::vec4& c) { return c.z < 0.0f; }) ||
+           all_outside([](const glm::vec4& c) { return c.z > c.w; }));
+}
+
+}  // namespace
+
+scene::Bounds lpv_region(const scene::Scene& scene, const glm::mat4& camera_view_proj,
+                         const std::vector<api::Light>& lights, const std::vector<bool>& light_drawn) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+  for (const scene::Bounds& b : scene.draw_bounds) {
+    bool matters = may_be_visible(b, camera_view_proj);
+    for (std::size_t i = 0; i < lights.size() && !matters; ++i)
+      matters = light_drawn[i] && light_misses(lights[i], b).empty();
+    if (!matters) continue;
+    lo = glm::min(lo, b.min);
+    hi = glm::max(hi, b.max);
+  }
+  return lo.x <= hi.x ? scene::Bounds{lo, hi} : scene.bounds;
 }
 
 std::uint32_t cascades_needed(const std::vector<CascadePlacement>& cascades, const scene::Bounds& bounds) {

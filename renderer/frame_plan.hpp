@@ -70,6 +70,12 @@ std::uint32_t iterations_needed(const CascadePlacement& cascade, const scene::Bo
 std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const std::vector<api::Light>& lights,
                                     const scene::Bounds& bounds, float cell_size, std::uint32_t requested);
 
+// The part of the scene the grid should cover: the draws the camera may see and the draws a
+// drawn light may reach (by their bounds), since light flows from the lit ones to the seen
+// ones; the scene's bounds when that is all of it or nothing.
+scene::Bounds lpv_region(const scene::Scene& scene, const glm::mat4& camera_view_proj,
+                         const std::vector<api::Light>& lights, const std::vector<bool>& light_drawn);
+
 // The cascades a frame needs: up to the first that holds the whole scene clear of its
 // border band (where shading would hand over to the next one), so coarser ones add nothing.
 std::uint32_t cascades_needed(const std::vector<CascadePlacement>& cascades, const scene::Bounds& bounds);

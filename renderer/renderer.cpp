@@ -262,19 +262,32 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   FramePlan plan = plan_frame({request, lights, scene, gpu.emitter_count, (readback & kReadbackDisplay) != 0});
   double plan_ms = ms_since(plan_start);
   const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn);
-  LpvSetup lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
-                                 camera_request.fov_y_deg, out.height);
+  plan_start = Clock::now();
+  // The grid covers (auto) only what the camera sees and the lights reach.
+  scene::Bounds grid_bounds = scene.bounds;
+  if (request.plan == api::PlanMode::auto_ && plan.run[kInject] && !request.lpv.origin && !request.lpv.extent) {
+    grid_bounds = lpv_region(scene, camera.view_proj, lights, plan.light_drawn);
+    const float fitted = glm::length(grid_bounds.max - grid_bounds.min), whole = glm::length(scene.bounds.max - scene.bounds.min);
+    if (fitted < 0.999f * whole)
+      plan.decisions.push_back("grid fitted to the part of the scene the camera sees and the lights reach (" +
+                               std::to_string(fitted) + " of " + std::to_string(whole) + " m across)");
+  }
+  plan_ms += ms_since(plan_start);
+  auto fit_lpv = [&] {
+    return setup_lpv(request.lpv, scene.bounds, grid_bounds, lights, light_setup.views, gpu.emitted_flux, camera,
+                     camera_request.fov_y_deg, out.height);
+  };
+  LpvSetup lpv_setup = fit_lpv();
   plan_start = Clock::now();
   if (request.plan == api::PlanMode::auto_ && plan.run[kRsm]) {
-    const std::uint32_t rsm = rsm_resolution_needed(light_setup.views, lights, scene.bounds,
+    const std::uint32_t rsm = rsm_resolution_needed(light_setup.views, lights, grid_bounds,
                                                     lpv_setup.cascades[0].cell_size, request.lpv.rsm_resolution);
     if (rsm < request.lpv.rsm_resolution) {
       plan.decisions.push_back("rsm " + std::to_string(rsm) + " of " + std::to_string(request.lpv.rsm_resolution) +
                                " texels per side: four texels a cell on the farthest surface the lights see");
       request.lpv.rsm_resolution = rsm;
       request.lpv.vpl_downsample = std::min(request.lpv.vpl_downsample, rsm);
-      lpv_setup = setup_lpv(request.lpv, scene.bounds, lights, light_setup.views, gpu.emitted_flux, camera,
-                            camera_request.fov_y_deg, out.height);
+      lpv_setup = fit_lpv();
     }
   }
   plan_ms += ms_since(plan_start);
@@ -283,7 +296,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   // cross the part of the scene inside the cascade.
   plan_start = Clock::now();
   if (request.plan == api::PlanMode::auto_ && plan.run[kInject]) {
-    const std::uint32_t needed = cascades_needed(lpv_setup.cascades, scene.bounds);
+    const std::uint32_t needed = cascades_needed(lpv_setup.cascades, grid_bounds);
     if (needed < lpv_setup.cascades.size()) {
       plan.decisions.push_back(std::to_string(needed) + " of " + std::to_string(lpv_setup.cascades.size()) +
                                " cascades: cascade " + std::to_string(needed - 1) +
@@ -294,7 +307,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   }
   std::vector<std::uint32_t> iterations(lpv_setup.cascades.size(), request.lpv.iterations);
   for (std::uint32_t c = 0; c < iterations.size() && request.plan == api::PlanMode::auto_ && plan.run[kPropagate]; ++c) {
-    iterations[c] = iterations_needed(lpv_setup.cascades[c], scene.bounds, request.lpv.iterations);
+    iterations[c] = iterations_needed(lpv_setup.cascades[c], grid_bounds, request.lpv.iterations);
     if (iterations[c] < request.lpv.iterations)
       plan.decisions.push_back("cascade " + std::to_string(c) + ": " + std::to_string(iterations[c]) + " of " +
                                std::to_string(request.lpv.iterations) +

@@ -75,11 +75,12 @@ float flux_units_per_watt(double flux_bound) {
   return float(std::exp2(std::clamp(exponent, -100.0, 120.0)));
 }
 
-LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::vector<api::Light>& lights,
-                   const std::vector<LightView>& views, double emitted_flux, const CameraSetup& camera,
-                   float camera_fov_y_deg, std::uint32_t image_height) {
+LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene::Bounds& grid_bounds,
+                   const std::vector<api::Light>& lights, const std::vector<LightView>& views, double emitted_flux,
+                   const CameraSetup& camera, float camera_fov_y_deg, std::uint32_t image_height) {
   LpvSetup setup;
-  setup.cascades = place_cascades(lpv, bounds, camera.position + camera.forward * glm::length(bounds.center() - camera.position));
+  setup.cascades = place_cascades(
+      lpv, grid_bounds, camera.position + camera.forward * glm::length(grid_bounds.center() - camera.position));
   gpu::GpuLpv& g = setup.gpu;
   for (std::size_t c = 0; c < setup.cascades.size(); ++c) {
     const CascadePlacement& p = setup.cascades[c];

@@ -47,9 +47,11 @@ inline std::uint32_t vpls_per_view_side(const api::Lpv& lpv) { return lpv.rsm_re
 
 // Everything the LPV passes of one frame need. `views` are the emitting lights' views;
 // `emitted_flux` is the largest channel of the emissive surfaces' flux (W), injected too.
-LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const std::vector<api::Light>& lights,
-                   const std::vector<LightView>& views, double emitted_flux, const CameraSetup& camera,
-                   float camera_fov_y_deg, std::uint32_t image_height);
+// Fitted cascades cover `grid_bounds` (the scene's, or the part the planner chose); the
+// fixed-point range covers all the flux the lights send into `bounds`, the whole scene's.
+LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene::Bounds& grid_bounds,
+                   const std::vector<api::Light>& lights, const std::vector<LightView>& views, double emitted_flux,
+                   const CameraSetup& camera, float camera_fov_y_deg, std::uint32_t image_height);
 
 // The GpuLpv of a frame without indirect light (the shading reads no grid).
 gpu::GpuLpv no_lpv();

@@ -70,6 +70,7 @@ struct Scene {
   std::vector<api::Light> lights;
   api::Camera camera;  // the default camera
   Bounds bounds;       // of the geometry; recompute with update_bounds() after edits
+  std::vector<Bounds> draw_bounds;  // per draw, made by update_bounds() too
   // What the loader ignored (unsupported optional features); every render's stats repeat them.
   std::vector<std::string> warnings;
 

@@ -120,6 +120,52 @@ TEST_F(Planner, ANarrowSpotGetsASmallerRsmWithinTolerance) {
   EXPECT_NEAR(sum_auto / sum_exact, 1.0, 0.01);
 }
 
+double rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& b) {  // over RGB
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    if (i % 4 != 3) sum += double(a.pixels[i] - b.pixels[i]) * double(a.pixels[i] - b.pixels[i]);
+  return std::sqrt(sum / double(a.pixels.size() / 4 * 3));
+}
+
+// LPV has no resolution-independent answer to compare with (its brightness moves with the
+// cell size), so the reference is the exact plan on the object alone: the empty part of
+// the scene should not change the grid. (Against ground truth: the accuracy issue's
+// reference renderer.)
+TEST_F(Planner, AGridFittedToWhatMattersIgnoresEmptySpaceThatAScenesizedOneSpreadsOver) {
+  const scene::Scene box = *scene::make_builtin_scene("cornell-box");
+  // The same box, and far behind the camera an unlit wall that makes the scene 40 m deep.
+  scene::Scene s = box;
+  const auto base = std::uint32_t(s.vertices.size());
+  for (glm::vec2 c : {glm::vec2(-1, 0), glm::vec2(1, 0), glm::vec2(1, 2), glm::vec2(-1, 2)})
+    s.vertices.push_back({glm::vec3(c.x, c.y, 40.0f), glm::vec3(0, 0, 1), glm::vec2(0)});
+  const auto first = std::uint32_t(s.indices.size());
+  for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) s.indices.push_back(base + i);
+  s.draws.push_back({first, 6, 0});
+  s.update_bounds();
+  ASSERT_GT(s.bounds.max.z, 39.0f);
+
+  api::RenderRequest fitted = request(api::PlanMode::auto_), whole = request(api::PlanMode::exact);
+  for (api::RenderRequest* r : {&fitted, &whole}) {
+    r->output.view = api::View::indirect;
+    r->lpv.grid = glm::uvec3(16);
+    r->camera = box.camera;  // the far wall does not move the default camera's near and far
+    r->camera->near = 0.1f;
+    r->camera->far = 10.0f;
+  }
+  auto& r = gpu_test::renderer();
+  const auto a = r.render(s, fitted, renderer::kReadbackLinear);
+  const auto e = r.render(s, whole, renderer::kReadbackLinear);
+  const auto reference = r.render(box, whole, renderer::kReadbackLinear);
+  ASSERT_TRUE(a.stats.lpv && e.stats.lpv);
+  EXPECT_LT(a.stats.lpv->cascades[0].cell_size, 0.1 * e.stats.lpv->cascades[0].cell_size);
+  bool mentioned = false;
+  for (const std::string& d : a.stats.decisions) mentioned = mentioned || d.find("grid fitted") != std::string::npos;
+  EXPECT_TRUE(mentioned);
+  const double fitted_error = rmse(a.linear, reference.linear), whole_error = rmse(e.linear, reference.linear);
+  std::printf("RMSE against the box alone: fitted grid %.6f, scene-sized grid %.6f\n", fitted_error, whole_error);
+  EXPECT_LT(fitted_error, 0.1 * whole_error);
+}
+
 TEST_F(Planner, PropagationStopsWhenItConvergesWithinTolerance) {
   api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
   a.output.view = e.output.view = api::View::indirect;
