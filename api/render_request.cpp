@@ -1,5 +1,7 @@
 #include "api/render_request.hpp"
 
+#include <algorithm>
+
 #include <stdexcept>
 
 namespace api {
@@ -53,6 +55,24 @@ std::string to_string(PlanMode p) {
     case PlanMode::exact: return "exact";
   }
   throw std::invalid_argument("api::to_string: invalid PlanMode");
+}
+
+std::string to_string(PlanRule r) {
+  switch (r) {
+    case PlanRule::lights: return "lights";
+    case PlanRule::surfaces: return "surfaces";
+    case PlanRule::grid: return "grid";
+    case PlanRule::rsm: return "rsm";
+    case PlanRule::cascades: return "cascades";
+    case PlanRule::iterations: return "iterations";
+    case PlanRule::convergence: return "convergence";
+  }
+  throw std::invalid_argument("api::to_string: invalid PlanRule");
+}
+
+bool plan_applies(const RenderRequest& request, PlanRule r) {
+  return request.plan == PlanMode::auto_ &&
+         std::find(request.plan_keep.begin(), request.plan_keep.end(), r) == request.plan_keep.end();
 }
 
 void apply_edit(Light& light, const LightEdit& edit) {

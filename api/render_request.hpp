@@ -60,6 +60,9 @@ enum class Tonemap { none, reinhard, aces };
 // auto: the planner skips and shortens what the scene does not need (docs/planner.md);
 // exact: every pass runs as requested.
 enum class PlanMode { auto_, exact };
+// The rules of plan "auto", each of which a request may turn off ("plan_keep"): what it
+// names then runs as requested.
+enum class PlanRule { lights, surfaces, grid, rsm, cascades, iterations, convergence };
 
 struct Output {
   std::uint32_t width = 512;
@@ -106,6 +109,7 @@ struct RenderRequest {
   Shadows shadows;
   Lpv lpv;
   PlanMode plan = PlanMode::auto_;
+  std::vector<PlanRule> plan_keep;  // rules of "auto" that do not apply to this request
   bool dry_run = false;      // plan only: the stats say what would run, nothing is rendered
   std::uint32_t repeat = 1;  // frames to render and time
 };
@@ -141,5 +145,9 @@ std::string to_string(View v);
 std::string to_string(ImageFormat f);
 std::string to_string(Tonemap t);
 std::string to_string(PlanMode p);
+std::string to_string(PlanRule r);
+
+// Whether the planner's rule `r` applies: plan "auto" and not in plan_keep.
+bool plan_applies(const RenderRequest& request, PlanRule r);
 
 }  // namespace api

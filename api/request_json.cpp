@@ -260,10 +260,12 @@ constexpr std::array views{View::final_, View::direct, View::indirect, View::lpv
 constexpr std::array formats{ImageFormat::png, ImageFormat::exr, ImageFormat::pfm};
 constexpr std::array tonemaps{Tonemap::none, Tonemap::reinhard, Tonemap::aces};
 constexpr std::array plan_modes{PlanMode::auto_, PlanMode::exact};
+constexpr std::array plan_rules{PlanRule::lights,     PlanRule::surfaces,   PlanRule::grid,       PlanRule::rsm,
+                                PlanRule::cascades, PlanRule::iterations, PlanRule::convergence};
 
 using Keys = std::string_view;
-constexpr std::array<Keys, 10> request_keys{"scene",   "camera", "lights", "light_edits", "output",
-                                            "shadows", "lpv",    "plan",   "dry_run",     "repeat"};
+constexpr std::array<Keys, 11> request_keys{"scene", "camera", "lights",    "light_edits", "output", "shadows",
+                                            "lpv",   "plan",   "plan_keep", "dry_run",     "repeat"};
 constexpr std::array<Keys, 6> camera_keys{"position", "target", "up", "fov_y_deg", "near", "far"};
 constexpr std::array<Keys, 8> light_keys{"type",      "position", "direction",      "color",
                                          "intensity", "range",    "inner_cone_deg", "outer_cone_deg"};
@@ -462,6 +464,14 @@ RenderRequest read_request(const json& document) {
   if (auto v = obj.get("shadows")) request.shadows = read_shadows(*v);
   if (auto v = obj.get("lpv")) request.lpv = read_lpv(*v);
   if (auto v = obj.get("plan")) request.plan = as_enum(*v, plan_modes);
+  if (auto v = obj.get("plan_keep")) {
+    for (const Field& rule : as_array(*v, plan_rules.size())) {
+      const PlanRule r = as_enum(rule, plan_rules);
+      if (std::find(request.plan_keep.begin(), request.plan_keep.end(), r) != request.plan_keep.end())
+        rule.reject("each rule once");
+      request.plan_keep.push_back(r);
+    }
+  }
   if (auto v = obj.get("dry_run")) request.dry_run = as_bool(*v);
   if (auto v = obj.get("repeat")) request.repeat = as_uint<std::uint32_t>(*v, 1, limits::max_repeat);
   return request;
@@ -624,6 +634,10 @@ nlohmann::json to_json(const RenderRequest& request) {
   j["shadows"] = {{"enabled", request.shadows.enabled}, {"resolution", request.shadows.resolution}};
   j["lpv"] = lpv_json(request.lpv);
   j["plan"] = to_string(request.plan);
+  if (!request.plan_keep.empty()) {
+    j["plan_keep"] = json::array();
+    for (PlanRule r : request.plan_keep) j["plan_keep"].push_back(to_string(r));
+  }
   if (request.dry_run) j["dry_run"] = true;
   j["repeat"] = request.repeat;
   return j;

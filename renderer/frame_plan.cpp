@@ -132,7 +132,6 @@ std::uint32_t cascades_needed(const std::vector<CascadePlacement>& cascades, con
 
 FramePlan plan_frame(const PlanInputs& in) {
   const api::RenderRequest& request = in.request;
-  const bool automatic = request.plan == api::PlanMode::auto_;
   FramePlan plan;
   const api::View view = request.output.view;
   const std::string view_name = "view '" + api::to_string(view) + "'";
@@ -144,7 +143,8 @@ FramePlan plan_frame(const PlanInputs& in) {
   bool any_drawn = false;
   for (std::size_t i = 0; i < in.lights.size(); ++i) {
     const api::Light& light = in.lights[i];
-    std::string misses = automatic && emits(light) ? light_misses(light, in.scene.bounds) : "";
+    std::string misses =
+        api::plan_applies(request, api::PlanRule::lights) && emits(light) ? light_misses(light, in.scene.bounds) : "";
     if (!misses.empty())
       plan.decisions.push_back("light " + std::to_string(i) + ": no shadow map or RSM, " + misses);
     plan.light_drawn.push_back(emits(light) && misses.empty());
@@ -160,7 +160,7 @@ FramePlan plan_frame(const PlanInputs& in) {
   plan.run[kShadow] = plan.reason[kShadow].empty();
   if (!needs_direct_light(view)) plan.reason[kShade] = view_name + ": shaded without the lights' direct light";
 
-  const bool reflects = !automatic || reflects_light(in.scene);
+  const bool reflects = !api::plan_applies(request, api::PlanRule::surfaces) || reflects_light(in.scene);
   const bool vpls = (any_drawn && reflects) || in.emitters > 0;
   std::string lpv_reason;
   if (!needs_indirect_light(view))
@@ -181,7 +181,7 @@ FramePlan plan_frame(const PlanInputs& in) {
     if (request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
   }
   for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.run[p] = plan.reason[p].empty();
-  plan.convergence = automatic ? request.lpv.convergence : 0.0f;
+  plan.convergence = api::plan_applies(request, api::PlanRule::convergence) ? request.lpv.convergence : 0.0f;
   return plan;
 }
 

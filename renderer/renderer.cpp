@@ -265,7 +265,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   plan_start = Clock::now();
   // The grid covers (auto) only what the camera sees and the lights reach.
   scene::Bounds grid_bounds = scene.bounds;
-  if (request.plan == api::PlanMode::auto_ && plan.run[kInject] && !request.lpv.origin && !request.lpv.extent) {
+  if (api::plan_applies(request, api::PlanRule::grid) && plan.run[kInject] && !request.lpv.origin && !request.lpv.extent) {
     grid_bounds = lpv_region(scene, camera.view_proj, lights, plan.light_drawn);
     const float fitted = glm::length(grid_bounds.max - grid_bounds.min), whole = glm::length(scene.bounds.max - scene.bounds.min);
     if (fitted < 0.999f * whole)
@@ -279,7 +279,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   };
   LpvSetup lpv_setup = fit_lpv();
   plan_start = Clock::now();
-  if (request.plan == api::PlanMode::auto_ && plan.run[kRsm]) {
+  if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm]) {
     const std::uint32_t rsm = rsm_resolution_needed(light_setup.views, lights, grid_bounds,
                                                     lpv_setup.cascades[0].cell_size, request.lpv.rsm_resolution);
     if (rsm < request.lpv.rsm_resolution) {
@@ -295,7 +295,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   // Propagation steps per cascade: as requested, or (auto) no more than light needs to
   // cross the part of the scene inside the cascade.
   plan_start = Clock::now();
-  if (request.plan == api::PlanMode::auto_ && plan.run[kInject]) {
+  if (api::plan_applies(request, api::PlanRule::cascades) && plan.run[kInject]) {
     const std::uint32_t needed = cascades_needed(lpv_setup.cascades, grid_bounds);
     if (needed < lpv_setup.cascades.size()) {
       plan.decisions.push_back(std::to_string(needed) + " of " + std::to_string(lpv_setup.cascades.size()) +
@@ -306,7 +306,9 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     }
   }
   std::vector<std::uint32_t> iterations(lpv_setup.cascades.size(), request.lpv.iterations);
-  for (std::uint32_t c = 0; c < iterations.size() && request.plan == api::PlanMode::auto_ && plan.run[kPropagate]; ++c) {
+  for (std::uint32_t c = 0; c < iterations.size() && api::plan_applies(request, api::PlanRule::iterations) &&
+                          plan.run[kPropagate];
+       ++c) {
     iterations[c] = iterations_needed(lpv_setup.cascades[c], grid_bounds, request.lpv.iterations);
     if (iterations[c] < request.lpv.iterations)
       plan.decisions.push_back("cascade " + std::to_string(c) + ": " + std::to_string(iterations[c]) + " of " +

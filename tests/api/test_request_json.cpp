@@ -107,6 +107,7 @@ void expect_same(const api::RenderRequest& a, const api::RenderRequest& b) {
   EXPECT_EQ(a.lpv.extent, b.lpv.extent);
   EXPECT_EQ(a.lpv.convergence, b.lpv.convergence);
   EXPECT_EQ(a.plan, b.plan);
+  EXPECT_EQ(a.plan_keep, b.plan_keep);
   EXPECT_EQ(a.repeat, b.repeat);
 }
 
@@ -141,6 +142,15 @@ TEST(ParseRequest, PlanModeAndConvergence) {
   EXPECT_THROW(api::parse_render_request(R"({"plan": "fast"})"), api::RequestError);
   EXPECT_THROW(api::parse_render_request(R"({"lpv": {"convergence": 1.5}})"), api::RequestError);
   EXPECT_THROW(api::parse_render_request(R"({"lpv": {"convergence": -0.1}})"), api::RequestError);
+  const api::RenderRequest keep = api::parse_render_request(R"({"plan_keep": ["iterations", "rsm"]})");
+  EXPECT_EQ(keep.plan_keep, (std::vector<api::PlanRule>{api::PlanRule::iterations, api::PlanRule::rsm}));
+  EXPECT_FALSE(api::plan_applies(keep, api::PlanRule::iterations));
+  EXPECT_TRUE(api::plan_applies(keep, api::PlanRule::lights));
+  api::RenderRequest exact;
+  exact.plan = api::PlanMode::exact;
+  EXPECT_FALSE(api::plan_applies(exact, api::PlanRule::lights));
+  EXPECT_THROW(api::parse_render_request(R"({"plan_keep": ["speed"]})"), api::RequestError);
+  EXPECT_THROW(api::parse_render_request(R"({"plan_keep": ["rsm", "rsm"]})"), api::RequestError);
 }
 
 // ---- valid requests ----
@@ -667,6 +677,7 @@ api::RenderRequest full_request() {
   r.lpv.extent = 12.5f;
   r.lpv.convergence = 0.25f;
   r.plan = api::PlanMode::exact;
+  r.plan_keep = {api::PlanRule::grid, api::PlanRule::convergence};
   r.repeat = 7;
   return r;
 }

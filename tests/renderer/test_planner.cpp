@@ -118,6 +118,12 @@ TEST_F(Planner, ANarrowSpotGetsASmallerRsmWithinTolerance) {
   }
   EXPECT_LT(worst, 0.02f * brightest);
   EXPECT_NEAR(sum_auto / sum_exact, 1.0, 0.01);
+
+  // Kept as requested, the rule does not apply and nothing else changes.
+  a.plan_keep = {api::PlanRule::rsm};
+  const auto kept = r.render(a, renderer::kReadbackLinear);
+  EXPECT_TRUE(kept.stats.decisions.empty());
+  EXPECT_EQ(kept.linear.pixels, exact.linear.pixels);
 }
 
 double rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& b) {  // over RGB
