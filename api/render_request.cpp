@@ -60,6 +60,7 @@ std::string to_string(PlanMode p) {
 std::string to_string(PlanRule r) {
   switch (r) {
     case PlanRule::lights: return "lights";
+    case PlanRule::shadows: return "shadows";
     case PlanRule::surfaces: return "surfaces";
     case PlanRule::grid: return "grid";
     case PlanRule::rsm: return "rsm";

@@ -62,7 +62,7 @@ enum class Tonemap { none, reinhard, aces };
 enum class PlanMode { auto_, exact };
 // The rules of plan "auto", each of which a request may turn off ("plan_keep"): what it
 // names then runs as requested.
-enum class PlanRule { lights, surfaces, grid, rsm, cascades, iterations, convergence };
+enum class PlanRule { lights, shadows, surfaces, grid, rsm, cascades, iterations, convergence };
 
 struct Output {
   std::uint32_t width = 512;

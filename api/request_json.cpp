@@ -260,8 +260,8 @@ constexpr std::array views{View::final_, View::direct, View::indirect, View::lpv
 constexpr std::array formats{ImageFormat::png, ImageFormat::exr, ImageFormat::pfm};
 constexpr std::array tonemaps{Tonemap::none, Tonemap::reinhard, Tonemap::aces};
 constexpr std::array plan_modes{PlanMode::auto_, PlanMode::exact};
-constexpr std::array plan_rules{PlanRule::lights,     PlanRule::surfaces,   PlanRule::grid,       PlanRule::rsm,
-                                PlanRule::cascades, PlanRule::iterations, PlanRule::convergence};
+constexpr std::array plan_rules{PlanRule::lights, PlanRule::shadows,  PlanRule::surfaces,   PlanRule::grid,
+                                PlanRule::rsm,    PlanRule::cascades, PlanRule::iterations, PlanRule::convergence};
 
 using Keys = std::string_view;
 constexpr std::array<Keys, 11> request_keys{"scene", "camera", "lights",    "light_edits", "output", "shadows",

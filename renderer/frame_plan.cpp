@@ -104,6 +104,30 @@ bool may_be_visible(const scene::Bounds& b, const glm::mat4& view_proj) {
 
 }  // namespace
 
+bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const glm::mat4& camera_view_proj) {
+  const std::size_t n = scene.draw_bounds.size();
+  if (n > kMaxShadowTestDraws || scene.draw_planar.size() != n) return true;
+  auto overlaps = [](const scene::Bounds& a, const scene::Bounds& b) {
+    return glm::all(glm::lessThanEqual(a.min, b.max)) && glm::all(glm::lessThanEqual(b.min, a.max));
+  };
+  for (std::size_t r = 0; r < n; ++r) {  // receivers
+    const scene::Bounds& b = scene.draw_bounds[r];
+    if (!may_be_visible(b, camera_view_proj) || !light_misses(light, b).empty()) continue;
+    if (!scene.draw_planar[r]) return true;
+    // The box spanned by the receiver and the light: what lies between them is inside it.
+    scene::Bounds between = b;
+    if (light.type == api::LightType::directional) {
+      const glm::vec3 toward = -light.direction * (2.0f * scene.bounds.radius() + glm::length(b.max - b.min));
+      between = {glm::min(b.min, b.min + toward), glm::max(b.max, b.max + toward)};
+    } else {
+      between = {glm::min(b.min, light.position), glm::max(b.max, light.position)};
+    }
+    for (std::size_t o = 0; o < n; ++o)
+      if (o != r && overlaps(scene.draw_bounds[o], between)) return true;
+  }
+  return false;
+}
+
 scene::Bounds lpv_region(const scene::Scene& scene, const glm::mat4& camera_view_proj,
                          const std::vector<api::Light>& lights, const std::vector<bool>& light_drawn) {
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
@@ -140,7 +164,7 @@ FramePlan plan_frame(const PlanInputs& in) {
   if (!plan.run[kTonemap]) plan.reason[kTonemap] = "no 8-bit image requested";
 
   // Lights: those that emit get views, unless (auto) they cannot reach the scene.
-  bool any_drawn = false;
+  bool any_drawn = false, any_shadowed = false;
   for (std::size_t i = 0; i < in.lights.size(); ++i) {
     const api::Light& light = in.lights[i];
     std::string misses =
@@ -149,6 +173,13 @@ FramePlan plan_frame(const PlanInputs& in) {
       plan.decisions.push_back("light " + std::to_string(i) + ": no shadow map or RSM, " + misses);
     plan.light_drawn.push_back(emits(light) && misses.empty());
     any_drawn = any_drawn || plan.light_drawn.back();
+    const bool shadowed = plan.light_drawn.back() && request.shadows.enabled && needs_direct_light(request.output.view) &&
+                          (!api::plan_applies(request, api::PlanRule::shadows) ||
+                           may_cast_shadows(in.scene, light, in.camera_view_proj));
+    if (plan.light_drawn.back() && request.shadows.enabled && needs_direct_light(request.output.view) && !shadowed)
+      plan.decisions.push_back("light " + std::to_string(i) + ": no shadow map, nothing can cast its shadow on what the camera sees");
+    plan.light_shadowed.push_back(shadowed);
+    any_shadowed = any_shadowed || shadowed;
   }
 
   if (!needs_direct_light(view))
@@ -157,6 +188,8 @@ FramePlan plan_frame(const PlanInputs& in) {
     plan.reason[kShadow] = "shadows disabled";
   else if (!any_drawn)
     plan.reason[kShadow] = "no light reaches the scene";
+  else if (!any_shadowed)
+    plan.reason[kShadow] = "nothing can cast a shadow on what the camera sees";
   plan.run[kShadow] = plan.reason[kShadow].empty();
   if (!needs_direct_light(view)) plan.reason[kShade] = view_name + ": shaded without the lights' direct light";
 

@@ -40,7 +40,8 @@ bool needs_indirect_light(api::View v);
 struct FramePlan {
   std::array<bool, kPassCount> run{};
   std::array<std::string, kPassCount> reason;
-  std::vector<bool> light_drawn;       // per light: it gets shadow maps and RSM views
+  std::vector<bool> light_drawn;       // per light: it gets RSM views (and shadow maps if shadowed)
+  std::vector<bool> light_shadowed;    // per light: something may cast its shadow on what is seen
   float convergence = 0.0f;            // stop when the rest would add less than this share (0: never)
   std::vector<std::string> decisions;  // what the plan changed from the request, and why
 };
@@ -51,6 +52,7 @@ struct PlanInputs {
   const scene::Scene& scene;
   std::uint32_t emitters = 0;  // emissive surfels of the scene
   bool display_readback = false;  // an 8-bit image is wanted (tonemapping)
+  glm::mat4 camera_view_proj{1.0f};
 };
 
 FramePlan plan_frame(const PlanInputs& in);
@@ -58,6 +60,13 @@ FramePlan plan_frame(const PlanInputs& in);
 // Why a light cannot light anything in `bounds` (empty when it may): beyond its range, or
 // its cone pointing away from them.
 std::string light_misses(const api::Light& light, const scene::Bounds& bounds);
+
+// Whether anything can cast a shadow of `light` onto a draw the camera may see: a draw that
+// is not planar (it may shadow itself), or another draw inside the box spanned by a seen,
+// lit draw and the light (toward the light, for a directional one). By bounds, so "may".
+// Scenes of more than kMaxShadowTestDraws draws are taken to need shadows.
+bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const glm::mat4& camera_view_proj);
+inline constexpr std::size_t kMaxShadowTestDraws = 256;
 
 // The propagation steps a cascade needs: light crosses one cell per step, so after the
 // L1 diameter (in cells) of the part of the scene inside the cascade, every occupied cell

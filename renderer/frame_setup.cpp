@@ -116,7 +116,7 @@ std::vector<LightView> light_views(const std::vector<api::Light>& lights, const 
 }
 
 LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
-                        const api::Shadows& shadows, const std::vector<bool>& drawn) {
+                        const api::Shadows& shadows, const std::vector<bool>& drawn, const std::vector<bool>& shadowed) {
   LightSetup setup;
   setup.views = light_views(lights, bounds, drawn);
   for (const api::Light& light : lights) {
@@ -140,6 +140,7 @@ LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Boun
   if (!shadows.enabled) return setup;
   const float texel = 2.0f / static_cast<float>(shadows.resolution);  // texel side per unit half extent
   for (const LightView& view : setup.views) {
+    if (!shadowed.empty() && !shadowed[view.light]) continue;
     gpu::GpuLight& g = setup.lights[view.light];
     if (g.info.z == 0) g.info.y = static_cast<std::uint32_t>(setup.shadow_views.size());
     g.info.z += 1;  // 1 map, or 6 for a cube

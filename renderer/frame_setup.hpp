@@ -54,7 +54,9 @@ struct LightSetup {
 };
 
 // GPU lights, their views, and the shadow maps' view-projections when shadows are on.
+// `shadowed[i]` false: light i gets no shadow map (the planner found nothing to cast one).
 LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
-                        const api::Shadows& shadows, const std::vector<bool>& drawn = {});
+                        const api::Shadows& shadows, const std::vector<bool>& drawn = {},
+                        const std::vector<bool>& shadowed = {});
 
 }  // namespace renderer

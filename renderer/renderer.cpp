@@ -259,9 +259,11 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const api::Camera camera_request = request.camera.value_or(scene.camera);
   const CameraSetup camera = setup_camera(camera_request, scene.bounds, float(out.width) / float(out.height));
   auto plan_start = Clock::now();
-  FramePlan plan = plan_frame({request, lights, scene, gpu.emitter_count, (readback & kReadbackDisplay) != 0});
+  FramePlan plan =
+      plan_frame({request, lights, scene, gpu.emitter_count, (readback & kReadbackDisplay) != 0, camera.view_proj});
   double plan_ms = ms_since(plan_start);
-  const LightSetup light_setup = setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn);
+  const LightSetup light_setup =
+      setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn, plan.light_shadowed);
   plan_start = Clock::now();
   // The grid covers (auto) only what the camera sees and the lights reach.
   scene::Bounds grid_bounds = scene.bounds;

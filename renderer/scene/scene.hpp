@@ -71,6 +71,7 @@ struct Scene {
   api::Camera camera;  // the default camera
   Bounds bounds;       // of the geometry; recompute with update_bounds() after edits
   std::vector<Bounds> draw_bounds;  // per draw, made by update_bounds() too
+  std::vector<bool> draw_planar;    // per draw: all its triangles in one plane (cannot shadow itself)
   // What the loader ignored (unsupported optional features); every render's stats repeat them.
   std::vector<std::string> warnings;
 

@@ -2,6 +2,9 @@
 // how many propagation steps a cascade needs; "exact" turns the planner's own rules off.
 #include "renderer/frame_plan.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
+#include "renderer/scene/scene_builder.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <gtest/gtest.h>
 
@@ -74,6 +77,27 @@ TEST(RsmResolutionNeeded, FourTexelsACellOnTheFarthestSurface) {
   const std::uint32_t expected = std::uint32_t(std::exp2(std::ceil(std::log2(side * 4.0f / 0.25f))));
   EXPECT_EQ(renderer::rsm_resolution_needed({narrow}, {spot}, box, 0.25f, 4096), expected);
   EXPECT_LT(expected, renderer::rsm_resolution_needed({ortho}, {sun}, box, 0.25f, 4096)) << "a narrow spot needs fewer";
+}
+
+TEST(MayCastShadows, OnlyWithSomethingBetweenTheLightAndWhatIsSeen) {
+  scene::SceneBuilder b("floor");
+  const auto white = b.add_material({"white", glm::vec3(0.8f), {}});
+  b.add_facing_quad({0, 0, 0}, {0, 1, 0}, 4.0f, white);
+  scene::Scene floor = b.build();
+  const api::Light spot = spot_at({0, 3, 0}, {0, -1, 0});
+  const glm::mat4 camera = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) *
+                           glm::lookAt(glm::vec3(0, 3, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+  EXPECT_FALSE(renderer::may_cast_shadows(floor, spot, camera)) << "a plane cannot shadow itself";
+
+  b = scene::SceneBuilder("floor and block");
+  b.add_facing_quad({0, 0, 0}, {0, 1, 0}, 4.0f, b.add_material({"white", glm::vec3(0.8f), {}}));
+  b.add_box({0, 1, 0}, glm::vec3(0.5f), 0.0f, 0);
+  EXPECT_TRUE(renderer::may_cast_shadows(b.build(), spot, camera));
+
+  // The camera turned away from both: nothing it sees can be shadowed.
+  const glm::mat4 away = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) *
+                         glm::lookAt(glm::vec3(0, 3, 5), glm::vec3(0, 3, 10), glm::vec3(0, 1, 0));
+  EXPECT_FALSE(renderer::may_cast_shadows(b.build(), spot, away)) << "nothing seen: nothing to shadow";
 }
 
 TEST(CascadesNeeded, UpToTheFirstThatHoldsTheSceneClearOfItsBorderBand) {

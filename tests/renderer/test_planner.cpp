@@ -3,6 +3,7 @@
 // can change, within a stated tolerance where the plan shortens propagation.
 #include "gpu_test.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
+#include "renderer/scene/scene_builder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -57,6 +58,37 @@ TEST_F(Planner, ALightPointingAwayGetsNoMapsAndChangesNothing) {
     EXPECT_TRUE(pass(dark_exact, name).ran) << name;
   }
   EXPECT_EQ(dark.linear.pixels, dark_exact.linear.pixels);
+}
+
+TEST_F(Planner, NothingToCastAShadowMeansNoShadowMap) {
+  scene::SceneBuilder b("lit floor");
+  b.add_facing_quad({0, 0, 0}, {0, 1, 0}, 4.0f, b.add_material({"white", glm::vec3(0.8f), {}}));
+  api::Light spot = away_spot();
+  spot.position = {0.0f, 3.0f, 0.0f};
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  b.add_light(spot);
+  api::Camera camera;
+  camera.position = {0.0f, 3.0f, 5.0f};
+  camera.target = {0.0f, 0.0f, 0.0f};
+  b.set_camera(camera);
+  const scene::Scene floor = b.build();
+  auto& r = gpu_test::renderer();
+  api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
+  a.output.view = e.output.view = api::View::direct;
+  const auto automatic = r.render(floor, a, renderer::kReadbackLinear);
+  const auto exact = r.render(floor, e, renderer::kReadbackLinear);
+  EXPECT_FALSE(pass(automatic, "shadow").ran);
+  EXPECT_EQ(pass(automatic, "shadow").reason, "nothing can cast a shadow on what the camera sees");
+  EXPECT_EQ(pass(automatic, "shadow").gpu_ms.median, 0.0);
+  EXPECT_TRUE(pass(exact, "shadow").ran);
+  float brightest = 0.0f, worst = 0.0f;
+  for (std::size_t i = 0; i < exact.linear.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    brightest = std::max(brightest, exact.linear.pixels[i]);
+    worst = std::max(worst, std::abs(automatic.linear.pixels[i] - exact.linear.pixels[i]));
+  }
+  EXPECT_GT(brightest, 0.0f);
+  EXPECT_LE(worst, 1e-3f * brightest) << "an unoccluded floor is lit the same with or without its shadow map";
 }
 
 TEST_F(Planner, BlackSurfacesSkipTheLpvAndChangeNothing) {
