@@ -99,6 +99,7 @@ TEST_F(Planner, BlackSurfacesSkipTheLpvAndChangeNothing) {
   const auto exact = r.render(black, request(api::PlanMode::exact), renderer::kReadbackLinear);
   for (const char* name : {"rsm", "inject", "propagate"}) {
     EXPECT_FALSE(pass(automatic, name).ran) << name;
+    EXPECT_EQ(pass(automatic, name).gpu_ms.median, 0.0) << name;
     EXPECT_NE(pass(automatic, name).reason.find("every albedo is 0"), std::string::npos);
     EXPECT_TRUE(pass(exact, name).ran) << name;
   }
@@ -202,6 +203,31 @@ TEST_F(Planner, AGridFittedToWhatMattersIgnoresEmptySpaceThatAScenesizedOneSprea
   const double fitted_error = rmse(a.linear, reference.linear), whole_error = rmse(e.linear, reference.linear);
   std::printf("RMSE against the box alone: fitted grid %.6f, scene-sized grid %.6f\n", fitted_error, whole_error);
   EXPECT_LT(fitted_error, 0.1 * whole_error);
+}
+
+TEST_F(Planner, IterationsBeyondWhatLightNeedsAreCutWithinTolerance) {
+  api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
+  for (api::RenderRequest* r : {&a, &e}) {
+    r->output.view = api::View::indirect;
+    r->lpv.grid = glm::uvec3(16);
+    r->lpv.iterations = 128;
+  }
+  a.plan_keep = {api::PlanRule::convergence};  // the cap alone
+  auto& r = gpu_test::renderer();
+  const auto automatic = r.render(a, renderer::kReadbackLinear);
+  const auto exact = r.render(e, renderer::kReadbackLinear);
+  ASSERT_TRUE(automatic.stats.lpv && exact.stats.lpv);
+  const std::uint32_t ran = automatic.stats.lpv->cascades[0].iterations;
+  EXPECT_LT(ran, 128u);
+  EXPECT_GE(ran, 64u);
+  double sum_auto = 0.0, sum_exact = 0.0;
+  for (std::size_t i = 0; i < exact.linear.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;
+    sum_auto += automatic.linear.pixels[i];
+    sum_exact += exact.linear.pixels[i];
+  }
+  // Measured: 90 of 128 steps hold 98.8% of the light.
+  EXPECT_NEAR(sum_auto / sum_exact, 1.0, 0.02) << ran << " of 128 iterations";
 }
 
 TEST_F(Planner, PropagationStopsWhenItConvergesWithinTolerance) {
