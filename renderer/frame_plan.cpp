@@ -210,7 +210,10 @@ FramePlan plan_frame(const PlanInputs& in) {
   if (lpv_reason.empty()) {
     if (!any_drawn) plan.reason[kRsm] = "no light reaches the scene (emissive surfaces inject directly)";
     else if (!reflects) plan.reason[kRsm] = "every albedo is 0: nothing reflects light (emissive surfaces inject directly)";
-    if (!request.lpv.occlusion) plan.reason[kGeometryVolume] = "occlusion disabled";
+    if (!request.lpv.occlusion)
+      plan.reason[kGeometryVolume] = "occlusion disabled";
+    else if (!request.lpv.occlusion_from_camera && !(any_drawn && reflects))
+      plan.reason[kGeometryVolume] = "no occluders: occlusion_sources is only \"rsm\" and no RSM is drawn";
     if (request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
   }
   for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.run[p] = plan.reason[p].empty();

@@ -276,8 +276,11 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   }
   plan_ms += ms_since(plan_start);
   auto fit_lpv = [&] {
-    return setup_lpv(request.lpv, scene.bounds, grid_bounds, lights, light_setup.views, gpu.emitted_flux, camera,
-                     camera_request.fov_y_deg, out.height);
+    LpvSetup setup = setup_lpv(request.lpv, scene.bounds, grid_bounds, lights, light_setup.views, gpu.emitted_flux,
+                               camera, camera_request.fov_y_deg, out.height);
+    // Without a geometry volume this frame (no occluders), propagation does not read one.
+    if (!plan.run[kGeometryVolume]) setup.gpu.info.z &= ~(gpu::LPV_FLAG_OCCLUSION | gpu::LPV_FLAG_BOUNCES);
+    return setup;
   };
   LpvSetup lpv_setup = fit_lpv();
   plan_start = Clock::now();

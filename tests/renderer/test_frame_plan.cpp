@@ -149,6 +149,13 @@ TEST(PlanFrame, BlackSurfacesReflectNothingButEmittersStillInject) {
 
   request.plan = api::PlanMode::exact;
   EXPECT_TRUE(plan(request, black.lights, black).run[renderer::kRsm]);
+
+  // Emitters in a black scene, with the RSM as the only source of occluders: there is none.
+  request.plan = api::PlanMode::auto_;
+  request.lpv.occlusion_from_camera = false;
+  const renderer::FramePlan no_occluders = plan(request, black.lights, black, 100);
+  EXPECT_FALSE(no_occluders.run[renderer::kGeometryVolume]);
+  EXPECT_NE(no_occluders.reason[renderer::kGeometryVolume].find("no occluders"), std::string::npos);
 }
 
 TEST(PlanFrame, ConvergenceOnlyWhenAutomatic) {
