@@ -207,13 +207,17 @@ FramePlan plan_frame(const PlanInputs& in) {
   else if (!vpls)
     lpv_reason = "every albedo is 0: nothing reflects light, and no surface is emissive";
   for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.reason[p] = lpv_reason;
+  // Black surfaces still block light: their RSM stays when it is a source of occluders.
+  const bool rsm_occludes = request.lpv.occlusion && request.lpv.occlusion_from_rsm;
   if (lpv_reason.empty()) {
-    if (!any_drawn) plan.reason[kRsm] = "no light reaches the scene (emissive surfaces inject directly)";
-    else if (!reflects) plan.reason[kRsm] = "every albedo is 0: nothing reflects light (emissive surfaces inject directly)";
+    if (!any_drawn)
+      plan.reason[kRsm] = "no light reaches the scene (emissive surfaces inject directly)";
+    else if (!reflects && !rsm_occludes)
+      plan.reason[kRsm] = "every albedo is 0: nothing reflects light (emissive surfaces inject directly)";
     if (!request.lpv.occlusion)
       plan.reason[kGeometryVolume] = "occlusion disabled";
-    else if (!request.lpv.occlusion_from_camera && !(any_drawn && reflects))
-      plan.reason[kGeometryVolume] = "no occluders: occlusion_sources is only \"rsm\" and no RSM is drawn";
+    else if (!request.lpv.occlusion_from_camera && !any_drawn)
+      plan.reason[kGeometryVolume] = "no occluders: occlusion_sources is only \"rsm\" and no light draws an RSM";
     if (request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
   }
   for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.run[p] = plan.reason[p].empty();

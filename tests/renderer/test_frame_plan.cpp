@@ -144,18 +144,22 @@ TEST(PlanFrame, BlackSurfacesReflectNothingButEmittersStillInject) {
   EXPECT_NE(p.reason[renderer::kInject].find("every albedo is 0"), std::string::npos);
 
   const renderer::FramePlan glowing = plan(request, black.lights, black, 100);
-  EXPECT_FALSE(glowing.run[renderer::kRsm]);
+  EXPECT_TRUE(glowing.run[renderer::kRsm]) << "black surfaces still occlude the emitters' light";
   EXPECT_TRUE(glowing.run[renderer::kInject]) << "emissive surfaces inject without any reflection";
 
   request.plan = api::PlanMode::exact;
   EXPECT_TRUE(plan(request, black.lights, black).run[renderer::kRsm]);
 
-  // Emitters in a black scene, with the RSM as the only source of occluders: there is none.
+  // Emitters and no light, with the RSM as the only source of occluders: there are none.
   request.plan = api::PlanMode::auto_;
   request.lpv.occlusion_from_camera = false;
-  const renderer::FramePlan no_occluders = plan(request, black.lights, black, 100);
+  const renderer::FramePlan no_occluders = plan(request, {}, black, 100);
   EXPECT_FALSE(no_occluders.run[renderer::kGeometryVolume]);
   EXPECT_NE(no_occluders.reason[renderer::kGeometryVolume].find("no occluders"), std::string::npos);
+  request.lpv.occlusion_from_rsm = false;
+  request.lpv.occlusion_from_camera = true;
+  EXPECT_FALSE(plan(request, black.lights, black, 100).run[renderer::kRsm])
+      << "black surfaces whose RSM occludes nothing need none";
 }
 
 TEST(PlanFrame, ConvergenceOnlyWhenAutomatic) {

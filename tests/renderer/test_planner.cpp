@@ -1,7 +1,9 @@
 // The planner on the device: for each rule, a scene that triggers it. The skipped pass did
 // not run (no GPU time) and the image equals the "exact" plan's, bitwise where nothing
 // can change, within a stated tolerance where the plan shortens propagation.
+#include "gltf_builder.hpp"
 #include "gpu_test.hpp"
+#include "renderer/scene/gltf_loader.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_builder.hpp"
 
@@ -89,6 +91,30 @@ TEST_F(Planner, NothingToCastAShadowMeansNoShadowMap) {
   }
   EXPECT_GT(brightest, 0.0f);
   EXPECT_LE(worst, 1e-3f * brightest) << "an unoccluded floor is lit the same with or without its shadow map";
+}
+
+TEST_F(Planner, EmittersWithoutOccludersSkipTheGeometryVolume) {
+  test_gltf::GltfBuilder b;
+  const int white = b.add_material({{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1}}}}});
+  const int glow = b.add_material({{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}}, {"emissiveFactor", {1, 1, 1}}});
+  b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 1, 0}, 2, white)}});
+  b.add_node({{"mesh", b.add_quad({0, 0.5, 0}, {0, -1, 0}, 0.5, glow)}});
+  const std::vector<std::uint8_t> bytes = b.glb();
+  const scene::Scene lamp = scene::load_gltf(bytes, {"lamp", {}, {}});
+  // Occluders only from RSMs, and no light draws one: what the request asks makes the volume
+  // empty in either mode, so the pass is skipped in both, and the light is what it is
+  // without occlusion.
+  api::RenderRequest rsm_only = request(api::PlanMode::exact), unoccluded = request(api::PlanMode::exact);
+  rsm_only.output.view = unoccluded.output.view = api::View::indirect;
+  rsm_only.lpv.occlusion_from_camera = false;
+  unoccluded.lpv.occlusion = false;
+  auto& r = gpu_test::renderer();
+  const auto skipped = r.render(lamp, rsm_only, renderer::kReadbackLinear);
+  const auto reference = r.render(lamp, unoccluded, renderer::kReadbackLinear);
+  EXPECT_FALSE(pass(skipped, "geometry_volume").ran);
+  EXPECT_NE(pass(skipped, "geometry_volume").reason.find("no occluders"), std::string::npos);
+  EXPECT_EQ(pass(skipped, "geometry_volume").gpu_ms.median, 0.0);
+  EXPECT_EQ(skipped.linear.pixels, reference.linear.pixels) << "an empty geometry volume blocks nothing";
 }
 
 TEST_F(Planner, BlackSurfacesSkipTheLpvAndChangeNothing) {
