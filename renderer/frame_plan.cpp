@@ -225,4 +225,55 @@ FramePlan plan_frame(const PlanInputs& in) {
   return plan;
 }
 
+LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene, const glm::mat4& camera_view_proj,
+                 const std::vector<api::Light>& lights, const std::vector<LightView>& views, const FitLpv& fit) {
+  LpvPlan lpv{scene.bounds, {}, {}};
+  // The grid covers only what the camera sees and the lights reach (unless placed by hand).
+  if (api::plan_applies(request, api::PlanRule::grid) && plan.run[kInject] && !request.lpv.origin && !request.lpv.extent) {
+    lpv.grid_bounds = lpv_region(scene, camera_view_proj, lights, plan.light_drawn);
+    const float fitted = glm::length(lpv.grid_bounds.max - lpv.grid_bounds.min);
+    const float whole = glm::length(scene.bounds.max - scene.bounds.min);
+    if (fitted < 0.999f * whole)
+      plan.decisions.push_back("grid fitted to the part of the scene the camera sees and the lights reach (" +
+                               std::to_string(fitted) + " of " + std::to_string(whole) + " m across)");
+  }
+  lpv.setup = fit(lpv.grid_bounds, request.lpv);
+
+  if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm]) {
+    const std::uint32_t rsm = rsm_resolution_needed(views, lights, lpv.grid_bounds, lpv.setup.cascades[0].cell_size,
+                                                    request.lpv.rsm_resolution);
+    if (rsm < request.lpv.rsm_resolution) {
+      plan.decisions.push_back("rsm " + std::to_string(rsm) + " of " + std::to_string(request.lpv.rsm_resolution) +
+                               " texels per side: four texels a cell on the farthest surface the lights see");
+      request.lpv.rsm_resolution = rsm;
+      request.lpv.vpl_downsample = std::min(request.lpv.vpl_downsample, rsm);
+      lpv.setup = fit(lpv.grid_bounds, request.lpv);
+    }
+  }
+
+  if (api::plan_applies(request, api::PlanRule::cascades) && plan.run[kInject]) {
+    const std::uint32_t needed = cascades_needed(lpv.setup.cascades, lpv.grid_bounds);
+    if (needed < lpv.setup.cascades.size()) {
+      plan.decisions.push_back(std::to_string(needed) + " of " + std::to_string(lpv.setup.cascades.size()) +
+                               " cascades: cascade " + std::to_string(needed - 1) +
+                               " holds the whole scene, the coarser ones add nothing");
+      lpv.setup.cascades.resize(needed);
+      lpv.setup.gpu.info.x = needed;
+    }
+  }
+
+  // Propagation steps per cascade: as requested, or no more than light needs to cross the
+  // part of the scene inside the cascade.
+  lpv.iterations.assign(lpv.setup.cascades.size(), request.lpv.iterations);
+  if (!api::plan_applies(request, api::PlanRule::iterations) || !plan.run[kPropagate]) return lpv;
+  for (std::uint32_t c = 0; c < lpv.iterations.size(); ++c) {
+    lpv.iterations[c] = iterations_needed(lpv.setup.cascades[c], lpv.grid_bounds, request.lpv.iterations);
+    if (lpv.iterations[c] < request.lpv.iterations)
+      plan.decisions.push_back("cascade " + std::to_string(c) + ": " + std::to_string(lpv.iterations[c]) + " of " +
+                               std::to_string(request.lpv.iterations) +
+                               " iterations, as many as light needs to cross the scene's cells in it");
+  }
+  return lpv;
+}
+
 }  // namespace renderer

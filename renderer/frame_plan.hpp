@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,19 @@ struct PlanInputs {
 };
 
 FramePlan plan_frame(const PlanInputs& in);
+
+// The LPV part of a frame, once the lights' views are known: the region the grid covers,
+// the RSM resolution, the cascades and each one's propagation steps. Under "auto" it may
+// lower request.lpv's rsm_resolution (and vpl_downsample) and adds its decisions to `plan`.
+// `fit(grid_bounds, lpv)` places the cascades (setup_lpv with the frame's other inputs).
+struct LpvPlan {
+  scene::Bounds grid_bounds;
+  LpvSetup setup;
+  std::vector<std::uint32_t> iterations;  // per cascade
+};
+using FitLpv = std::function<LpvSetup(const scene::Bounds& grid_bounds, const api::Lpv& lpv)>;
+LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene, const glm::mat4& camera_view_proj,
+                 const std::vector<api::Light>& lights, const std::vector<LightView>& views, const FitLpv& fit);
 
 // Why a light cannot light anything in `bounds` (empty when it may): beyond its range, or
 // its cone pointing away from them.

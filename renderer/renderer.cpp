@@ -265,63 +265,20 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const LightSetup light_setup =
       setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn, plan.light_shadowed);
   plan_start = Clock::now();
-  // The grid covers (auto) only what the camera sees and the lights reach.
-  scene::Bounds grid_bounds = scene.bounds;
-  if (api::plan_applies(request, api::PlanRule::grid) && plan.run[kInject] && !request.lpv.origin && !request.lpv.extent) {
-    grid_bounds = lpv_region(scene, camera.view_proj, lights, plan.light_drawn);
-    const float fitted = glm::length(grid_bounds.max - grid_bounds.min), whole = glm::length(scene.bounds.max - scene.bounds.min);
-    if (fitted < 0.999f * whole)
-      plan.decisions.push_back("grid fitted to the part of the scene the camera sees and the lights reach (" +
-                               std::to_string(fitted) + " of " + std::to_string(whole) + " m across)");
-  }
+  const LpvPlan lpv_plan = plan_lpv(
+      plan, request, scene, camera.view_proj, lights, light_setup.views,
+      [&](const scene::Bounds& grid_bounds, const api::Lpv& lpv) {
+        LpvSetup setup = setup_lpv(lpv, scene.bounds, grid_bounds, lights, light_setup.views, gpu.emitted_flux, camera,
+                                   camera_request.fov_y_deg, out.height);
+        // Without a geometry volume this frame (no occluders), propagation does not read one.
+        if (!plan.run[kGeometryVolume]) setup.gpu.info.z &= ~(gpu::LPV_FLAG_OCCLUSION | gpu::LPV_FLAG_BOUNCES);
+        return setup;
+      });
   plan_ms += ms_since(plan_start);
-  auto fit_lpv = [&] {
-    LpvSetup setup = setup_lpv(request.lpv, scene.bounds, grid_bounds, lights, light_setup.views, gpu.emitted_flux,
-                               camera, camera_request.fov_y_deg, out.height);
-    // Without a geometry volume this frame (no occluders), propagation does not read one.
-    if (!plan.run[kGeometryVolume]) setup.gpu.info.z &= ~(gpu::LPV_FLAG_OCCLUSION | gpu::LPV_FLAG_BOUNCES);
-    return setup;
-  };
-  LpvSetup lpv_setup = fit_lpv();
-  plan_start = Clock::now();
-  if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm]) {
-    const std::uint32_t rsm = rsm_resolution_needed(light_setup.views, lights, grid_bounds,
-                                                    lpv_setup.cascades[0].cell_size, request.lpv.rsm_resolution);
-    if (rsm < request.lpv.rsm_resolution) {
-      plan.decisions.push_back("rsm " + std::to_string(rsm) + " of " + std::to_string(request.lpv.rsm_resolution) +
-                               " texels per side: four texels a cell on the farthest surface the lights see");
-      request.lpv.rsm_resolution = rsm;
-      request.lpv.vpl_downsample = std::min(request.lpv.vpl_downsample, rsm);
-      lpv_setup = fit_lpv();
-    }
-  }
-  plan_ms += ms_since(plan_start);
-  if (!request.dry_run) allocate(plan, request, light_setup);
-  // Propagation steps per cascade: as requested, or (auto) no more than light needs to
-  // cross the part of the scene inside the cascade.
-  plan_start = Clock::now();
-  if (api::plan_applies(request, api::PlanRule::cascades) && plan.run[kInject]) {
-    const std::uint32_t needed = cascades_needed(lpv_setup.cascades, grid_bounds);
-    if (needed < lpv_setup.cascades.size()) {
-      plan.decisions.push_back(std::to_string(needed) + " of " + std::to_string(lpv_setup.cascades.size()) +
-                               " cascades: cascade " + std::to_string(needed - 1) +
-                               " holds the whole scene, the coarser ones add nothing");
-      lpv_setup.cascades.resize(needed);
-      lpv_setup.gpu.info.x = needed;
-    }
-  }
-  std::vector<std::uint32_t> iterations(lpv_setup.cascades.size(), request.lpv.iterations);
-  for (std::uint32_t c = 0; c < iterations.size() && api::plan_applies(request, api::PlanRule::iterations) &&
-                          plan.run[kPropagate];
-       ++c) {
-    iterations[c] = iterations_needed(lpv_setup.cascades[c], grid_bounds, request.lpv.iterations);
-    if (iterations[c] < request.lpv.iterations)
-      plan.decisions.push_back("cascade " + std::to_string(c) + ": " + std::to_string(iterations[c]) + " of " +
-                               std::to_string(request.lpv.iterations) +
-                               " iterations, as many as light needs to cross the scene's cells in it");
-  }
-  plan_ms += ms_since(plan_start);
+  const LpvSetup& lpv_setup = lpv_plan.setup;
+  const std::vector<std::uint32_t>& iterations = lpv_plan.iterations;
   if (request.dry_run) return planned(scene, request, plan, plan_ms);
+  allocate(plan, request, light_setup);
 
   gpu::GpuFrame frame{};
   frame.view_proj = camera.view_proj;
