@@ -4,8 +4,16 @@
 #include "renderer/lpv/emitter_surfels.hpp"
 
 #include <algorithm>
+#include <cstddef>
 
 namespace renderer {
+
+vkx::VertexInputDesc scene_vertex_input() {
+  return {sizeof(scene::Vertex),
+          {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
+           {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
+           {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv)}}};
+}
 
 GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, const TextureSetLayout& texture_layout) {
   std::vector<gpu::GpuMaterial> materials;

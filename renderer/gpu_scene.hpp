@@ -3,6 +3,7 @@
 
 #include "renderer/material_textures.hpp"
 #include "renderer/scene/scene.hpp"
+#include "renderer/vulkan/pipeline.hpp"
 #include "renderer/vulkan/resources.hpp"
 
 #include <array>
@@ -21,6 +22,9 @@ struct MaterialVariant {
   static MaterialVariant of_index(std::uint32_t i) { return {(i & 2u) != 0, (i & 1u) != 0}; }
 };
 inline constexpr std::uint32_t kMaterialVariants = 4;
+
+// scene::Vertex as the vertex shaders read it: position, normal, uv at locations 0, 1, 2.
+vkx::VertexInputDesc scene_vertex_input();
 
 struct GpuScene {
   vkx::Buffer vertices;   // scene::Vertex

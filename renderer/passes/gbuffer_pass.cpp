@@ -25,10 +25,7 @@ vkx::GraphicsPipelineDesc gbuffer_pipeline(MaterialVariant variant) {
   g.vertex_spirv = spirv_gbuffer_vert;
   g.fragment_spirv = spirv_gbuffer_frag;
   g.fragment_specialization = {variant.double_sided, variant.textured};
-  g.vertex_input = {sizeof(scene::Vertex),
-                    {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
-                     {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
-                     {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv)}}};
+  g.vertex_input = scene_vertex_input();
   g.color_formats = {FrameTargets::kPositionFormat, FrameTargets::kNormalFormat, FrameTargets::kAlbedoFormat};
   g.depth_format = FrameTargets::kDepthFormat;
   // Counter-clockwise front faces as in glTF: the projection's Y flip and Vulkan's

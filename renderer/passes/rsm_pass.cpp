@@ -31,10 +31,7 @@ vkx::GraphicsPipelineDesc rsm_pipeline(MaterialVariant variant) {
   g.vertex_spirv = spirv_rsm_vert;
   g.fragment_spirv = spirv_rsm_frag;
   g.fragment_specialization = {variant.textured};
-  g.vertex_input = {sizeof(scene::Vertex),
-                    {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)},
-                     {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, normal)},
-                     {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(scene::Vertex, uv)}}};
+  g.vertex_input = scene_vertex_input();
   g.color_formats = {RsmMaps::kPositionFormat, RsmMaps::kNormalFormat, RsmMaps::kFluxFormat};
   g.depth_format = RsmMaps::kDepthFormat;
   g.cull_mode = VK_CULL_MODE_NONE;  // the first surface the light meets, whichever way it faces

@@ -29,6 +29,28 @@ const api::PassStats& pass(const renderer::RenderResult& r, const std::string& n
   throw std::runtime_error("no pass " + name);
 }
 
+// Sums and extremes over the RGB of a linear image (alpha left out).
+double total(const image::RgbaF32Image& image) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    if (i % 4 != 3) sum += image.pixels[i];
+  return sum;
+}
+
+float brightest(const image::RgbaF32Image& image) {
+  float m = 0.0f;
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    if (i % 4 != 3) m = std::max(m, image.pixels[i]);
+  return m;
+}
+
+float largest_difference(const image::RgbaF32Image& a, const image::RgbaF32Image& b) {
+  float m = 0.0f;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    if (i % 4 != 3) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
+  return m;
+}
+
 api::Light away_spot() {
   api::Light l;
   l.type = api::LightType::spot;
@@ -83,14 +105,9 @@ TEST_F(Planner, NothingToCastAShadowMeansNoShadowMap) {
   EXPECT_EQ(pass(automatic, "shadow").reason, "nothing can cast a shadow on what the camera sees");
   EXPECT_EQ(pass(automatic, "shadow").gpu_ms.median, 0.0);
   EXPECT_TRUE(pass(exact, "shadow").ran);
-  float brightest = 0.0f, worst = 0.0f;
-  for (std::size_t i = 0; i < exact.linear.pixels.size(); ++i) {
-    if (i % 4 == 3) continue;
-    brightest = std::max(brightest, exact.linear.pixels[i]);
-    worst = std::max(worst, std::abs(automatic.linear.pixels[i] - exact.linear.pixels[i]));
-  }
-  EXPECT_GT(brightest, 0.0f);
-  EXPECT_LE(worst, 1e-3f * brightest) << "an unoccluded floor is lit the same with or without its shadow map";
+  EXPECT_GT(brightest(exact.linear), 0.0f);
+  EXPECT_LE(largest_difference(automatic.linear, exact.linear), 1e-3f * brightest(exact.linear))
+      << "an unoccluded floor is lit the same with or without its shadow map";
 }
 
 TEST_F(Planner, EmittersWithoutOccludersSkipTheGeometryVolume) {
@@ -166,17 +183,8 @@ TEST_F(Planner, ANarrowSpotGetsASmallerRsmWithinTolerance) {
   ASSERT_TRUE(automatic.stats.lpv && exact.stats.lpv);
   EXPECT_LT(automatic.stats.lpv->vpl_count, exact.stats.lpv->vpl_count);
   // The same light, sampled by fewer VPLs: measured 0.9% of the brightest pixel at most.
-  float brightest = 0.0f, worst = 0.0f;
-  double sum_auto = 0.0, sum_exact = 0.0;
-  for (std::size_t i = 0; i < exact.linear.pixels.size(); ++i) {
-    if (i % 4 == 3) continue;
-    brightest = std::max(brightest, exact.linear.pixels[i]);
-    worst = std::max(worst, std::abs(automatic.linear.pixels[i] - exact.linear.pixels[i]));
-    sum_auto += automatic.linear.pixels[i];
-    sum_exact += exact.linear.pixels[i];
-  }
-  EXPECT_LT(worst, 0.02f * brightest);
-  EXPECT_NEAR(sum_auto / sum_exact, 1.0, 0.01);
+  EXPECT_LT(largest_difference(automatic.linear, exact.linear), 0.02f * brightest(exact.linear));
+  EXPECT_NEAR(total(automatic.linear) / total(exact.linear), 1.0, 0.01);
 
   // Kept as requested, the rule does not apply and nothing else changes.
   a.plan_keep = {api::PlanRule::rsm};
@@ -246,14 +254,8 @@ TEST_F(Planner, IterationsBeyondWhatLightNeedsAreCutWithinTolerance) {
   const std::uint32_t ran = automatic.stats.lpv->cascades[0].iterations;
   EXPECT_LT(ran, 128u);
   EXPECT_GE(ran, 64u);
-  double sum_auto = 0.0, sum_exact = 0.0;
-  for (std::size_t i = 0; i < exact.linear.pixels.size(); ++i) {
-    if (i % 4 == 3) continue;
-    sum_auto += automatic.linear.pixels[i];
-    sum_exact += exact.linear.pixels[i];
-  }
   // Measured: 90 of 128 steps hold 98.8% of the light.
-  EXPECT_NEAR(sum_auto / sum_exact, 1.0, 0.02) << ran << " of 128 iterations";
+  EXPECT_NEAR(total(automatic.linear) / total(exact.linear), 1.0, 0.02) << ran << " of 128 iterations";
 }
 
 TEST_F(Planner, PropagationStopsWhenItConvergesWithinTolerance) {
@@ -271,11 +273,7 @@ TEST_F(Planner, PropagationStopsWhenItConvergesWithinTolerance) {
   EXPECT_EQ(exact.stats.lpv->cascades[0].iterations, 64u);
   // The skipped steps' light, on the image's total: the estimate said under 2% of the
   // accumulated light; the image's share may differ a little from the grid's.
-  double sum_auto = 0.0, sum_exact = 0.0;
-  for (std::size_t i = 0; i < exact.linear.pixels.size(); i += 4) {
-    sum_auto += automatic.linear.pixels[i] + automatic.linear.pixels[i + 1] + automatic.linear.pixels[i + 2];
-    sum_exact += exact.linear.pixels[i] + exact.linear.pixels[i + 1] + exact.linear.pixels[i + 2];
-  }
+  const double sum_auto = total(automatic.linear), sum_exact = total(exact.linear);
   ASSERT_GT(sum_exact, 0.0);
   EXPECT_LE(sum_auto, sum_exact);
   EXPECT_LT((sum_exact - sum_auto) / sum_exact, 0.03) << ran << " of 64 iterations";
