@@ -227,6 +227,13 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
                                             "x" + std::to_string(request.lpv.grid.z) + " cells need " + mib(lpv_bytes) +
                                             ", over the budget of " + mib(kLpvBudgetBytes) + ": use fewer cells");
 
+  const std::uint64_t buffer_bytes = LpvVolumes::largest_buffer_bytes(request.lpv.grid);
+  const std::uint64_t buffer_range = device.info().limits.maxStorageBufferRange;
+  if (lpv && buffer_bytes > buffer_range)
+    throw api::RequestError("lpv.grid", std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) +
+                                            "x" + std::to_string(request.lpv.grid.z) + " cells need a storage buffer of " +
+                                            mib(buffer_bytes) + "; this device binds at most " + mib(buffer_range) +
+                                            ": use fewer cells");
   if (!targets || targets->width != out.width || targets->height != out.height) {
     targets.reset();
     targets.emplace(device, out.width, out.height);

@@ -1,5 +1,7 @@
 #include "renderer/lpv/lpv_volumes.hpp"
 
+#include <algorithm>
+
 #include "renderer/gpu_types.hpp"
 
 #include <glm/vec3.hpp>
@@ -50,6 +52,10 @@ std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades) {
   const std::uint64_t cells = cell_count(dims);
   return cells * (kInjectedBytesPerCell + kGridBytesPerCell + kFaceBytesPerCell + kAccumulatedBytesPerCell * cascades) +
          cell_count(dims + 1u) * kCornerBytes;
+}
+
+std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims) {
+  return std::max(cell_count(dims) * kInjectedBytesPerCell, cell_count(dims + 1u) * kCornerBytes);
 }
 
 LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)

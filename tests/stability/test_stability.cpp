@@ -1,0 +1,240 @@
+// The stability suite: every hostile case of stability_cases.cpp rendered twice under the
+// validation layer, with the invariants of docs/stability.md checked on the grid, the RSM
+// and the image; then scale invariance, continuity and light leaking, measured. The worst
+// value of each invariant is printed at the end.
+#include "api/request_error.hpp"
+#include "gpu_test.hpp"
+#include "renderer/lpv/lpv_volumes.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
+#include "renderer/scene/scene_builder.hpp"
+#include "stability_cases.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace {
+
+// The worst value seen of each invariant, printed when the suite ends.
+std::map<std::string, std::pair<double, std::string>>& worst() {
+  static std::map<std::string, std::pair<double, std::string>> w;
+  return w;
+}
+void note(const std::string& invariant, double value, const std::string& where) {
+  auto& w = worst()[invariant];
+  if (value >= w.first) w = {value, where};
+}
+
+class WorstValues : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::printf("\nWorst values across the stability suite:\n");
+    for (const auto& [invariant, value] : worst())
+      std::printf("  %-42s %.3g  (%s)\n", invariant.c_str(), value.first, value.second.c_str());
+  }
+};
+const auto* const kWorstValues = ::testing::AddGlobalTestEnvironment(new WorstValues);
+
+bool all_finite(const std::vector<float>& values) {
+  for (float v : values)
+    if (!std::isfinite(v)) return false;
+  return true;
+}
+bool all_finite(const std::vector<glm::vec4>& values) {
+  for (const glm::vec4& v : values)
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || !std::isfinite(v.w)) return false;
+  return true;
+}
+
+double total(const image::RgbaF32Image& image) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    if (i % 4 != 3) sum += image.pixels[i];
+  return sum;
+}
+
+// Root mean square difference over RGB, relative to the mean of `reference`.
+double relative_rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& reference) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    if (i % 4 != 3) sum += double(a.pixels[i] - reference.pixels[i]) * double(a.pixels[i] - reference.pixels[i]);
+  const double n = double(a.pixels.size() / 4 * 3);
+  const double mean = total(reference) / n;
+  return mean > 0.0 ? std::sqrt(sum / n) / mean : std::sqrt(sum / n);
+}
+
+constexpr unsigned kEverything = renderer::kReadbackLinear | renderer::kReadbackLpv;
+
+class Stability : public gpu_test::GpuTest, public ::testing::WithParamInterface<stability::Case> {};
+
+TEST_P(Stability, FiniteDeterministicAndNoEnergyGain) {
+  const stability::Case& c = GetParam();
+  const scene::Scene scene = c.scene();
+  auto& r = gpu_test::renderer();
+  if (renderer::LpvVolumes::largest_buffer_bytes(c.request.lpv.grid) >
+      gpu_test::device().info().limits.maxStorageBufferRange) {
+    // Beyond what the device binds: the documented error, not a crash or a silent clamp.
+    try {
+      r.render(scene, c.request, kEverything);
+      ADD_FAILURE() << "rendered a grid the device cannot bind";
+    } catch (const api::RequestError& e) {
+      EXPECT_EQ(e.field(), "lpv.grid");
+    }
+    return;
+  }
+  const renderer::RenderResult first = r.render(scene, c.request, kEverything);
+  const renderer::RenderResult second = r.render(scene, c.request, kEverything);
+
+  // No NaN or Inf: image, RSM, grids.
+  EXPECT_TRUE(all_finite(first.linear.pixels)) << "image";
+  EXPECT_TRUE(all_finite(first.lpv.rsm_flux) && all_finite(first.lpv.rsm_position) && all_finite(first.lpv.rsm_normal))
+      << "RSM";
+  for (const auto& cascade : first.lpv.cascades) EXPECT_TRUE(all_finite(cascade.accumulated)) << "grid";
+
+  // Determinism: the same request twice gives the same bits.
+  EXPECT_EQ(first.linear.pixels, second.linear.pixels) << "image";
+  for (std::size_t k = 0; k < first.lpv.cascades.size(); ++k)
+    EXPECT_EQ(first.lpv.cascades[k].accumulated, second.lpv.cascades[k].accumulated) << "cascade " << k;
+
+  // No energy gain: no iteration's grid carries more flux than was injected.
+  if (first.stats.lpv) {
+    for (const api::LpvCascadeStats& cascade : first.stats.lpv->cascades) {
+      for (int ch = 0; ch < 3; ++ch) {
+        const double injected = cascade.injected_flux[ch];
+        for (std::size_t k = 0; k < cascade.propagated_flux.size(); ++k) {
+          const double carried = cascade.propagated_flux[k][ch];
+          EXPECT_GE(carried, 0.0);
+          if (injected > 0.0) {
+            const double gain = carried / injected - 1.0;
+            note("largest relative energy gain", gain, c.name);
+            EXPECT_LE(gain, 1e-4) << "iteration " << k + 1 << ", channel " << ch;
+          } else {
+            EXPECT_EQ(carried, 0.0) << "flux from nothing, iteration " << k + 1;
+          }
+        }
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, Stability, ::testing::ValuesIn(stability::cases()),
+                         [](const ::testing::TestParamInfo<stability::Case>& info) {
+                           std::string name = info.param.name;
+                           for (char& ch : name)
+                             if (ch == '-') ch = '_';
+                           return name;
+                         });
+
+api::RenderRequest small_final() {
+  api::RenderRequest r;
+  r.output.width = r.output.height = 48;
+  r.output.format = api::ImageFormat::pfm;
+  r.lpv.grid = glm::uvec3(16);
+  return r;
+}
+
+class Invariants : public gpu_test::GpuTest {};
+
+// Direct light is held to both invariants. The LPV's indirect light is not yet: nearest-cell
+// injection and the snapping of cascades to whole cells make it jump when a VPL or the
+// grid's rounding crosses a cell boundary (the Cornell box's centre lies exactly on a
+// half cell: the same scene at another scale may snap a cell apart). Those values are
+// measured and printed, and issue 7 stays open on them (docs/stability.md).
+TEST_F(Invariants, ScalingTheSceneAndThePointLightBySSquared) {
+  auto& r = gpu_test::renderer();
+  for (api::View view : {api::View::direct, api::View::indirect}) {
+    api::RenderRequest req = small_final();
+    req.output.view = view;
+    const auto metre = r.render(stability::scaled_cornell(1.0f), req, renderer::kReadbackLinear);
+    for (float s : {1e-3f, 1e4f}) {
+      const auto scaled = r.render(stability::scaled_cornell(s), req, renderer::kReadbackLinear);
+      const double d = relative_rmse(scaled.linear, metre.linear);
+      const std::string what = api::to_string(view) + " light, the Cornell box x " + std::to_string(s);
+      note("scale-invariance difference, " + api::to_string(view) + " (rel. RMSE)", d, what);
+      std::printf("scale invariance, %s: relative RMSE %.4f\n", what.c_str(), d);
+      EXPECT_TRUE(std::isfinite(d));
+      if (view == api::View::direct) EXPECT_LT(d, 1e-4) << what;
+    }
+  }
+}
+
+TEST_F(Invariants, ATinyMoveOfTheLightOrTheCamera) {
+  const scene::Scene cornell = *scene::make_builtin_scene("cornell-box");
+  auto& r = gpu_test::renderer();
+  for (api::View view : {api::View::direct, api::View::indirect}) {
+    api::RenderRequest base = small_final();
+    base.output.view = view;
+    base.output.width = base.output.height = 64;
+    const auto before = r.render(cornell, base, renderer::kReadbackLinear);
+    const float step = 1e-4f * 2.0f / 15.0f;  // 1e-4 of the 16^3 grid's cell over the 2 m box
+    api::RenderRequest moved_light = base;
+    moved_light.lights = cornell.lights;
+    (*moved_light.lights)[0].position += glm::vec3(step, step, step);
+    api::RenderRequest moved_camera = base;
+    moved_camera.camera = cornell.camera;
+    moved_camera.camera->position += glm::vec3(step, 0.0f, step);
+    moved_camera.camera->target += glm::vec3(step, 0.0f, step);
+    for (const auto& [what, request] : {std::pair{"light", moved_light}, std::pair{"camera", moved_camera}}) {
+      const auto after = r.render(cornell, request, renderer::kReadbackLinear);
+      const double d = relative_rmse(after.linear, before.linear);
+      const std::string where = std::string(what) + " moved 1e-4 cell, " + api::to_string(view) + " light";
+      note("continuity jump, " + api::to_string(view) + " (rel. RMSE)", d, where);
+      std::printf("continuity, %s: relative RMSE %.5f\n", where.c_str(), d);
+      EXPECT_TRUE(std::isfinite(d));
+      // A camera moved by 1.3e-5 m shifts the image by about 1e-5 of a pixel.
+      if (view == api::View::direct) EXPECT_LT(d, 1e-3) << where;
+    }
+  }
+}
+
+// Two rooms side by side with a 2 cm wall between them; a spot lights the left room's floor.
+scene::Scene two_rooms() {
+  scene::SceneBuilder b("two-rooms");
+  const auto white = b.add_material({"white", glm::vec3(0.8f), {}});
+  b.add_facing_quad({0, 0, 0}, {0, 1, 0}, 4.0f, white);                   // floor of both rooms
+  b.add_facing_quad({0, 2, 0}, {0, -1, 0}, 4.0f, white);                  // ceiling
+  b.add_box({0.0f, 0.0f, 0.0f}, {0.02f, 2.0f, 4.0f}, 0.0f, white);        // the 2 cm wall at x = 0
+  api::Light spot;
+  spot.type = api::LightType::spot;
+  spot.position = {-1.0f, 1.9f, 0.0f};
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  spot.intensity = 10.0f;
+  spot.outer_cone_deg = 50.0f;
+  b.add_light(spot);
+  api::Camera cam;
+  cam.position = {0.0f, 6.0f, 0.01f};  // above, looking down at both floors (no walls face up)
+  cam.target = {0.0f, 0.0f, 0.0f};
+  cam.up = {0.0f, 0.0f, -1.0f};
+  b.set_camera(cam);
+  return b.build();
+}
+
+TEST_F(Invariants, LightLeakingThroughAThinWallIsMeasuredAndBounded) {
+  const scene::Scene rooms = two_rooms();
+  auto& r = gpu_test::renderer();
+  for (bool occlusion : {true, false}) {
+    api::RenderRequest req = small_final();
+    req.output.width = req.output.height = 64;
+    req.output.view = api::View::indirect;
+    req.lpv.grid = glm::uvec3(32);
+    req.lpv.occlusion = occlusion;
+    const auto result = r.render(rooms, req, renderer::kReadbackLinear);
+    double lit = 0.0, dark = 0.0;
+    for (std::uint32_t y = 0; y < 64; ++y)
+      for (std::uint32_t x = 0; x < 64; ++x) {
+        const glm::vec3 p = gpu_test::pixel(result.linear, x, y);
+        (x < 30 ? lit : dark) += double(p.r + p.g + p.b);  // image x < 30: the lit room (x < 0)
+      }
+    const double leak = dark / std::max(lit, 1e-30);
+    note(std::string("leak through 2 cm, occlusion ") + (occlusion ? "on" : "off"), leak, "two rooms, 32^3");
+    std::printf("indirect light in the dark room / lit room, occlusion %s: %.4f\n", occlusion ? "on" : "off", leak);
+    // With cells of about 13 cm the wall is a sixth of a cell: the grid cannot separate the
+    // rooms within a cell of the wall, so some light crosses. Occlusion must hold it well
+    // under the light of the lit room itself.
+    EXPECT_LT(leak, occlusion ? 0.5 : 1.0);
+  }
+}
+
+}  // namespace
