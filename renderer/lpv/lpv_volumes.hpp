@@ -46,7 +46,7 @@ struct LpvVolumes {
   // Device memory the volumes of these sizes take.
   static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades);
   // The largest storage buffer a grid of `dims` binds: it must fit the device's
-  // maxStorageBufferRange (128 MiB on lavapipe: about 111^3 cells).
+  // maxStorageBufferRange (128 MiB on lavapipe: up to 93^3 cells, the corner sums the largest).
   static std::uint64_t largest_buffer_bytes(glm::uvec3 dims);
 
   // Offsets (in int64) into flux_stats: the VPL flux of a cascade, and its grid's flux after
