@@ -20,10 +20,6 @@ constexpr float kBlendCells = 2.0f;
 // narrow spots and small scenes (docs/planner.md).
 constexpr float kTexelsPerCell = 4.0f;
 
-bool emits(const api::Light& light) {
-  return light.intensity > 0.0f && glm::any(glm::greaterThan(light.color, glm::vec3(0.0f)));
-}
-
 float distance_to_box(glm::vec3 p, const scene::Bounds& b) {
   return glm::length(glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f)));
 }
@@ -104,15 +100,21 @@ bool may_be_visible(const scene::Bounds& b, const glm::mat4& view_proj) {
 
 }  // namespace
 
-bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const glm::mat4& camera_view_proj) {
+std::vector<bool> draws_seen(const scene::Scene& scene, const glm::mat4& view_proj) {
+  std::vector<bool> seen;
+  for (const scene::Bounds& b : scene.draw_bounds) seen.push_back(may_be_visible(b, view_proj));
+  return seen;
+}
+
+bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const std::vector<bool>& seen) {
   const std::size_t n = scene.draw_bounds.size();
-  if (n > kMaxShadowTestDraws || scene.draw_planar.size() != n) return true;
+  if (n > kMaxShadowTestDraws || scene.draw_planar.size() != n || seen.size() != n) return true;
   auto overlaps = [](const scene::Bounds& a, const scene::Bounds& b) {
     return glm::all(glm::lessThanEqual(a.min, b.max)) && glm::all(glm::lessThanEqual(b.min, a.max));
   };
   for (std::size_t r = 0; r < n; ++r) {  // receivers
     const scene::Bounds& b = scene.draw_bounds[r];
-    if (!may_be_visible(b, camera_view_proj) || !light_misses(light, b).empty()) continue;
+    if (!seen[r] || !light_misses(light, b).empty()) continue;
     if (!scene.draw_planar[r]) return true;
     // The box spanned by the receiver and the light: what lies between them is inside it.
     scene::Bounds between = b;
@@ -128,11 +130,12 @@ bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const 
   return false;
 }
 
-scene::Bounds lpv_region(const scene::Scene& scene, const glm::mat4& camera_view_proj,
+scene::Bounds lpv_region(const scene::Scene& scene, const std::vector<bool>& seen,
                          const std::vector<api::Light>& lights, const std::vector<bool>& light_drawn) {
   glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-  for (const scene::Bounds& b : scene.draw_bounds) {
-    bool matters = may_be_visible(b, camera_view_proj);
+  for (std::size_t d = 0; d < scene.draw_bounds.size(); ++d) {
+    const scene::Bounds& b = scene.draw_bounds[d];
+    bool matters = seen[d];
     for (std::size_t i = 0; i < lights.size() && !matters; ++i)
       matters = light_drawn[i] && light_misses(lights[i], b).empty();
     if (!matters) continue;
@@ -157,6 +160,7 @@ std::uint32_t cascades_needed(const std::vector<CascadePlacement>& cascades, con
 FramePlan plan_frame(const PlanInputs& in) {
   const api::RenderRequest& request = in.request;
   FramePlan plan;
+  plan.draw_seen = draws_seen(in.scene, in.camera_view_proj);
   const api::View view = request.output.view;
   const std::string view_name = "view '" + api::to_string(view) + "'";
   plan.run[kGBuffer] = plan.run[kShade] = plan.run[kReadback] = true;
@@ -175,7 +179,7 @@ FramePlan plan_frame(const PlanInputs& in) {
     any_drawn = any_drawn || plan.light_drawn.back();
     const bool shadowed = plan.light_drawn.back() && request.shadows.enabled && needs_direct_light(request.output.view) &&
                           (!api::plan_applies(request, api::PlanRule::shadows) ||
-                           may_cast_shadows(in.scene, light, in.camera_view_proj));
+                           may_cast_shadows(in.scene, light, plan.draw_seen));
     if (plan.light_drawn.back() && request.shadows.enabled && needs_direct_light(request.output.view) && !shadowed)
       plan.decisions.push_back("light " + std::to_string(i) + ": no shadow map, nothing can cast its shadow on what the camera sees");
     plan.light_shadowed.push_back(shadowed);
@@ -225,12 +229,12 @@ FramePlan plan_frame(const PlanInputs& in) {
   return plan;
 }
 
-LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene, const glm::mat4& camera_view_proj,
+LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
                  const std::vector<api::Light>& lights, const std::vector<LightView>& views, const FitLpv& fit) {
   LpvPlan lpv{scene.bounds, {}, {}};
   // The grid covers only what the camera sees and the lights reach (unless placed by hand).
   if (api::plan_applies(request, api::PlanRule::grid) && plan.run[kInject] && !request.lpv.origin && !request.lpv.extent) {
-    lpv.grid_bounds = lpv_region(scene, camera_view_proj, lights, plan.light_drawn);
+    lpv.grid_bounds = lpv_region(scene, plan.draw_seen, lights, plan.light_drawn);
     const float fitted = glm::length(lpv.grid_bounds.max - lpv.grid_bounds.min);
     const float whole = glm::length(scene.bounds.max - scene.bounds.min);
     if (fitted < 0.999f * whole)

@@ -43,6 +43,7 @@ struct FramePlan {
   std::array<std::string, kPassCount> reason;
   std::vector<bool> light_drawn;       // per light: it gets RSM views (and shadow maps if shadowed)
   std::vector<bool> light_shadowed;    // per light: something may cast its shadow on what is seen
+  std::vector<bool> draw_seen;         // per draw: may be inside the camera's frustum (by its bounds)
   float convergence = 0.0f;            // stop when the rest would add less than this share (0: never)
   std::vector<std::string> decisions;  // what the plan changed from the request, and why
 };
@@ -68,7 +69,7 @@ struct LpvPlan {
   std::vector<std::uint32_t> iterations;  // per cascade
 };
 using FitLpv = std::function<LpvSetup(const scene::Bounds& grid_bounds, const api::Lpv& lpv)>;
-LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene, const glm::mat4& camera_view_proj,
+LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
                  const std::vector<api::Light>& lights, const std::vector<LightView>& views, const FitLpv& fit);
 
 // Why a light cannot light anything in `bounds` (empty when it may): beyond its range, or
@@ -79,7 +80,11 @@ std::string light_misses(const api::Light& light, const scene::Bounds& bounds);
 // is not planar (it may shadow itself), or another draw inside the box spanned by a seen,
 // lit draw and the light (toward the light, for a directional one). By bounds, so "may".
 // Scenes of more than kMaxShadowTestDraws draws are taken to need shadows.
-bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const glm::mat4& camera_view_proj);
+// `seen`: draw_seen() of the frame's camera.
+bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const std::vector<bool>& seen);
+
+// Per draw, whether its bounds may be inside the frustum of `view_proj` (Vulkan clip space).
+std::vector<bool> draws_seen(const scene::Scene& scene, const glm::mat4& view_proj);
 inline constexpr std::size_t kMaxShadowTestDraws = 256;
 
 // The propagation steps a cascade needs: light crosses one cell per step, so after the
@@ -96,7 +101,7 @@ std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const s
 // The part of the scene the grid should cover: the draws the camera may see and the draws a
 // drawn light may reach (by their bounds), since light flows from the lit ones to the seen
 // ones; the scene's bounds when that is all of it or nothing.
-scene::Bounds lpv_region(const scene::Scene& scene, const glm::mat4& camera_view_proj,
+scene::Bounds lpv_region(const scene::Scene& scene, const std::vector<bool>& seen,
                          const std::vector<api::Light>& lights, const std::vector<bool>& light_drawn);
 
 // The cascades a frame needs: up to the first that holds the whole scene clear of its

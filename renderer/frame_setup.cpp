@@ -41,11 +41,11 @@ void check_cones(const api::Light& light, const std::string& field) {
                                        std::to_string(light.outer_cone_deg));
 }
 
+}  // namespace
+
 bool emits(const api::Light& light) {
   return light.intensity > 0.0f && glm::any(glm::greaterThan(light.color, glm::vec3(0.0f)));
 }
-
-}  // namespace
 
 std::vector<api::Light> resolve_lights(const scene::Scene& scene, const api::RenderRequest& request) {
   std::vector<api::Light> lights = request.lights ? *request.lights : scene.lights;

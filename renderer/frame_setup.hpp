@@ -40,6 +40,9 @@ struct LightView {
   std::uint32_t light = 0;  // index of the light
 };
 
+// Whether a light sends out any light (intensity and some colour channel above 0).
+bool emits(const api::Light& light);
+
 // The views of every light that emits: a perspective view for a spot, six cube faces (+X, -X,
 // +Y, -Y, +Z, -Z) for a point light and for a spot wider than a perspective map can hold,
 // an orthographic view fitted to the scene for a directional light.

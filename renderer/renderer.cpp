@@ -149,9 +149,10 @@ struct Renderer::Impl {
 
   RenderResult render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
                       unsigned readback, double load_ms, double upload_ms);
-  // A dry run's result: the plan, nothing rendered.
-  RenderResult planned(const scene::Scene& scene, const api::RenderRequest& request, const FramePlan& plan,
-                       double plan_ms) const;
+  // The stats of a request before any frame is timed: what it renders, the plan, the
+  // device, the warnings. A dry run returns them as they are.
+  api::RenderStats plan_stats(const scene::Scene& scene, const api::RenderRequest& request, const FramePlan& plan,
+                              double plan_ms) const;
   void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
   // Steps first .. first + count - 1 of propagation (1-based); other passes ignore them.
   struct Steps {
@@ -273,7 +274,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
       setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn, plan.light_shadowed);
   plan_start = Clock::now();
   const LpvPlan lpv_plan = plan_lpv(
-      plan, request, scene, camera.view_proj, lights, light_setup.views,
+      plan, request, scene, lights, light_setup.views,
       [&](const scene::Bounds& grid_bounds, const api::Lpv& lpv) {
         LpvSetup setup = setup_lpv(lpv, scene.bounds, grid_bounds, lights, light_setup.views, gpu.emitted_flux, camera,
                                    camera_request.fov_y_deg, out.height);
@@ -284,7 +285,11 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   plan_ms += ms_since(plan_start);
   const LpvSetup& lpv_setup = lpv_plan.setup;
   const std::vector<std::uint32_t>& iterations = lpv_plan.iterations;
-  if (request.dry_run) return planned(scene, request, plan, plan_ms);
+  if (request.dry_run) {
+    RenderResult planned;
+    planned.stats = plan_stats(scene, request, plan, plan_ms);
+    return planned;
+  }
   allocate(plan, request, light_setup);
 
   gpu::GpuFrame frame{};
@@ -369,20 +374,14 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     wall_ms.push_back(ms_since(frame_start));
   }
 
-  api::RenderStats& stats = result.stats;
-  stats.scene = scene.name;
-  stats.width = out.width;
-  stats.height = out.height;
-  stats.view = api::to_string(out.view);
-  stats.frames = request.repeat;
-  stats.plan = api::to_string(request.plan);
   for (std::uint32_t c = 0; c < iterations.size() && plan.run[kPropagate]; ++c)
     if (iterations_run[c] < iterations[c])
       plan.decisions.push_back("cascade " + std::to_string(c) + ": converged after " + std::to_string(iterations_run[c]) +
                                " of " + std::to_string(iterations[c]) +
                                " iterations (the steps left would add less than lpv.convergence of the light)");
-  stats.decisions = plan.decisions;
-  stats.passes = pass_list(plan);
+  api::RenderStats& stats = result.stats;
+  stats = plan_stats(scene, request, plan, plan_ms);
+  stats.frames = request.repeat;
   for (std::uint32_t p = 0; p < kPassCount; ++p) {
     api::PassStats& ps = stats.passes[p];
     if (ps.ran) ps.gpu_ms = api::TimeSummary::of(pass_ms[p]);
@@ -393,28 +392,18 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.cpu_ms["scene_load"] = api::TimeSummary::of({load_ms});
   stats.cpu_ms["scene_upload"] = api::TimeSummary::of({upload_ms});
   stats.cpu_ms["setup"] = api::TimeSummary::of({setup_ms});
-  stats.cpu_ms["plan"] = api::TimeSummary::of({plan_ms});
   stats.cpu_ms["record"] = api::TimeSummary::of(record_ms);
   stats.cpu_ms["submit_wait"] = api::TimeSummary::of(wait_ms);
   stats.cpu_ms["readback"] = api::TimeSummary::of(readback_ms);
   stats.wall_ms = api::TimeSummary::of(wall_ms);
-  stats.device = device.info().name;
-  stats.driver = device.info().driver;
   if (plan.run[kInject]) stats.lpv = lpv_stats(request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count, iterations_run);
   if (plan.run[kInject] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup);
-  stats.warnings = scene.warnings;
-  if (request.lpv.intensity != 1.0f && needs_indirect_light(out.view))
-    stats.warnings.push_back("lpv.intensity is " + std::to_string(request.lpv.intensity) +
-                             ": the indirect light is scaled and no longer physically based");
-  if (request.lpv.bounces > 1 && !request.lpv.occlusion && plan.run[kInject])
-    stats.warnings.push_back("lpv.bounces > 1 needs occlusion: light is reflected where the geometry volume blocks it");
   return result;
 }
 
-RenderResult Renderer::Impl::planned(const scene::Scene& scene, const api::RenderRequest& request,
-                                     const FramePlan& plan, double plan_ms) const {
-  RenderResult result;
-  api::RenderStats& stats = result.stats;
+api::RenderStats Renderer::Impl::plan_stats(const scene::Scene& scene, const api::RenderRequest& request,
+                                            const FramePlan& plan, double plan_ms) const {
+  api::RenderStats stats;
   stats.scene = scene.name;
   stats.width = request.output.width;
   stats.height = request.output.height;
@@ -426,7 +415,12 @@ RenderResult Renderer::Impl::planned(const scene::Scene& scene, const api::Rende
   stats.device = device.info().name;
   stats.driver = device.info().driver;
   stats.warnings = scene.warnings;
-  return result;
+  if (request.lpv.intensity != 1.0f && needs_indirect_light(request.output.view))
+    stats.warnings.push_back("lpv.intensity is " + std::to_string(request.lpv.intensity) +
+                             ": the indirect light is scaled and no longer physically based");
+  if (request.lpv.bounces > 1 && !request.lpv.occlusion && plan.run[kInject])
+    stats.warnings.push_back("lpv.bounces > 1 needs occlusion: light is reflected where the geometry volume blocks it");
+  return stats;
 }
 
 // Whether the steps after `step` (up to `steps`) would add less than `convergence` of the

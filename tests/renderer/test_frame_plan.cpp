@@ -87,17 +87,19 @@ TEST(MayCastShadows, OnlyWithSomethingBetweenTheLightAndWhatIsSeen) {
   const api::Light spot = spot_at({0, 3, 0}, {0, -1, 0});
   const glm::mat4 camera = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) *
                            glm::lookAt(glm::vec3(0, 3, 5), glm::vec3(0), glm::vec3(0, 1, 0));
-  EXPECT_FALSE(renderer::may_cast_shadows(floor, spot, camera)) << "a plane cannot shadow itself";
+  EXPECT_FALSE(renderer::may_cast_shadows(floor, spot, renderer::draws_seen(floor, camera))) << "a plane cannot shadow itself";
 
   b = scene::SceneBuilder("floor and block");
   b.add_facing_quad({0, 0, 0}, {0, 1, 0}, 4.0f, b.add_material({"white", glm::vec3(0.8f), {}}));
   b.add_box({0, 1, 0}, glm::vec3(0.5f), 0.0f, 0);
-  EXPECT_TRUE(renderer::may_cast_shadows(b.build(), spot, camera));
+  const scene::Scene floor_and_block = b.build();
+  EXPECT_TRUE(renderer::may_cast_shadows(floor_and_block, spot, renderer::draws_seen(floor_and_block, camera)));
 
   // The camera turned away from both: nothing it sees can be shadowed.
   const glm::mat4 away = glm::perspective(glm::radians(60.0f), 1.0f, 0.1f, 100.0f) *
                          glm::lookAt(glm::vec3(0, 3, 5), glm::vec3(0, 3, 10), glm::vec3(0, 1, 0));
-  EXPECT_FALSE(renderer::may_cast_shadows(b.build(), spot, away)) << "nothing seen: nothing to shadow";
+  EXPECT_FALSE(renderer::may_cast_shadows(floor_and_block, spot, renderer::draws_seen(floor_and_block, away)))
+      << "nothing seen: nothing to shadow";
 }
 
 TEST(CascadesNeeded, UpToTheFirstThatHoldsTheSceneClearOfItsBorderBand) {
