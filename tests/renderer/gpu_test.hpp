@@ -30,6 +30,13 @@ api::RenderRequest linear_request(std::uint32_t width, std::uint32_t height, con
 // Linear RGB of one pixel.
 glm::vec3 pixel(const image::RgbaF32Image& image, std::uint32_t x, std::uint32_t y);
 
+// Over the RGB of linear images (alpha left out): the sum, the largest value, the largest
+// difference of two, and their root mean square difference.
+double total(const image::RgbaF32Image& image);
+float brightest(const image::RgbaF32Image& image);
+float largest_difference(const image::RgbaF32Image& a, const image::RgbaF32Image& b);
+double rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& b);
+
 // The pixel whose centre is nearest to where `world` projects with `camera`.
 glm::uvec2 project_to_pixel(const api::Camera& camera, const scene::Scene& scene, std::uint32_t width,
                             std::uint32_t height, glm::vec3 world);

@@ -1,5 +1,7 @@
 #include "gpu_test.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace gpu_test {
@@ -38,6 +40,34 @@ api::RenderRequest linear_request(std::uint32_t width, std::uint32_t height, con
 glm::vec3 pixel(const image::RgbaF32Image& image, std::uint32_t x, std::uint32_t y) {
   const float* p = &image.pixels[(std::size_t(y) * image.width + x) * 4];
   return {p[0], p[1], p[2]};
+}
+
+double total(const image::RgbaF32Image& image) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    if (i % 4 != 3) sum += image.pixels[i];
+  return sum;
+}
+
+float brightest(const image::RgbaF32Image& image) {
+  float m = 0.0f;
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    if (i % 4 != 3) m = std::max(m, image.pixels[i]);
+  return m;
+}
+
+float largest_difference(const image::RgbaF32Image& a, const image::RgbaF32Image& b) {
+  float m = 0.0f;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    if (i % 4 != 3) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
+  return m;
+}
+
+double rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    if (i % 4 != 3) sum += double(a.pixels[i] - b.pixels[i]) * double(a.pixels[i] - b.pixels[i]);
+  return std::sqrt(sum / double(a.pixels.size() / 4 * 3));
 }
 
 glm::uvec2 project_to_pixel(const api::Camera& camera, const scene::Scene& scene, std::uint32_t width,

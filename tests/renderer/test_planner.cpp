@@ -13,6 +13,11 @@
 
 namespace {
 
+using gpu_test::brightest;
+using gpu_test::largest_difference;
+using gpu_test::rmse;
+using gpu_test::total;
+
 class Planner : public gpu_test::GpuTest {};
 
 api::RenderRequest request(api::PlanMode mode) {
@@ -27,28 +32,6 @@ const api::PassStats& pass(const renderer::RenderResult& r, const std::string& n
   for (const api::PassStats& p : r.stats.passes)
     if (p.name == name) return p;
   throw std::runtime_error("no pass " + name);
-}
-
-// Sums and extremes over the RGB of a linear image (alpha left out).
-double total(const image::RgbaF32Image& image) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < image.pixels.size(); ++i)
-    if (i % 4 != 3) sum += image.pixels[i];
-  return sum;
-}
-
-float brightest(const image::RgbaF32Image& image) {
-  float m = 0.0f;
-  for (std::size_t i = 0; i < image.pixels.size(); ++i)
-    if (i % 4 != 3) m = std::max(m, image.pixels[i]);
-  return m;
-}
-
-float largest_difference(const image::RgbaF32Image& a, const image::RgbaF32Image& b) {
-  float m = 0.0f;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i)
-    if (i % 4 != 3) m = std::max(m, std::abs(a.pixels[i] - b.pixels[i]));
-  return m;
 }
 
 api::Light away_spot() {
@@ -193,12 +176,6 @@ TEST_F(Planner, ANarrowSpotGetsASmallerRsmWithinTolerance) {
   EXPECT_EQ(kept.linear.pixels, exact.linear.pixels);
 }
 
-double rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& b) {  // over RGB
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i)
-    if (i % 4 != 3) sum += double(a.pixels[i] - b.pixels[i]) * double(a.pixels[i] - b.pixels[i]);
-  return std::sqrt(sum / double(a.pixels.size() / 4 * 3));
-}
 
 // LPV has no resolution-independent answer to compare with (its brightness moves with the
 // cell size), so the reference is the exact plan on the object alone: the empty part of

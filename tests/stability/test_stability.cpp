@@ -48,21 +48,11 @@ bool all_finite(const std::vector<glm::vec4>& values) {
   return true;
 }
 
-double total(const image::RgbaF32Image& image) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < image.pixels.size(); ++i)
-    if (i % 4 != 3) sum += image.pixels[i];
-  return sum;
-}
-
 // Root mean square difference over RGB, relative to the mean of `reference`.
 double relative_rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& reference) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.pixels.size(); ++i)
-    if (i % 4 != 3) sum += double(a.pixels[i] - reference.pixels[i]) * double(a.pixels[i] - reference.pixels[i]);
-  const double n = double(a.pixels.size() / 4 * 3);
-  const double mean = total(reference) / n;
-  return mean > 0.0 ? std::sqrt(sum / n) / mean : std::sqrt(sum / n);
+  const double mean = gpu_test::total(reference) / double(reference.pixels.size() / 4 * 3);
+  const double d = gpu_test::rmse(a, reference);
+  return mean > 0.0 ? d / mean : d;
 }
 
 constexpr unsigned kEverything = renderer::kReadbackLinear | renderer::kReadbackLpv;
@@ -214,6 +204,7 @@ scene::Scene two_rooms() {
 TEST_F(Invariants, LightLeakingThroughAThinWallIsMeasuredAndBounded) {
   const scene::Scene rooms = two_rooms();
   auto& r = gpu_test::renderer();
+  std::map<bool, double> leak;  // by occlusion on or off
   for (bool occlusion : {true, false}) {
     api::RenderRequest req = small_final();
     req.output.width = req.output.height = 64;
@@ -227,14 +218,17 @@ TEST_F(Invariants, LightLeakingThroughAThinWallIsMeasuredAndBounded) {
         const glm::vec3 p = gpu_test::pixel(result.linear, x, y);
         (x < 30 ? lit : dark) += double(p.r + p.g + p.b);  // image x < 30: the lit room (x < 0)
       }
-    const double leak = dark / std::max(lit, 1e-30);
-    note(std::string("leak through 2 cm, occlusion ") + (occlusion ? "on" : "off"), leak, "two rooms, 32^3");
-    std::printf("indirect light in the dark room / lit room, occlusion %s: %.4f\n", occlusion ? "on" : "off", leak);
-    // With cells of about 13 cm the wall is a sixth of a cell: the grid cannot separate the
-    // rooms within a cell of the wall, so some light crosses. Occlusion must hold it well
-    // under the light of the lit room itself.
-    EXPECT_LT(leak, occlusion ? 0.5 : 1.0);
+    leak[occlusion] = dark / std::max(lit, 1e-30);
+    note(std::string("leak through 2 cm, occlusion ") + (occlusion ? "on" : "off"), leak[occlusion], "two rooms, 32^3");
+    std::printf("indirect light in the dark room / lit room, occlusion %s: %.4f\n", occlusion ? "on" : "off",
+                leak[occlusion]);
   }
+  // The wall is a sixth of a cell (about 13 cm at 32^3): the grid cannot separate the rooms
+  // within a cell of it, so some light crosses whatever occlusion does. Occlusion may only
+  // reduce that, and it must stay a small share of the lit room's light: measured 0.068,
+  // bounded at 0.1.
+  EXPECT_LE(leak[true], leak[false]);
+  EXPECT_LT(leak[true], 0.1);
 }
 
 }  // namespace
