@@ -116,8 +116,8 @@ TEST_F(GltfScenes, TheFilesCameraIsTheDefault) {
   const glm::uvec2 p = gpu_test::project_to_pixel(scene.camera, scene, 64, 64, {0.5f, 0.0f, 0.0f});
   EXPECT_NEAR(float(p.x), 31.5f, 1.0f);
   EXPECT_NEAR(float(p.y), 31.5f, 1.0f);
-  const auto depth = gpu_test::renderer().render(scene, request(api::View::albedo), renderer::kReadbackLinear);
-  EXPECT_GT(gpu_test::pixel(depth.linear, 32, 32).r, 0.7f) << "the white floor is under the image centre";
+  const auto albedo = gpu_test::renderer().render(scene, request(api::View::albedo), renderer::kReadbackLinear);
+  EXPECT_GT(gpu_test::pixel(albedo.linear, 32, 32).r, 0.7f) << "the white floor is under the image centre";
 }
 
 TEST_F(GltfScenes, BackFacesAreDrawnOnlyForDoubleSidedMaterials) {
