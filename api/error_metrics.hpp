@@ -1,0 +1,22 @@
+// Error metrics between a linear image and a reference (usually the Monte Carlo ground truth):
+// a response type of compare and sweep. Computed by renderer/image/metrics.cpp; defined here
+// so that api/ can carry them without knowing how they are computed.
+#pragma once
+
+#include <cstdint>
+
+namespace api {
+
+// Over the RGB channels of the pixels in a mask (docs/accuracy.md defines each precisely).
+struct ErrorMetrics {
+  double rmse = 0.0;               // root mean square error, in the images' units
+  double relative_mse = 0.0;       // mean of (x - r)^2 / (r^2 + 0.01): error relative to brightness
+  double psnr_db = 0.0;            // 10 log10(peak^2 / MSE), peak = the reference's largest value; +inf when equal
+  double ssim = 1.0;               // structural similarity of the luminances (Gaussian window 11, sigma 1.5)
+  double mean_abs_error = 0.0;
+  double max_abs_error = 0.0;
+  double mean_signed_error = 0.0;  // bias: mean of x - r (negative: darker than the reference)
+  std::uint64_t pixels = 0;        // pixels in the mask
+};
+
+}  // namespace api
