@@ -1,13 +1,13 @@
 // Strict JSON -> RenderRequest, and RenderRequest/RenderStats -> JSON.
 //
-// Every value is read through a Field (the value and its JSON path), so every
-// error names the field it is about. Objects are read through Object, which
-// rejects unknown keys up front. Ranges are checked as values are read; the
-// few rules that involve several fields (cone order, camera frame, near/far,
-// pixel count) are checked once the object they live in has been read.
+// Values are read through api/json_reader.hpp, so every error names its field. Ranges are
+// checked as values are read; the few rules that involve several fields (cone order, camera
+// frame, near/far, pixel count) are checked once the object they live in has been read.
 #include "api/request_json.hpp"
 
+#include "api/json_reader.hpp"
 #include "api/request_error.hpp"
+#include "api/request_reader.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -31,190 +31,18 @@ namespace api {
 namespace {
 
 using nlohmann::json;
+using namespace reader;
 
 constexpr std::size_t max_scene_name = 128;
 constexpr float max_color = 1.0e6f;
 constexpr float max_cone_deg = 90.0f;
-constexpr float no_upper_limit = std::numeric_limits<float>::max();
 constexpr double min_vector_length = 1e-6;  // below this a direction has no usable direction
 constexpr double min_camera_sine = 1e-4;    // sine of the angle between camera up and view direction
-constexpr std::size_t max_json_depth = 16;  // the schema needs 4
-
-// ---- text for messages -------------------------------------------------------
-
-// The shortest text that reads back as the same float ("0.1", "1e+12", "179.9").
-std::string number_text(float x) {
-  std::array<char, 32> buf{};
-  const auto res = std::to_chars(buf.data(), buf.data() + buf.size(), x);
-  return std::string(buf.data(), res.ptr);
-}
 
 std::string vector_text(const glm::vec3& v) {
   std::string text = "[";  // appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "[" + string
   text += number_text(v.x) + ", " + number_text(v.y) + ", " + number_text(v.z) + "]";
   return text;
-}
-
-// A JSON string literal of (at most the start of) `s`, in ASCII, safe to embed in a
-// message: every message is ASCII, whatever bytes the client sent.
-std::string quote(std::string_view s) {
-  constexpr std::size_t max_length = 40;
-  std::string q = json(std::string(s.substr(0, max_length))).dump(-1, ' ', true, json::error_handler_t::replace);
-  if (s.size() > max_length) q.insert(q.size() - 1, "...");
-  return q;
-}
-
-// What a value is, for the "got ..." part of a message. Never dumps a container,
-// which could be large or deeply nested.
-std::string describe(const json& v) {
-  switch (v.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::boolean: return v.get<bool>() ? "true" : "false";
-    case json::value_t::number_integer: return std::to_string(v.get<std::int64_t>());
-    case json::value_t::number_unsigned: return std::to_string(v.get<std::uint64_t>());
-    case json::value_t::number_float: {
-      const double d = v.get<double>();
-      if (std::isnan(d)) return "NaN";
-      if (std::isinf(d)) return d > 0 ? "Infinity" : "-Infinity";
-      return v.dump();
-    }
-    case json::value_t::string: return "string " + quote(v.get_ref<const std::string&>());
-    case json::value_t::array: return "an array of " + std::to_string(v.size()) + " elements";
-    case json::value_t::object: return "an object";
-    default: return "an unsupported value";
-  }
-}
-
-// ---- paths -------------------------------------------------------------------
-
-bool is_plain_key(std::string_view key) {
-  constexpr std::size_t max_plain = 64;
-  return !key.empty() && key.size() <= max_plain && std::ranges::all_of(key, [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-  });
-}
-
-// "output" + "width" -> "output.width". Keys that are not identifiers (they can only
-// be unknown ones, straight from the client) are quoted: output["wi dth"].
-std::string member_path(const std::string& parent, std::string_view key) {
-  if (!is_plain_key(key)) return parent + "[" + quote(key) + "]";
-  return parent.empty() ? std::string(key) : parent + "." + std::string(key);
-}
-
-std::string element_path(const std::string& parent, std::size_t index) {
-  return parent + "[" + std::to_string(index) + "]";
-}
-
-// ---- reading -------------------------------------------------------------------
-
-// A value of the request with its path, so that every error can name it.
-struct Field {
-  const json* value;
-  std::string path;
-
-  [[noreturn]] void fail(const std::string& message) const { throw RequestError(path, message); }
-
-  // "must be <expectation>, got <what it is>"
-  [[noreturn]] void reject(const std::string& expectation) const {
-    fail((path.empty() ? "the request must be " : "must be ") + expectation + ", got " + describe(*value));
-  }
-
-  Field element(std::size_t index) const { return {&(*value)[index], element_path(path, index)}; }
-};
-
-// A JSON object whose keys have all been checked against the allowed ones.
-class Object {
- public:
-  Object(Field field, std::span<const std::string_view> allowed) : field_(std::move(field)) {
-    if (!field_.value->is_object()) field_.reject("an object");
-    for (const auto& [key, value] : field_.value->items()) {
-      if (std::ranges::find(allowed, key) == allowed.end()) {
-        std::string names;
-        for (const std::string_view name : allowed) names += (names.empty() ? "" : ", ") + std::string(name);
-        throw RequestError(member_path(field_.path, key), "unknown field (allowed: " + names + ")");
-      }
-    }
-  }
-
-  const std::string& path() const { return field_.path; }
-  std::string path_of(std::string_view key) const { return member_path(field_.path, key); }
-  bool has(std::string_view key) const { return field_.value->contains(std::string(key)); }
-
-  std::optional<Field> get(std::string_view key) const {
-    const auto it = field_.value->find(std::string(key));
-    if (it == field_.value->end()) return std::nullopt;
-    return Field{&*it, path_of(key)};
-  }
-
-  // `what` says what the field should hold: "required field missing (<what>)".
-  Field require(std::string_view key, const std::string& what) const {
-    if (auto field = get(key)) return *field;
-    throw RequestError(path_of(key), "required field missing (" + what + ")");
-  }
-
- private:
-  Field field_;
-};
-
-template <std::unsigned_integral T>
-T as_uint(const Field& f, T lo, T hi) {
-  const json& v = *f.value;
-  std::optional<std::uint64_t> x;
-  if (v.is_number_unsigned()) x = v.get<std::uint64_t>();
-  // Only a json built in code holds a non-negative number_integer; parsed ones are unsigned.
-  if (v.is_number_integer() && !v.is_number_unsigned() && v.get<std::int64_t>() >= 0)
-    x = static_cast<std::uint64_t>(v.get<std::int64_t>());
-  if (!x || *x < lo || *x > hi)
-    f.reject("an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return static_cast<T>(*x);
-}
-
-// Any JSON number, integer or not, that is finite and in [lo, hi] once stored as a float.
-// The bounds are compared as floats, so a limit like 179.9 accepts the JSON text "179.9".
-float as_float(const Field& f, float lo, float hi) {
-  const std::string expectation = hi == no_upper_limit
-                                      ? "a number >= " + number_text(lo)
-                                      : "a number in [" + number_text(lo) + ", " + number_text(hi) + "]";
-  if (!f.value->is_number()) f.reject(expectation);
-  const double d = f.value->get<double>();
-  if (!std::isfinite(d) || std::abs(d) > static_cast<double>(std::numeric_limits<float>::max()))
-    f.reject(expectation + " that fits a 32-bit float");
-  const float x = static_cast<float>(d);
-  if (x < lo || x > hi) f.reject(expectation);
-  return x;
-}
-
-bool as_bool(const Field& f) {
-  if (!f.value->is_boolean()) f.reject("true or false");
-  return f.value->get<bool>();
-}
-
-// "\"a\", \"b\", \"c\"": the JSON spellings of `values`.
-template <class E, std::size_t N>
-std::string enum_names(const std::array<E, N>& values) {
-  std::string names;
-  for (const E e : values) names += (names.empty() ? "\"" : ", \"") + to_string(e) + "\"";
-  return names;
-}
-
-// An enum spelled as in to_string(); `values` lists every value of the enum.
-template <class E, std::size_t N>
-E as_enum(const Field& f, const std::array<E, N>& values) {
-  if (f.value->is_string()) {
-    const std::string& s = f.value->get_ref<const std::string&>();
-    for (const E e : values)
-      if (to_string(e) == s) return e;
-  }
-  f.reject("one of " + enum_names(values));
-}
-
-// The elements of an array of at most `max_size` elements.
-std::vector<Field> as_array(const Field& f, std::size_t max_size) {
-  if (!f.value->is_array() || f.value->size() > max_size)
-    f.reject("an array of at most " + std::to_string(max_size) + " elements");
-  std::vector<Field> elements;
-  for (std::size_t i = 0; i < f.value->size(); ++i) elements.push_back(f.element(i));
-  return elements;
 }
 
 glm::vec3 as_vec3(const Field& f, float lo, float hi) {
@@ -391,16 +219,6 @@ Shadows read_shadows(const Field& f) {
   return shadows;
 }
 
-// "grid": 32 (a cube) or [x, y, z].
-glm::uvec3 read_grid(const Field& f) {
-  if (f.value->is_number()) return glm::uvec3(as_uint<std::uint32_t>(f, 1, limits::max_grid_side));
-  if (!f.value->is_array() || f.value->size() != 3)
-    f.reject("an integer in [1, " + std::to_string(limits::max_grid_side) + "] or an array of 3 of them");
-  glm::uvec3 grid;
-  for (int i = 0; i < 3; ++i) grid[i] = as_uint<std::uint32_t>(f.element(std::size_t(i)), 1, limits::max_grid_side);
-  return grid;
-}
-
 // "occlusion_sources": a non-empty set of "rsm" and "camera".
 void read_occlusion_sources(const Field& f, Lpv& lpv) {
   const std::string expectation = "a non-empty array of distinct \"rsm\" and \"camera\"";
@@ -417,7 +235,26 @@ void read_occlusion_sources(const Field& f, Lpv& lpv) {
   }
 }
 
-bool is_power_of_two(std::uint32_t x) { return x != 0 && (x & (x - 1)) == 0; }
+}  // namespace
+
+// "grid": 32 (a cube) or [x, y, z].
+glm::uvec3 reader::read_grid(const Field& f) {
+  if (f.value->is_number()) return glm::uvec3(as_uint<std::uint32_t>(f, 1, limits::max_grid_side));
+  if (!f.value->is_array() || f.value->size() != 3)
+    f.reject("an integer in [1, " + std::to_string(limits::max_grid_side) + "] or an array of 3 of them");
+  glm::uvec3 grid;
+  for (int i = 0; i < 3; ++i) grid[i] = as_uint<std::uint32_t>(f.element(std::size_t(i)), 1, limits::max_grid_side);
+  return grid;
+}
+
+// A power of two in [1, max_vpl_downsample]; that it fits the RSM is checked with the RSM.
+std::uint32_t reader::read_vpl_downsample(const Field& f) {
+  const auto d = as_uint<std::uint32_t>(f, 1, limits::max_vpl_downsample);
+  if ((d & (d - 1)) != 0) f.reject("a power of two in [1, " + std::to_string(limits::max_vpl_downsample) + "]");
+  return d;
+}
+
+namespace {
 
 Lpv read_lpv(const Field& f) {
   const Object obj(f, lpv_keys);
@@ -428,8 +265,7 @@ Lpv read_lpv(const Field& f) {
   if (auto v = obj.get("iterations")) lpv.iterations = as_uint<std::uint32_t>(*v, 0, limits::max_iterations);
   if (auto v = obj.get("rsm")) lpv.rsm_resolution = as_uint<std::uint32_t>(*v, 1, limits::max_rsm_resolution);
   if (auto v = obj.get("vpl_downsample")) {
-    lpv.vpl_downsample = as_uint<std::uint32_t>(*v, 1, limits::max_vpl_downsample);
-    if (!is_power_of_two(lpv.vpl_downsample)) v->reject("a power of two in [1, " + std::to_string(limits::max_vpl_downsample) + "]");
+    lpv.vpl_downsample = read_vpl_downsample(*v);
     if (lpv.vpl_downsample > lpv.rsm_resolution)
       v->fail("must be at most lpv.rsm (" + std::to_string(lpv.rsm_resolution) + "), got " +
               std::to_string(lpv.vpl_downsample));
@@ -446,71 +282,6 @@ Lpv read_lpv(const Field& f) {
     if (!(*lpv.extent > 0.0f)) v->reject("a number > 0");
   }
   return lpv;
-}
-
-RenderRequest read_request(const json& document) {
-  const Object obj(Field{&document, ""}, request_keys);
-  RenderRequest request;
-  if (auto v = obj.get("scene")) request.scene = as_scene_name(*v);
-  if (auto v = obj.get("camera")) request.camera = read_camera(*v);
-  if (auto v = obj.get("lights")) {
-    request.lights.emplace();
-    for (const Field& light : as_array(*v, limits::max_lights)) request.lights->push_back(read_light(light));
-  }
-  if (auto v = obj.get("light_edits")) {
-    for (const Field& edit : as_array(*v, limits::max_lights)) request.light_edits.push_back(read_light_edit(edit));
-  }
-  if (auto v = obj.get("output")) request.output = read_output(*v);
-  if (auto v = obj.get("shadows")) request.shadows = read_shadows(*v);
-  if (auto v = obj.get("lpv")) request.lpv = read_lpv(*v);
-  if (auto v = obj.get("plan")) request.plan = as_enum(*v, plan_modes);
-  if (auto v = obj.get("plan_keep")) {
-    for (const Field& rule : as_array(*v, plan_rules.size())) {
-      const PlanRule r = as_enum(rule, plan_rules);
-      if (std::find(request.plan_keep.begin(), request.plan_keep.end(), r) != request.plan_keep.end())
-        rule.reject("each rule once");
-      request.plan_keep.push_back(r);
-    }
-  }
-  if (auto v = obj.get("dry_run")) request.dry_run = as_bool(*v);
-  if (auto v = obj.get("repeat")) request.repeat = as_uint<std::uint32_t>(*v, 1, limits::max_repeat);
-  return request;
-}
-
-// nlohmann's parser, plus what it lets through: duplicate keys (it keeps the last
-// silently) and unbounded nesting.
-json parse_document(std::string_view text) {
-  std::vector<std::set<std::string>> open;  // per open object or array: the keys seen so far
-  const json::parser_callback_t check = [&open](int, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start:
-        if (open.size() >= max_json_depth)
-          throw RequestError("", "invalid JSON: nested deeper than " + std::to_string(max_json_depth) + " levels");
-        open.emplace_back();
-        break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end: open.pop_back(); break;
-      case json::parse_event_t::key:
-        if (!open.back().insert(parsed.get<std::string>()).second)
-          throw RequestError("", "invalid JSON: duplicate key " + quote(parsed.get_ref<const std::string&>()));
-        break;
-      case json::parse_event_t::value: break;
-    }
-    return true;
-  };
-  try {
-    return json::parse(text, check);
-  } catch (const json::exception& e) {
-    // e.what() is "[json.exception.parse_error.101] parse error at line 1, column 9: ...".
-    std::string_view what = e.what();
-    if (const auto end = what.find("] "); what.starts_with("[json.exception.") && end != std::string_view::npos)
-      what.remove_prefix(end + 2);
-    std::string message = "invalid JSON: " + std::string(what);
-    // The parser quotes the bytes it last read, which may be anything.
-    std::ranges::replace_if(message, [](char c) { return c < 0x20 || c > 0x7e; }, '?');
-    throw RequestError("", message);
-  }
 }
 
 // ---- writing -------------------------------------------------------------------
@@ -604,9 +375,41 @@ json lpv_stats_json(const LpvStats& lpv) {
 
 }  // namespace
 
-RenderRequest parse_render_request(std::string_view json_text) { return read_request(parse_document(json_text)); }
+RenderRequest reader::read_render_request(const Field& field) {
+  const Object obj(field, request_keys);
+  RenderRequest request;
+  if (auto v = obj.get("scene")) request.scene = as_scene_name(*v);
+  if (auto v = obj.get("camera")) request.camera = read_camera(*v);
+  if (auto v = obj.get("lights")) {
+    request.lights.emplace();
+    for (const Field& light : as_array(*v, limits::max_lights)) request.lights->push_back(read_light(light));
+  }
+  if (auto v = obj.get("light_edits")) {
+    for (const Field& edit : as_array(*v, limits::max_lights)) request.light_edits.push_back(read_light_edit(edit));
+  }
+  if (auto v = obj.get("output")) request.output = read_output(*v);
+  if (auto v = obj.get("shadows")) request.shadows = read_shadows(*v);
+  if (auto v = obj.get("lpv")) request.lpv = read_lpv(*v);
+  if (auto v = obj.get("plan")) request.plan = as_enum(*v, plan_modes);
+  if (auto v = obj.get("plan_keep")) {
+    for (const Field& rule : as_array(*v, plan_rules.size())) {
+      const PlanRule r = as_enum(rule, plan_rules);
+      if (std::find(request.plan_keep.begin(), request.plan_keep.end(), r) != request.plan_keep.end())
+        rule.reject("each rule once");
+      request.plan_keep.push_back(r);
+    }
+  }
+  if (auto v = obj.get("dry_run")) request.dry_run = as_bool(*v);
+  if (auto v = obj.get("repeat")) request.repeat = as_uint<std::uint32_t>(*v, 1, limits::max_repeat);
+  return request;
+}
 
-RenderRequest parse_render_request(const nlohmann::json& json) { return read_request(json); }
+RenderRequest parse_render_request(std::string_view json_text) {
+  const json document = parse_document(json_text);
+  return read_render_request(Field{&document, ""});
+}
+
+RenderRequest parse_render_request(const nlohmann::json& json) { return read_render_request(Field{&json, ""}); }
 
 nlohmann::json to_json(const RenderRequest& request) {
   json j = json::object();
