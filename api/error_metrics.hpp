@@ -7,12 +7,16 @@
 
 namespace api {
 
-// Over the RGB channels of the pixels in a mask (docs/accuracy.md defines each precisely).
+// Over the R, G and B values of the pixels in a mask; image::compare_images
+// (renderer/image/metrics.hpp) defines each precisely. With no pixel in the mask nothing
+// differs: the errors are 0, psnr_db +inf and ssim 1, as for identical images.
 struct ErrorMetrics {
   double rmse = 0.0;               // root mean square error, in the images' units
   double relative_mse = 0.0;       // mean of (x - r)^2 / (r^2 + 0.01): error relative to brightness
-  double psnr_db = 0.0;            // 10 log10(peak^2 / MSE), peak = the reference's largest value; +inf when equal
-  double ssim = 1.0;               // structural similarity of the luminances (Gaussian window 11, sigma 1.5)
+  double psnr_db = 0.0;            // 10 log10(peak^2 / MSE), peak = the reference's largest value
+                                   // (HDR has no fixed white); +inf when equal
+  double ssim = 1.0;               // structural similarity of the luminances (Gaussian window 11,
+                                   // sigma 1.5), in [-1, 1], 1 when equal
   double mean_abs_error = 0.0;
   double max_abs_error = 0.0;
   double mean_signed_error = 0.0;  // bias: mean of x - r (negative: darker than the reference)
