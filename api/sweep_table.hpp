@@ -1,0 +1,107 @@
+// The result of a sweep: one scene rendered with many LPV settings, each row with its cost
+// (GPU and wall time) and its error against a ground-truth reference. Plain data, the Pareto
+// front of accuracy against GPU time, and the table's three encodings (CSV, JSON, SVG plot).
+// No Vulkan, no HTTP: the code that renders the rows fills them in.
+#pragma once
+
+#include "api/error_metrics.hpp"
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace api {
+
+// The LPV settings a sweep varies (the rest of the request is the sweep's base).
+struct SweepSettings {
+  bool lpv = true;  // false: the LPV-off row (direct light only)
+  std::array<std::uint32_t, 3> grid{32, 32, 32};
+  std::uint32_t iterations = 8, cascades = 1, rsm = 256, vpl_downsample = 1, bounces = 1;
+  bool occlusion = true;
+};
+
+struct PassTime {
+  std::string name;
+  double gpu_ms = 0.0;  // median over the row's frames
+};
+
+struct SweepRow {
+  SweepSettings settings;
+  std::vector<PassTime> passes;  // the passes that ran, in order
+  double gpu_ms = 0.0;           // median frame GPU time (sum of passes)
+  double wall_ms = 0.0;          // median frame wall time
+  ErrorMetrics final_error;      // `final` view against the reference's final image
+  ErrorMetrics indirect_error;   // `indirect` view against the reference's indirect image
+  bool pareto = false;           // set by mark_pareto
+};
+
+// Which error the Pareto front and the plot use.
+enum class SweepMetric { rmse, relative_mse, psnr_db, ssim, mean_abs_error };
+enum class SweepImage { final_, indirect };
+
+struct ParetoAxis {
+  SweepImage image = SweepImage::final_;
+  SweepMetric metric = SweepMetric::rmse;
+};
+
+struct SweepTable {
+  std::vector<SweepRow> rows;
+  ParetoAxis axis;
+};
+
+// The row's errors on that image.
+const ErrorMetrics& image_errors(const SweepRow& row, SweepImage image);
+
+// A row's error on the axis as a "smaller is better" value that is >= 0 for any sensible
+// input, so that it has a log scale too:
+//  - rmse, relative_mse, mean_abs_error: the metric itself;
+//  - psnr_db: 10^(-psnr/10), which is MSE / peak^2 (the normalised MSE the PSNR is made
+//    of): 0 for +inf dB (identical images); merely negating would give negative values;
+//  - ssim: 1 - ssim (0 for identical images, at most 2).
+// NaN stays NaN.
+double error_of(const SweepRow& row, const ParetoAxis& axis);
+
+// What error_of's value is, for axis labels and tooltips: "RMSE", "relative MSE",
+// "MSE / peak^2 = 10^(-PSNR/10)", "1 - SSIM" or "mean absolute error", then the image:
+// e.g. "1 - SSIM (final)".
+std::string error_label(const ParetoAxis& axis);
+
+// Sets rows[i].pareto: true when no other row is at least as fast (gpu_ms) and at least as
+// accurate (error_of on table.axis), and strictly better in one of the two. Equal rows do
+// not dominate each other, so duplicates on the front are all marked. A row whose time or
+// error is NaN is unmeasured: it is never on the front and dominates no row.
+void mark_pareto(SweepTable& table);
+
+// RFC 4180 (CRLF line ends, fields with a comma, quote or line break quoted): a header and
+// one line per row with every field of the row: lpv, grid_x, grid_y, grid_z, iterations,
+// cascades, rsm, vpl_downsample, bounces, occlusion, gpu_ms, wall_ms, final_<metric> and
+// indirect_<metric> for every ErrorMetrics field, pareto, then one "<pass>_gpu_ms" column
+// per pass name (the union over the rows, in pipeline order; empty where the pass did not
+// run). Booleans are true/false, numbers the shortest text that reads back the same value,
+// non-finite numbers inf, -inf and nan. The pareto column is the flag as it is: call
+// mark_pareto first.
+std::string to_csv(const SweepTable& table);
+
+// {"settings": {"lpv", "grid": [x, y, z], "iterations", "cascades", "rsm", "vpl_downsample",
+//  "bounces", "occlusion"}, "passes": [{"name", "gpu_ms"}], "gpu_ms", "wall_ms",
+//  "final_error": {every ErrorMetrics field}, "indirect_error": {...}, "pareto"}.
+// JSON has no infinity or NaN: a non-finite number (e.g. psnr_db of identical images, +inf)
+// is written as null.
+nlohmann::json to_json(const SweepRow& row);
+// {"axis": {"image": "final", "metric": "rmse"}, "rows": [to_json(row), ...]}
+nlohmann::json to_json(const SweepTable& table);
+
+// A self-contained SVG (no script, no external font or link), 720x480: GPU time against
+// error_of, both on log scales, every row a circle with a tooltip, the rows marked pareto
+// highlighted and joined by the front's staircase. Rows a log scale cannot place (a time or
+// error that is zero, negative or not finite) are left out and counted in a note under the
+// plot. The title is escaped like every text. Call mark_pareto first.
+std::string to_svg_plot(const SweepTable& table, const std::string& title);
+
+std::string to_string(SweepMetric m);  // "rmse", "relative_mse", "psnr_db", "ssim", "mean_abs_error"
+std::string to_string(SweepImage i);   // "final", "indirect"
+
+}  // namespace api
