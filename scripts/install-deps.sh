@@ -11,8 +11,8 @@ PACKAGES=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
   # shaders: GLSL -> SPIR-V at build time
   glslang-tools spirv-tools
-  # maths, scenes, HTTP, JSON
-  libglm-dev libtinygltf-dev libcpp-httplib-dev nlohmann-json3-dev
+  # maths, scenes, HTTP, JSON; Embree: ground-truth ray tracing (the reference renderer)
+  libglm-dev libtinygltf-dev libcpp-httplib-dev nlohmann-json3-dev libembree-dev
   # image I/O: fast deflate for PNG encoding, stb for decoding in tests, tinyexr for EXR
   libdeflate-dev libstb-dev libtinyexr-dev zlib1g-dev
   # content hashes (SHA-256) of uploaded scenes
