@@ -3,6 +3,8 @@
 // so that api/ can carry them without knowing how they are computed.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstdint>
 
 namespace api {
@@ -22,5 +24,9 @@ struct ErrorMetrics {
   double mean_signed_error = 0.0;  // bias: mean of x - r (negative: darker than the reference)
   std::uint64_t pixels = 0;        // pixels in the mask
 };
+
+// Every field; a non-finite value (the PSNR of identical images, +inf) is written as null,
+// JSON having no infinity. Defined in sweep_table.cpp beside the CSV form.
+nlohmann::json to_json(const ErrorMetrics& metrics);
 
 }  // namespace api

@@ -128,12 +128,6 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
 // the value is made null here and reads the same in memory and in text.
 json number_json(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
-json errors_json(const ErrorMetrics& errors) {
-  json j = json::object();
-  for (const auto& [name, field] : error_fields) j[name] = number_json(errors.*field);
-  j["pixels"] = errors.pixels;
-  return j;
-}
 
 json settings_json(const SweepSettings& s) {
   return {{"lpv", s.lpv},
@@ -147,6 +141,13 @@ json settings_json(const SweepSettings& s) {
 }
 
 }  // namespace
+
+nlohmann::json to_json(const ErrorMetrics& errors) {
+  json j = json::object();
+  for (const auto& [name, field] : error_fields) j[name] = number_json(errors.*field);
+  j["pixels"] = errors.pixels;
+  return j;
+}
 
 const ErrorMetrics& image_errors(const SweepRow& row, SweepImage image) {
   switch (image) {
@@ -211,8 +212,8 @@ nlohmann::json to_json(const SweepRow& row) {
           {"passes", std::move(passes)},
           {"gpu_ms", number_json(row.gpu_ms)},
           {"wall_ms", number_json(row.wall_ms)},
-          {"final_error", errors_json(row.final_error)},
-          {"indirect_error", errors_json(row.indirect_error)},
+          {"final_error", to_json(row.final_error)},
+          {"indirect_error", to_json(row.indirect_error)},
           {"pareto", row.pareto}};
 }
 

@@ -164,30 +164,42 @@ struct Renderer::Impl {
                           const std::vector<std::uint32_t>& iterations_run) const;
   bool converged(std::uint32_t cascade, std::uint32_t step, std::uint32_t steps, float convergence) const;
   LpvSnapshot lpv_snapshot(const LpvSetup& lpv) const;
+  // The named scene, made resident (loaded and uploaded) if it is not; the times are 0 when it was.
+  const ResidentScene& resident(const std::string& name, double& load_ms, double& upload_ms);
 };
 
 Renderer::Renderer(const vkx::Device& device, RendererOptions options)
     : device_(device), impl_(std::make_unique<Impl>(device, std::move(options))) {}
 Renderer::~Renderer() = default;
 
-RenderResult Renderer::render(const api::RenderRequest& request, unsigned readback) {
-  if (const ResidentScene* resident = impl_->scenes.find(request.scene))
-    return impl_->render(resident->scene, resident->gpu, request, readback, 0.0, 0.0);
+const ResidentScene& Renderer::Impl::resident(const std::string& name, double& load_ms, double& upload_ms) {
+  load_ms = upload_ms = 0.0;
+  if (const ResidentScene* resident = scenes.find(name)) return *resident;
   const auto load_start = Clock::now();
-  std::optional<scene::Scene> loaded = scene::make_builtin_scene(request.scene);
-  if (!loaded && impl_->scene_source) loaded = impl_->scene_source(request.scene);
+  std::optional<scene::Scene> loaded = scene::make_builtin_scene(name);
+  if (!loaded && scene_source) loaded = scene_source(name);
   if (!loaded) {
     std::string names;
     for (const auto& info : scene::builtin_scenes()) names += (names.empty() ? "" : ", ") + info.name;
-    throw api::RequestError("scene", "unknown scene '" + request.scene + "'; built-in scenes: " + names);
+    throw api::RequestError("scene", "unknown scene '" + name + "'; built-in scenes: " + names);
   }
-  const double load_ms = ms_since(load_start);
+  load_ms = ms_since(load_start);
   const auto upload_start = Clock::now();
-  GpuScene gpu = GpuScene::upload(device_, *loaded, impl_->texture_layout);
-  const double upload_ms = ms_since(upload_start);
+  GpuScene gpu = GpuScene::upload(device, *loaded, texture_layout);
+  upload_ms = ms_since(upload_start);
   const std::uint64_t bytes = loaded->memory_bytes() + gpu.bytes();
-  const ResidentScene& resident = impl_->scenes.insert({request.scene, std::move(*loaded), std::move(gpu), bytes});
-  return impl_->render(resident.scene, resident.gpu, request, readback, load_ms, upload_ms);
+  return scenes.insert({name, std::move(*loaded), std::move(gpu), bytes});
+}
+
+RenderResult Renderer::render(const api::RenderRequest& request, unsigned readback) {
+  double load_ms = 0.0, upload_ms = 0.0;
+  const ResidentScene& scene = impl_->resident(request.scene, load_ms, upload_ms);
+  return impl_->render(scene.scene, scene.gpu, request, readback, load_ms, upload_ms);
+}
+
+const scene::Scene& Renderer::scene(const std::string& name) {
+  double load_ms = 0.0, upload_ms = 0.0;
+  return impl_->resident(name, load_ms, upload_ms).scene;
 }
 
 RenderResult Renderer::render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback) {

@@ -86,6 +86,11 @@ class Renderer {
   // Renders a scene given by the caller, uploaded for this call (request.scene is ignored).
   RenderResult render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback);
 
+  // The scene of that name as the renderer holds it (built in, or from the scene source),
+  // made resident if it is not; for work on the same scene beside the renderer (the
+  // reference). Valid until the next call on this renderer. Throws as render() does.
+  const scene::Scene& scene(const std::string& name);
+
   // Drops a resident scene (one that was deleted), so the next request asks the source again.
   void forget_scene(const std::string& name);
   SceneCacheStats scene_cache() const;

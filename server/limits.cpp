@@ -22,4 +22,39 @@ void check_limits(const api::RenderRequest& request, const RenderLimits& limits)
                                       std::to_string(limits.max_repeat));
 }
 
+namespace {
+
+// The render limits of a request embedded at `path`.
+void check_embedded(const api::RenderRequest& request, const RenderLimits& limits, const std::string& path) {
+  try {
+    check_limits(request, limits);
+  } catch (const LimitExceeded& e) {
+    throw LimitExceeded(path + "." + e.field(), e.what());
+  }
+}
+
+void check_reference(const api::ReferenceSettings& reference, const api::Output& output, const RenderLimits& limits,
+                     const std::string& path) {
+  const std::uint64_t paths = std::uint64_t(reference.samples) * output.width * output.height;
+  if (paths > limits.max_reference_paths)
+    throw LimitExceeded(path + ".samples", "samples x pixels is " + std::to_string(paths) +
+                                               " paths; this server allows at most " +
+                                               std::to_string(limits.max_reference_paths));
+}
+
+}  // namespace
+
+void check_limits(const api::CompareRequest& request, const RenderLimits& limits) {
+  check_embedded(request.base, limits, "base");
+  if (request.other) check_embedded(*request.other, limits, "against");
+  if (request.reference) check_reference(*request.reference, request.base.output, limits, "reference");
+}
+
+void check_limits(const api::SweepRequest& request, const RenderLimits& limits) {
+  check_embedded(request.base, limits, "base");
+  for (const api::SweepSettings& settings : api::sweep_configurations(request))
+    check_embedded(api::request_for(request.base, settings), limits, "parameters");
+  check_reference(request.reference, request.base.output, limits, "reference");
+}
+
 }  // namespace server

@@ -3,6 +3,7 @@
 // these limits is answered 422 with the field named.
 #pragma once
 
+#include "api/accuracy_request.hpp"
 #include "api/render_request.hpp"
 
 #include <cstdint>
@@ -17,6 +18,7 @@ struct RenderLimits {
   std::uint64_t max_grid_cells = 128ull * 128ull * 128ull;       // lpv.grid x * y * z * lpv.cascades
   std::uint32_t max_iterations = 64;                             // lpv.iterations
   std::uint32_t max_repeat = 100;                                // repeat
+  std::uint64_t max_reference_paths = 1ull << 26;                // reference samples x pixels (compare, sweep)
 };
 
 class LimitExceeded : public std::runtime_error {
@@ -31,5 +33,9 @@ class LimitExceeded : public std::runtime_error {
 
 // Throws LimitExceeded naming the first field over its limit.
 void check_limits(const api::RenderRequest& request, const RenderLimits& limits);
+// The same for every render they make (errors name the field under "base", "against" or
+// "parameters"), and for the reference's cost.
+void check_limits(const api::CompareRequest& request, const RenderLimits& limits);
+void check_limits(const api::SweepRequest& request, const RenderLimits& limits);
 
 }  // namespace server

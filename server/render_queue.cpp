@@ -36,45 +36,51 @@ RenderQueue::RenderQueue(Config config, const SceneStore& scenes, FatalHandler o
 
 RenderQueue::~RenderQueue() { shutdown(); }
 
-RenderQueue::Admission RenderQueue::submit(const std::shared_ptr<RenderJob>& job) {
+RenderQueue::Admission RenderQueue::submit(const std::shared_ptr<Job>& job) {
   {
     std::lock_guard lock(mutex_);
     if (stopping_) return Admission::stopping;
     if (queue_.size() >= config_.capacity) return Admission::full;
     job->submitted_ = Clock::now();
-    job->state_ = RenderJob::State::queued;
+    job->state_ = Job::State::queued;
     queue_.push_back(job);
   }
   work_available_.notify_one();
   return Admission::accepted;
 }
 
-RenderQueue::Outcome RenderQueue::wait(RenderJob& job, const std::function<bool()>& client_gone) {
+RenderQueue::Outcome RenderQueue::wait(Job& job, const std::function<bool()>& client_gone) {
+  return *wait_until(job, client_gone, Clock::time_point::max());
+}
+
+std::optional<RenderQueue::Outcome> RenderQueue::wait_until(Job& job, const std::function<bool()>& client_gone,
+                                                            Clock::time_point until) {
   std::unique_lock lock(mutex_);
   for (;;) {
-    if (job.state_ == RenderJob::State::done) return Outcome::done;
-    if (job.state_ == RenderJob::State::expired) return Outcome::deadline_exceeded;
+    if (job.state_ == Job::State::done) return Outcome::done;
+    if (job.state_ == Job::State::expired) return Outcome::deadline_exceeded;
     const auto now = Clock::now();
     if (now >= job.deadline) {
       withdraw(job);
       return Outcome::deadline_exceeded;
     }
+    if (now >= until) return std::nullopt;
     lock.unlock();
     const bool gone = client_gone();  // a system call: not under the lock
     lock.lock();
-    if (gone && job.state_ != RenderJob::State::done) {
+    if (gone && job.state_ != Job::State::done) {
       withdraw(job);
       return Outcome::client_gone;
     }
-    job_finished_.wait_until(lock, std::min(job.deadline, now + kClientPollInterval));
+    job_finished_.wait_until(lock, std::min({job.deadline, now + kClientPollInterval, until}));
   }
 }
 
-void RenderQueue::withdraw(RenderJob& job) {
-  if (job.state_ != RenderJob::State::queued) return;  // running: the worker finishes it
+void RenderQueue::withdraw(Job& job) {
+  if (job.state_ != Job::State::queued) return;  // running: the worker finishes it
   const auto it = std::find_if(queue_.begin(), queue_.end(), [&](const auto& queued) { return queued.get() == &job; });
   if (it != queue_.end()) queue_.erase(it);
-  job.state_ = RenderJob::State::withdrawn;
+  job.state_ = Job::State::withdrawn;
   job.queue_wait_ms = ms_between(job.submitted_, Clock::now());
 }
 
@@ -103,22 +109,24 @@ void RenderQueue::shutdown() {
     if (worker.joinable()) worker.join();
 }
 
-renderer::RenderResult RenderQueue::render(renderer::Renderer& renderer, const api::RenderRequest& request) const {
-  // A deleted scene may still be resident on this worker's device: dropped, so the render
+void RenderQueue::run(Job& job, accuracy::Workbench& bench) const {
+  // A deleted scene may still be resident on this worker's device: dropped, so the job
   // asks the store, which no longer has it, and answers "unknown scene".
-  if (is_scene_id(request.scene) && !scenes_.contains(request.scene)) renderer.forget_scene(request.scene);
-  return renderer.render(request);
+  if (is_scene_id(job.scene) && !scenes_.contains(job.scene)) bench.renderer.forget_scene(job.scene);
+  job.run(bench);
 }
 
 void RenderQueue::work(std::size_t index) {
   // Declared in this order so the renderer is destroyed before its device.
   std::optional<vkx::Device> device;
   std::optional<renderer::Renderer> renderer;
+  std::optional<accuracy::Workbench> bench;
   try {
     device.emplace(config_.device);
     renderer.emplace(*device, renderer::RendererOptions{[this](const std::string& id) { return scenes_.load(id); },
                                                         config_.scene_cache_bytes});
     warm_up(*renderer);
+    bench.emplace(*renderer);
   } catch (const std::exception& e) {
     const std::string message = "render worker " + std::to_string(index) + ": " + e.what();
     {
@@ -128,7 +136,7 @@ void RenderQueue::work(std::size_t index) {
       stopping_ = true;
       for (const auto& job : queue_) {
         job->error = std::make_exception_ptr(std::runtime_error(message));
-        job->state_ = RenderJob::State::done;
+        job->state_ = Job::State::done;
       }
       queue_.clear();
     }
@@ -145,7 +153,7 @@ void RenderQueue::work(std::size_t index) {
   }
 
   for (;;) {
-    std::shared_ptr<RenderJob> job;
+    std::shared_ptr<Job> job;
     {
       std::unique_lock lock(mutex_);
       work_available_.wait(lock, [&] { return stopping_ || !queue_.empty(); });
@@ -155,17 +163,16 @@ void RenderQueue::work(std::size_t index) {
       const auto now = Clock::now();
       job->queue_wait_ms = ms_between(job->submitted_, now);
       if (now >= job->deadline) {
-        job->state_ = RenderJob::State::expired;
+        job->state_ = Job::State::expired;
         job_finished_.notify_all();
         continue;
       }
-      job->state_ = RenderJob::State::running;
+      job->state_ = Job::State::running;
       ++in_flight_;
     }
-    std::optional<renderer::RenderResult> result;
     std::exception_ptr error;
     try {
-      result = render(*renderer, job->request);
+      run(*job, *bench);
     } catch (...) {
       error = std::current_exception();
     }
@@ -174,9 +181,8 @@ void RenderQueue::work(std::size_t index) {
       std::lock_guard lock(mutex_);
       scene_caches_[index] = {cache.scenes, cache.bytes};
       --in_flight_;
-      job->result = std::move(result);
       job->error = error;
-      job->state_ = RenderJob::State::done;
+      job->state_ = Job::State::done;
     }
     job_finished_.notify_all();
   }

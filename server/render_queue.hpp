@@ -7,6 +7,7 @@
 #pragma once
 
 #include "api/render_request.hpp"
+#include "renderer/accuracy/workbench.hpp"
 #include "renderer/renderer.hpp"
 #include "renderer/vulkan/device.hpp"
 #include "server/metrics.hpp"
@@ -32,24 +33,43 @@ using Clock = std::chrono::steady_clock;
 
 class RenderQueue;
 
-class RenderJob {
+// Work for a render worker: a render, a compare or a sweep. The HTTP thread that submitted it
+// waits for it (RenderQueue::wait) and reads its result once it is done.
+class Job {
  public:
-  RenderJob(api::RenderRequest request, Clock::time_point deadline)
-      : request(std::move(request)), deadline(deadline) {}
+  Job(std::string scene, Clock::time_point deadline) : scene(std::move(scene)), deadline(deadline) {}
+  virtual ~Job() = default;
 
-  const api::RenderRequest request;
+  const std::string scene;  // the scene it renders
+  // A job still queued at its deadline never runs; a running one finishes (or, a sweep, stops
+  // between rows).
   const Clock::time_point deadline;
 
-  // Valid once RenderQueue::wait returned Outcome::done: one of the two is set.
-  std::optional<renderer::RenderResult> result;
+  // Valid once RenderQueue::wait returned Outcome::done: error is set or the job's result is.
   std::exception_ptr error;
   double queue_wait_ms = 0.0;  // from submission to a worker taking it (or dropping it)
 
- private:
+ protected:
   friend class RenderQueue;
+  // On the worker thread, with its renderer and references; throws what it cannot do.
+  virtual void run(accuracy::Workbench& bench) = 0;
+
+ private:
   enum class State { queued, running, done, expired, withdrawn };
   State state_ = State::queued;
   Clock::time_point submitted_;
+};
+
+class RenderJob : public Job {
+ public:
+  RenderJob(api::RenderRequest request, Clock::time_point deadline)
+      : Job(request.scene, deadline), request(std::move(request)) {}
+
+  const api::RenderRequest request;
+  std::optional<renderer::RenderResult> result;
+
+ protected:
+  void run(accuracy::Workbench& bench) override { result = bench.renderer.render(request); }
 };
 
 class RenderQueue {
@@ -70,13 +90,15 @@ class RenderQueue {
   RenderQueue& operator=(const RenderQueue&) = delete;
 
   enum class Admission { accepted, full, stopping };
-  Admission submit(const std::shared_ptr<RenderJob>& job);
+  Admission submit(const std::shared_ptr<Job>& job);
 
   enum class Outcome { done, deadline_exceeded, client_gone };
   // Blocks until the job is done, its deadline passes or `client_gone` (polled every
   // 50 ms) says nobody waits for it. In the last two cases a queued job is removed; a
   // running one finishes on its worker and its result is dropped.
-  Outcome wait(RenderJob& job, const std::function<bool()>& client_gone);
+  Outcome wait(Job& job, const std::function<bool()>& client_gone);
+  // The same, giving up at `until`: empty then, the job still queued or running.
+  std::optional<Outcome> wait_until(Job& job, const std::function<bool()>& client_gone, Clock::time_point until);
 
   // Every worker has its device warm, the queue has room and no shutdown has begun.
   bool ready() const;
@@ -89,8 +111,8 @@ class RenderQueue {
 
  private:
   void work(std::size_t index);
-  void withdraw(RenderJob& job);  // with mutex_ held
-  renderer::RenderResult render(renderer::Renderer& renderer, const api::RenderRequest& request) const;
+  void withdraw(Job& job);  // with mutex_ held
+  void run(Job& job, accuracy::Workbench& bench) const;
 
   const Config config_;
   const SceneStore& scenes_;
@@ -98,7 +120,7 @@ class RenderQueue {
   mutable std::mutex mutex_;
   std::condition_variable work_available_;
   std::condition_variable job_finished_;
-  std::deque<std::shared_ptr<RenderJob>> queue_;
+  std::deque<std::shared_ptr<Job>> queue_;
   std::size_t in_flight_ = 0;
   std::size_t ready_workers_ = 0;
   bool stopping_ = false;

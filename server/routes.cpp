@@ -4,6 +4,7 @@
 #include "api/request_json.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "server/access.hpp"
+#include "server/accuracy_routes.hpp"
 #include "server/client_connection.hpp"
 #include "server/http_errors.hpp"
 #include "server/request_log.hpp"
@@ -37,24 +38,12 @@ constexpr std::array kRoutes = {
     Route{"/v1/scenes/([^/]+)", "/v1/scenes/{id}", "GET, DELETE"},
     Route{"/v1/device", "/v1/device", "GET"},
     Route{"/v1/render", "/v1/render", "POST"},
+    Route{"/v1/compare", "/v1/compare", "POST"},
+    Route{"/v1/sweep", "/v1/sweep", "POST"},
 };
 
 // The longest a scene's name may be; it is only ever shown.
 constexpr std::size_t kMaxSceneNameBytes = 200;
-
-// Retry-After for 503s: a render takes tens of milliseconds, so a second is ample.
-constexpr const char* kRetryAfterSeconds = "1";
-
-void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200) {
-  response.status = status;
-  response.set_content(body.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace) + "\n",
-                       "application/json");
-}
-
-void send_unavailable(httplib::Response& response, const std::string& code, const std::string& message) {
-  send_error(response, {503, code, message, ""});
-  response.set_header("Retry-After", kRetryAfterSeconds);
-}
 
 // httplib percent-decodes the path, which then need not be UTF-8, and JSON must be: the log
 // line percent-encodes every byte outside printable ASCII again.
@@ -79,55 +68,6 @@ std::string known_method(const std::string& method) {
   return "other";
 }
 
-// X-Deadline-Ms lets a client ask for a shorter deadline than the server's.
-std::chrono::milliseconds deadline_for(const httplib::Request& request, const ServerOptions& options) {
-  if (!request.has_header("X-Deadline-Ms")) return options.deadline;
-  const std::string text = request.get_header_value("X-Deadline-Ms");
-  long long ms = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), ms);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size() || ms < 1)
-    throw api::RequestError("X-Deadline-Ms", "must be a whole number of milliseconds >= 1, got '" + text + "'");
-  return std::min(options.deadline, std::chrono::milliseconds(ms));
-}
-
-// Checked before queueing, so an unknown scene never takes a queue slot.
-bool is_builtin_scene(const std::string& name) {
-  for (const auto& info : scene::builtin_scenes())
-    if (info.name == name) return true;
-  return false;
-}
-
-bool wants_json(const httplib::Request& request) {
-  return request.get_header_value("Accept").find("application/json") != std::string::npos;
-}
-
-// Reads the body ourselves, up to `limit` bytes: httplib's payload limit is the largest of
-// all routes' (largest_body_bytes: scene uploads) and covers Content-Length but not a
-// chunked body. A body over `limit` is still read to its end, as httplib does past its own
-// limit, so the 413 comes after it and the connection stays usable; but a chunked one only
-// up to httplib's limit. Empty after answering 413, or 400 for a body that ended early (the
-// client went away).
-std::optional<std::string> read_body(const httplib::Request& request, httplib::Response& response,
-                                     const httplib::ContentReader& content, const ServerOptions& options,
-                                     std::size_t limit, const char* flag) {
-  std::string body;
-  std::size_t received = 0;
-  const bool complete = content([&](const char* data, std::size_t length) {
-    received += length;
-    if (received <= limit) body.append(data, length);
-    return received <= largest_body_bytes(options);
-  });
-  if (received > limit || response.status == 413) {
-    send_error(response, payload_too_large(limit, flag));
-    return std::nullopt;
-  }
-  if (!complete) {
-    send_error(response, error_for_status(400, request));
-    return std::nullopt;
-  }
-  return body;
-}
-
 void handle_render(const httplib::Request& request, httplib::Response& response,
                    const httplib::ContentReader& content, Service& service) {
   const std::optional<std::string> body =
@@ -138,70 +78,20 @@ void handle_render(const httplib::Request& request, httplib::Response& response,
   std::chrono::milliseconds deadline{};
   try {
     render_request = api::parse_render_request(*body);
-    deadline = deadline_for(request, service.options);
+    deadline = deadline_for(request, service.options.deadline);
   } catch (const api::RequestError& e) {
-    send_error(response, parse_error(e));
-    return;
+    return send_error(response, parse_error(e));
   }
-  if (!is_builtin_scene(render_request.scene) && !service.scenes.contains(render_request.scene)) {
-    send_error(response, unknown_scene(render_request.scene));
-    return;
-  }
+  if (!scene_exists(render_request.scene, service)) return send_error(response, unknown_scene(render_request.scene));
   try {
     check_limits(render_request, service.options.limits);
   } catch (const LimitExceeded& e) {
-    send_error(response, limit_error(e));
-    return;
+    return send_error(response, limit_error(e));
   }
 
-  const auto arrival = Clock::now() - std::chrono::duration_cast<Clock::duration>(
-                                          std::chrono::duration<double, std::milli>(request_elapsed_ms().value_or(0.0)));
   const api::ImageFormat format = render_request.output.format;
-  auto job = std::make_shared<RenderJob>(std::move(render_request), arrival + deadline);
-  switch (service.queue.submit(job)) {
-    case RenderQueue::Admission::accepted: break;
-    case RenderQueue::Admission::full:
-      service.metrics.count_render("queue_full");
-      send_unavailable(response, "queue_full", "the render queue is full; retry shortly");
-      return;
-    case RenderQueue::Admission::stopping:
-      send_unavailable(response, "shutting_down", "the server is shutting down");
-      return;
-  }
-
-  const ClientConnection client(request);
-  const RenderQueue::Outcome outcome = service.queue.wait(*job, [&] { return client.closed(); });
-  note_queue_wait_ms(job->queue_wait_ms);
-  service.metrics.observe_queue_wait(job->queue_wait_ms / 1000.0);
-  if (outcome == RenderQueue::Outcome::client_gone) {
-    service.metrics.count_render("client_gone");
-    // Nobody reads this; the status is for the log and the metrics (as nginx's 499).
-    send_error(response, {499, "client_closed_request", "the client closed the connection", ""});
-    return;
-  }
-  if (outcome == RenderQueue::Outcome::deadline_exceeded) {
-    service.metrics.count_render("deadline_exceeded");
-    send_error(response, {504, "deadline_exceeded",
-                          "no image within the deadline of " + std::to_string(deadline.count()) + " ms", ""});
-    return;
-  }
-  if (job->error) {
-    try {
-      std::rethrow_exception(job->error);
-    } catch (const api::RequestError& e) {
-      service.metrics.count_render("rejected");
-      send_error(response, render_error(e));
-    } catch (const scene::LoadError& e) {
-      // A stored scene over limits lowered since it was uploaded.
-      service.metrics.count_render("rejected");
-      send_error(response, load_error(e));
-    } catch (const std::exception& e) {
-      service.metrics.count_render("failed");
-      send_error(response, {500, "render_failed", e.what(), ""});
-    }
-    return;
-  }
-  service.metrics.count_render("ok");
+  auto job = std::make_shared<RenderJob>(std::move(render_request), request_arrival() + deadline);
+  if (!run_job(job, deadline, request, response, service)) return;
   if (job->request.dry_run)  // the plan alone: what would run, nothing rendered (nor timed)
     return send_json(response, {{"stats", api::to_json(job->result->stats)}, {"queue_ms", job->queue_wait_ms}});
   for (const auto& pass : job->result->stats.passes)
@@ -381,6 +271,14 @@ void install_routes(httplib::Server& http, Service& service) {
   http.Post("/v1/render", [&service](const httplib::Request& request, httplib::Response& response,
                                      const httplib::ContentReader& content) {
     handle_render(request, response, content, service);
+  });
+  http.Post("/v1/compare", [&service](const httplib::Request& request, httplib::Response& response,
+                                      const httplib::ContentReader& content) {
+    handle_compare(request, response, content, service);
+  });
+  http.Post("/v1/sweep", [&service](const httplib::Request& request, httplib::Response& response,
+                                    const httplib::ContentReader& content) {
+    handle_sweep(request, response, content, service);
   });
   for (const Route& route : kRoutes) install_method_not_allowed(http, route);
 

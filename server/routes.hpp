@@ -2,23 +2,13 @@
 // authentication, JSON bodies for httplib's own errors, the request log and metrics.
 #pragma once
 
-#include "server/metrics.hpp"
-#include "server/render_queue.hpp"
-#include "server/scene_store.hpp"
-#include "server/server_options.hpp"
+#include "server/route_support.hpp"
 
 #include <httplib.h>
 
 #include <string>
 
 namespace server {
-
-struct Service {
-  const ServerOptions& options;
-  RenderQueue& queue;
-  Metrics& metrics;
-  SceneStore& scenes;
-};
 
 // Installs every handler on `http`; `service` must outlive it.
 void install_routes(httplib::Server& http, Service& service);

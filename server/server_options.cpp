@@ -56,6 +56,12 @@ const std::vector<Setting>& settings() {
       {"--queue", true, [](ServerOptions& o, S s, S v) { o.queue_capacity = parse_count(s, v, 1, 10000); }},
       {"--deadline-ms", true,
        [](ServerOptions& o, S s, S v) { o.deadline = std::chrono::milliseconds(parse_count(s, v, 1, 3600000)); }},
+      {"--accuracy-deadline-ms", true,
+       [](ServerOptions& o, S s, S v) {
+         o.accuracy_deadline = std::chrono::milliseconds(parse_count(s, v, 1, 24 * 3600000));
+       }},
+      {"--max-reference-paths", true,
+       [](ServerOptions& o, S s, S v) { o.limits.max_reference_paths = parse_count(s, v, 1, 1ull << 40); }},
       {"--max-body-bytes", true,
        [](ServerOptions& o, S s, S v) { o.max_body_bytes = parse_count(s, v, 64, 64u << 20); }},
       {"--max-scene-bytes", true,
@@ -108,6 +114,9 @@ options (each also read from the environment variable in brackets; a flag wins):
   --workers N            render workers, each with its own device (1) [LPV_SERVER_WORKERS]
   --queue N              renders that may wait for a worker; more get 503 (8) [LPV_SERVER_QUEUE]
   --deadline-ms N        time from arrival to image before 504 (30000) [LPV_SERVER_DEADLINE_MS]
+  --accuracy-deadline-ms N  time from arrival to the answer of a compare or a sweep
+                         before 504; a sweep past it ends early (600000)
+                         [LPV_SERVER_ACCURACY_DEADLINE_MS]
   --max-body-bytes N     request body size before 413, scene uploads aside (262144)
                          [LPV_SERVER_MAX_BODY_BYTES]
   --max-scene-bytes N    scene upload size before 413 (67108864) [LPV_SERVER_MAX_SCENE_BYTES]
@@ -119,6 +128,8 @@ options (each also read from the environment variable in brackets; a flag wins):
   --max-grid-cells N     lpv.grid x*y*z*cascades before 422 (2097152) [LPV_SERVER_MAX_GRID_CELLS]
   --max-iterations N     lpv.iterations before 422 (64) [LPV_SERVER_MAX_ITERATIONS]
   --max-repeat N         repeat before 422 (100) [LPV_SERVER_MAX_REPEAT]
+  --max-reference-paths N  reference samples x pixels of a compare or sweep before 422
+                         (67108864) [LPV_SERVER_MAX_REFERENCE_PATHS]
   -h, --help             this text
 
 Vulkan: LPV_DEVICE, LPV_VALIDATION, LPV_PIPELINE_CACHE as for lpv-render.

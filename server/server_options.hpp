@@ -28,6 +28,7 @@ struct ServerOptions {
   std::size_t render_workers = 1;  // each owns its own device and renderer
   std::size_t queue_capacity = 8;  // renders waiting for a worker; more are answered 503
   std::chrono::milliseconds deadline{30000};  // from arrival to the rendered image
+  std::chrono::milliseconds accuracy_deadline{600000};  // from arrival to a compare's or sweep's answer
   std::size_t max_body_bytes = 256 * 1024;         // every request but scene uploads
   std::size_t max_scene_bytes = 64 * 1024 * 1024;  // POST /v1/scenes
   scene::LoadLimits scene_limits;                  // what one uploaded scene may hold

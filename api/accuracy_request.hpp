@@ -1,0 +1,84 @@
+// The requests that measure accuracy (docs/accuracy.md): compare one render with another
+// or with the ground-truth reference, and sweep LPV settings against the reference.
+// Plain data with defaults; parsing and validation live in accuracy_json.cpp.
+#pragma once
+
+#include "api/render_request.hpp"
+#include "api/sweep_table.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace api {
+
+// The ground truth: Monte Carlo path tracing of the same scene, camera, lights and output
+// size, direct light plus `bounces` diffuse bounces (1 is what LPV approximates).
+struct ReferenceSettings {
+  std::uint32_t samples = 256;  // paths per pixel
+  std::uint32_t bounces = 1;
+  std::uint64_t seed = 1;       // the same seed gives the same image, bit for bit
+};
+
+// The pixels the metrics count: every pixel, those that see a surface, or those that see a
+// surface away from silhouette and crease edges (where a rasteriser and a ray tracer differ
+// by their sampling, not by their light).
+enum class MetricMask { all, surfaces, interior };
+
+struct CompareRequest {
+  RenderRequest base;
+  // Exactly one of the two: another render ("against": the base with these fields changed,
+  // as a JSON merge patch) or the reference.
+  std::optional<RenderRequest> other;
+  std::optional<ReferenceSettings> reference;
+  MetricMask mask = MetricMask::surfaces;
+  float heatmap_scale = 0.0f;  // the difference at the top of the heat map's colour scale; 0: automatic
+};
+
+// The values each LPV setting takes; an empty list keeps the base request's value.
+struct SweepParameters {
+  std::vector<glm::uvec3> grid;
+  std::vector<std::uint32_t> iterations;
+  std::vector<std::uint32_t> cascades;
+  std::vector<std::uint32_t> rsm;
+  std::vector<std::uint32_t> vpl_downsample;
+  std::vector<std::uint32_t> bounces;
+  std::vector<bool> occlusion;
+};
+
+struct SweepRequest {
+  // Scene, camera, lights, output size and every setting the sweep does not vary. Its plan
+  // is "exact" unless it says otherwise: a sweep measures the settings it names.
+  RenderRequest base;
+  SweepParameters parameters;
+  bool lpv_off_row = true;  // a row without LPV (direct light only): the error LPV starts from
+  ReferenceSettings reference;
+  ParetoAxis axis;
+  MetricMask mask = MetricMask::surfaces;
+};
+
+namespace limits {
+inline constexpr std::uint32_t max_reference_samples = 1u << 16;
+inline constexpr std::uint32_t max_reference_bounces = 8;
+inline constexpr std::size_t max_sweep_values = 16;           // per parameter
+inline constexpr std::size_t max_sweep_configurations = 512;  // rows of one sweep
+}  // namespace limits
+
+std::string to_string(MetricMask m);
+
+// Throw RequestError naming the field.
+CompareRequest parse_compare_request(std::string_view json_text);
+SweepRequest parse_sweep_request(std::string_view json_text);
+
+// Every combination of the parameters (the first parameter varies slowest: grid, iterations,
+// cascades, rsm, vpl_downsample, bounces, occlusion), after the LPV-off row when asked for.
+std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep);
+// The base request with one configuration's settings.
+RenderRequest request_for(const RenderRequest& base, const SweepSettings& settings);
+
+nlohmann::json to_json(const ReferenceSettings& reference);
+
+}  // namespace api

@@ -1,0 +1,192 @@
+#include "server/accuracy_routes.hpp"
+
+#include "api/accuracy_report.hpp"
+#include "api/request_error.hpp"
+#include "api/request_json.hpp"
+#include "api/sweep_table.hpp"
+#include "renderer/image/png.hpp"
+#include "server/accuracy_jobs.hpp"
+#include "server/base64.hpp"
+#include "server/http_errors.hpp"
+#include "server/request_log.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <memory>
+
+namespace server {
+namespace {
+
+// How often a streamed sweep checks on its client while nothing happens.
+constexpr auto kStreamPoll = std::chrono::milliseconds(250);
+
+std::string png_base64(const image::Rgba8Image& picture) { return base64_encode(image::encode_png(picture)); }
+
+nlohmann::json side_json(const accuracy::CompareSide& side) {
+  nlohmann::json j = {{"label", side.label}, {"image", png_base64(side.display)}};
+  if (side.stats) j["stats"] = api::to_json(*side.stats);
+  if (side.reference) j["reference"] = api::to_json(*side.reference);
+  return j;
+}
+
+nlohmann::json comparison_json(const accuracy::Comparison& c, double queue_ms) {
+  return {{"mask", api::to_string(c.mask)},
+          {"metrics", {{"final", api::to_json(c.final_error)}, {"indirect", api::to_json(c.indirect_error)}}},
+          {"base", side_json(c.base)},
+          {"other", side_json(c.other)},
+          {"difference",
+           {{"image", png_base64(c.difference.image)},
+            {"scale", c.difference.scale},
+            {"quantity", "|luminance(base) - luminance(other)| of the final images, linear; the top of the colour "
+                         "scale is `scale`"}}},
+          {"queue_ms", queue_ms}};
+}
+
+nlohmann::json sweep_json(const accuracy::SweepResult& result) {
+  return {{"complete", result.complete}, {"reference", api::to_json(result.reference)}, {"table", api::to_json(result.table)}};
+}
+
+HttpError unknown_base_scene(const std::string& name) {
+  HttpError error = unknown_scene(name);
+  error.field = "base.scene";
+  return error;
+}
+
+enum class SweepFormat { json, csv, svg, ndjson };
+
+SweepFormat sweep_format(const httplib::Request& request) {
+  const std::string format = request.get_param_value("format");
+  if (format.empty())
+    return request.get_header_value("Accept").find("application/x-ndjson") != std::string::npos ? SweepFormat::ndjson
+                                                                                                 : SweepFormat::json;
+  if (format == "json") return SweepFormat::json;
+  if (format == "csv") return SweepFormat::csv;
+  if (format == "svg") return SweepFormat::svg;
+  if (format == "ndjson") return SweepFormat::ndjson;
+  throw api::RequestError("format", "must be one of \"json\", \"csv\", \"svg\", \"ndjson\", got '" + format + "'");
+}
+
+void send_sweep(httplib::Response& response, const SweepJob& job, SweepFormat format) {
+  const accuracy::SweepResult& result = *job.result;
+  switch (format) {
+    case SweepFormat::csv: return response.set_content(api::to_csv(result.table), "text/csv");
+    case SweepFormat::svg:
+      return response.set_content(api::to_svg_plot(result.table, "LPV error against GPU time: " + job.request.base.scene),
+                                  "image/svg+xml");
+    default: return send_json(response, sweep_json(result));
+  }
+}
+
+// The error a failed job would have answered, as the last event of a stream (its status is
+// already sent: 200).
+nlohmann::json error_event(const Job& job, Service& service) {
+  httplib::Response scratch;
+  answer_job_error(job, scratch, service);
+  nlohmann::json body = nlohmann::json::parse(scratch.body, nullptr, false);
+  return {{"event", "error"}, {"status", scratch.status}, {"error", body.is_object() ? body["error"] : body}};
+}
+
+// Streams the sweep's events while it runs: the HTTP thread stays in the content provider
+// until the sweep ends (its last event says how) or the client leaves (the sweep stops at
+// its next row).
+void stream_sweep(const std::shared_ptr<SweepJob>& job, httplib::Response& response, Service& service) {
+  response.set_chunked_content_provider(
+      "application/x-ndjson", [job, &service](std::size_t, httplib::DataSink& sink) {
+        const auto write = [&sink](const nlohmann::json& event) {
+          const std::string line = event.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace) + "\n";
+          return sink.write(line.data(), line.size());
+        };
+        const auto write_pending = [&] {
+          while (std::optional<nlohmann::json> event = job->events.next(std::chrono::milliseconds(0)))
+            if (!write(*event)) return false;
+          return true;
+        };
+        const auto client_gone = [&sink] { return !sink.is_writable(); };
+        std::optional<RenderQueue::Outcome> outcome;
+        while (!outcome) {
+          if (!write_pending()) break;
+          outcome = service.queue.wait_until(*job, client_gone, Clock::now() + kStreamPoll);
+        }
+        if (!outcome || *outcome == RenderQueue::Outcome::client_gone || !write_pending()) {
+          job->stop = true;
+          service.metrics.count_render("client_gone");
+          return false;
+        }
+        if (*outcome == RenderQueue::Outcome::deadline_exceeded) {
+          service.metrics.count_render("deadline_exceeded");
+          write({{"event", "error"},
+                 {"status", 504},
+                 {"error", {{"code", "deadline_exceeded"}, {"message", "the sweep did not finish within its deadline"}}}});
+        } else if (job->error) {
+          write(error_event(*job, service));
+        } else {
+          service.metrics.count_render("ok");
+          nlohmann::json done = sweep_json(*job->result);
+          done["event"] = "done";
+          write(done);
+        }
+        sink.done();
+        return true;
+      });
+}
+
+}  // namespace
+
+void handle_compare(const httplib::Request& request, httplib::Response& response,
+                    const httplib::ContentReader& content, Service& service) {
+  const std::optional<std::string> body =
+      read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
+  if (!body) return;
+  api::CompareRequest compare;
+  std::chrono::milliseconds deadline{};
+  try {
+    compare = api::parse_compare_request(*body);
+    deadline = deadline_for(request, service.options.accuracy_deadline);
+  } catch (const api::RequestError& e) {
+    return send_error(response, parse_error(e));
+  }
+  if (!scene_exists(compare.base.scene, service)) return send_error(response, unknown_base_scene(compare.base.scene));
+  try {
+    check_limits(compare, service.options.limits);
+  } catch (const LimitExceeded& e) {
+    return send_error(response, limit_error(e));
+  }
+  auto job = std::make_shared<CompareJob>(std::move(compare), request_arrival() + deadline);
+  if (!run_job(job, deadline, request, response, service)) return;
+  send_json(response, comparison_json(*job->result, job->queue_wait_ms));
+}
+
+void handle_sweep(const httplib::Request& request, httplib::Response& response, const httplib::ContentReader& content,
+                  Service& service) {
+  const std::optional<std::string> body =
+      read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
+  if (!body) return;
+  api::SweepRequest sweep;
+  std::chrono::milliseconds deadline{};
+  SweepFormat format{};
+  try {
+    format = sweep_format(request);
+    sweep = api::parse_sweep_request(*body);
+    deadline = deadline_for(request, service.options.accuracy_deadline);
+  } catch (const api::RequestError& e) {
+    return send_error(response, parse_error(e));
+  }
+  if (!scene_exists(sweep.base.scene, service)) return send_error(response, unknown_base_scene(sweep.base.scene));
+  try {
+    check_limits(sweep, service.options.limits);
+  } catch (const LimitExceeded& e) {
+    return send_error(response, limit_error(e));
+  }
+  auto job = std::make_shared<SweepJob>(std::move(sweep), request_arrival() + deadline);
+  if (format == SweepFormat::ndjson) {
+    if (admit_job(job, response, service)) stream_sweep(job, response, service);
+    return;
+  }
+  if (!run_job(job, deadline, request, response, service)) {
+    job->stop = true;  // nobody reads it any more: end it at the next row
+    return;
+  }
+  send_sweep(response, *job, format);
+}
+
+}  // namespace server

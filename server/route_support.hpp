@@ -1,0 +1,59 @@
+// What the HTTP handlers of renders, compares and sweeps share: reading bodies within their
+// limit, deadlines, and running a job through the render queue with every outcome answered.
+#pragma once
+
+#include "server/metrics.hpp"
+#include "server/render_queue.hpp"
+#include "server/scene_store.hpp"
+#include "server/server_options.hpp"
+
+#include <httplib.h>
+#include <nlohmann/json_fwd.hpp>
+
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace server {
+
+struct Service {
+  const ServerOptions& options;
+  RenderQueue& queue;
+  Metrics& metrics;
+  SceneStore& scenes;
+};
+
+void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200);
+// 503 with Retry-After.
+void send_unavailable(httplib::Response& response, const std::string& code, const std::string& message);
+
+// Reads the body ourselves, up to `limit` bytes (`flag` sets it). Empty after answering 413,
+// or 400 for a body that ended early (the client went away).
+std::optional<std::string> read_body(const httplib::Request& request, httplib::Response& response,
+                                     const httplib::ContentReader& content, const ServerOptions& options,
+                                     std::size_t limit, const char* flag);
+
+// The server's deadline for this kind of work, shortened by the client's X-Deadline-Ms;
+// throws api::RequestError for a malformed header.
+std::chrono::milliseconds deadline_for(const httplib::Request& request, std::chrono::milliseconds server_deadline);
+// When this thread's request arrived (deadlines count from there).
+Clock::time_point request_arrival();
+
+bool wants_json(const httplib::Request& request);
+// Built in or uploaded: checked before queueing, so an unknown scene never takes a queue slot.
+bool scene_exists(const std::string& name, const Service& service);
+
+// Submits `job`; answers 503 itself (queue full, shutting down) and returns false then.
+bool admit_job(const std::shared_ptr<Job>& job, httplib::Response& response, Service& service);
+// When the finished `job` failed: answers with its error's status and returns true.
+bool answer_job_error(const Job& job, httplib::Response& response, Service& service);
+
+// Submits `job` and waits for it on behalf of `request`. Answers itself when the queue is
+// full or stopping (503), the client left (499), the deadline passed (504) or the job failed
+// (its error's status); true when the job is done and the caller answers with its result.
+bool run_job(const std::shared_ptr<Job>& job, std::chrono::milliseconds deadline, const httplib::Request& request,
+             httplib::Response& response, Service& service);
+
+}  // namespace server

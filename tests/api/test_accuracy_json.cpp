@@ -1,0 +1,117 @@
+// Compare and sweep requests: defaults, the fields they embed checked by the render request's
+// rules (errors name the path under "base" or "against"), and the sweep's expansion.
+#include "api/accuracy_request.hpp"
+#include "api/request_error.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace {
+
+std::string field_of_compare_error(const std::string& json) {
+  try {
+    api::parse_compare_request(json);
+  } catch (const api::RequestError& e) {
+    return e.field();
+  }
+  return "(accepted)";
+}
+
+std::string field_of_sweep_error(const std::string& json) {
+  try {
+    api::parse_sweep_request(json);
+  } catch (const api::RequestError& e) {
+    return e.field();
+  }
+  return "(accepted)";
+}
+
+TEST(CompareRequest, ReferenceWithDefaults) {
+  const api::CompareRequest c = api::parse_compare_request(R"({"base": {"scene": "cornell-box"}, "reference": {}})");
+  ASSERT_TRUE(c.reference);
+  EXPECT_FALSE(c.other);
+  EXPECT_EQ(c.reference->samples, 256u);
+  EXPECT_EQ(c.reference->bounces, 1u);
+  EXPECT_EQ(c.mask, api::MetricMask::surfaces);
+  EXPECT_EQ(c.heatmap_scale, 0.0f);
+}
+
+TEST(CompareRequest, AgainstIsAMergePatchOfTheBase) {
+  const api::CompareRequest c = api::parse_compare_request(
+      R"({"base": {"output": {"width": 64, "height": 48}, "lpv": {"grid": 16, "iterations": 4}},
+          "against": {"lpv": {"grid": 32}}, "mask": "interior"})");
+  ASSERT_TRUE(c.other);
+  EXPECT_EQ(c.base.lpv.grid.x, 16u);
+  EXPECT_EQ(c.other->lpv.grid.x, 32u);
+  EXPECT_EQ(c.other->lpv.iterations, 4u);  // kept from the base
+  EXPECT_EQ(c.other->output.width, 64u);
+  EXPECT_EQ(c.mask, api::MetricMask::interior);
+}
+
+TEST(CompareRequest, ErrorsNameTheirField) {
+  EXPECT_EQ(field_of_compare_error(R"({"reference": {}})"), "base");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}})"), "");  // neither against nor reference
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "against": {}, "reference": {}})"), "reference");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {"lpv": {"grid": 0}}, "reference": {}})"), "base.lpv.grid");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "against": {"lpv": {"grid": 999}}})"), "against.lpv.grid");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "against": 3})"), "against");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "against": {"output": {"width": 64}}})"), "against.output");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "reference": {"samples": 0}})"), "reference.samples");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "reference": {"bounces": 9}})"), "reference.bounces");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "reference": {}, "mask": "edges"})"), "mask");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "reference": {}, "heatmap_scale": -1})"), "heatmap_scale");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "reference": {}, "colour": 1})"), "colour");
+}
+
+TEST(SweepRequest, ExpandsEveryCombinationAfterTheLpvOffRow) {
+  const api::SweepRequest s = api::parse_sweep_request(
+      R"({"base": {"lpv": {"rsm": 128}}, "parameters": {"grid": [8, 16], "iterations": [2, 4, 8], "occlusion": [true, false]}})");
+  EXPECT_EQ(s.base.plan, api::PlanMode::exact);  // a sweep measures what it names
+  const auto rows = api::sweep_configurations(s);
+  ASSERT_EQ(rows.size(), 1u + 2u * 3u * 2u);
+  EXPECT_FALSE(rows[0].lpv);
+  EXPECT_TRUE(rows[1].lpv);
+  EXPECT_EQ(rows[1].grid[0], 8u);
+  EXPECT_EQ(rows[1].iterations, 2u);
+  EXPECT_TRUE(rows[1].occlusion);
+  EXPECT_FALSE(rows[2].occlusion);  // the last parameter varies fastest
+  EXPECT_EQ(rows[3].iterations, 4u);
+  EXPECT_EQ(rows.back().grid[0], 16u);
+  EXPECT_EQ(rows.back().iterations, 8u);
+  for (const auto& row : rows) EXPECT_EQ(row.rsm, 128u);  // not varied: the base's
+
+  const api::RenderRequest r = api::request_for(s.base, rows.back());
+  EXPECT_TRUE(r.lpv.enabled);
+  EXPECT_EQ(r.lpv.grid.y, 16u);
+  EXPECT_EQ(r.lpv.iterations, 8u);
+  EXPECT_FALSE(r.lpv.occlusion);
+  EXPECT_FALSE(api::request_for(s.base, rows[0]).lpv.enabled);
+}
+
+TEST(SweepRequest, KeepsAPlanTheBaseAsksFor) {
+  EXPECT_EQ(api::parse_sweep_request(R"({"base": {"plan": "auto"}})").base.plan, api::PlanMode::auto_);
+  const auto rows = api::sweep_configurations(api::parse_sweep_request(R"({"base": {}, "lpv_off_row": false})"));
+  ASSERT_EQ(rows.size(), 1u);  // no parameters: the base alone
+  EXPECT_TRUE(rows[0].lpv);
+}
+
+TEST(SweepRequest, ErrorsNameTheirField) {
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"grid": []}})"), "parameters.grid");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"grid": [8, 0]}})"), "parameters.grid[1]");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"vpl_downsample": [3]}})"),
+            "parameters.vpl_downsample[0]");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"rsm": [4], "vpl_downsample": [8]}})"),
+            "parameters.vpl_downsample");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"occlusion": [1]}})"), "parameters.occlusion[0]");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"speed": [1]}})"), "parameters.speed");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "axis": {"metric": "psnr"}})"), "axis.metric");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {"output": {"width": 0}}})"), "base.output.width");
+  // 16 x 16 x 4 = 1024 combinations: over the limit, refused before any is made.
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {
+      "iterations": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16],
+      "grid": [1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16], "cascades": [1,2,3,4]}})"),
+            "parameters");
+}
+
+}  // namespace

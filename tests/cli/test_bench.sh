@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# lpv-bench as a user runs it: the files of a sweep and of a diff, exit codes and messages.
+#   test_bench.sh LPV_BENCH
+set -u
+bin="$(realpath "$1")"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+passed=0
+
+check() {  # check NAME CONDITION...
+  local name="$1"; shift
+  if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failures=$((failures + 1)); fi
+}
+# Runs lpv-bench, keeping its exit status in $rc, standard output in out.txt, error in err.txt.
+run() { "$bin" "$@" >out.txt 2>err.txt; rc=$?; }
+u32be() { od -An -tu1 -j"$2" -N4 "$1" | awk '{print $1*16777216 + $2*65536 + $3*256 + $4}'; }
+
+cat >sweep.json <<'JSON'
+{"base": {"output": {"width": 48, "height": 32}}, "parameters": {"grid": [8, 16], "occlusion": [true, false]},
+ "reference": {"samples": 8}}
+JSON
+run sweep sweep.json -o result
+check "sweep exits 0" test "$rc" -eq 0
+for f in sweep.json sweep.csv sweep.md sweep.svg; do check "sweep writes $f" test -s "result/$f"; done
+check "CSV: header and 5 rows" test "$(wc -l <result/sweep.csv)" -eq 6
+check "Markdown: 5 table rows" test "$(grep -c '^| o' result/sweep.md)" -eq 5
+check "Markdown on standard output" grep -q "Pareto" out.txt
+check "SVG document" grep -q "</svg>" result/sweep.svg
+check "JSON names the reference's samples" grep -q '"samples": 8' result/sweep.json
+check "progress on standard error" grep -q "sweep" err.txt
+
+cat >diff.json <<'JSON'
+{"base": {"output": {"width": 40, "height": 24}, "lpv": {"grid": 8}}, "against": {"lpv": {"grid": 16}}}
+JSON
+run diff diff.json -o d -q
+check "diff exits 0" test "$rc" -eq 0
+for f in base.png other.png difference.png base.exr other.exr compare.json; do check "diff writes $f" test -s "d/$f"; done
+check "difference.png is 40 wide" test "$(u32be d/difference.png 16)" -eq 40
+check "difference.png is 24 high" test "$(u32be d/difference.png 20)" -eq 24
+check "compare.json has metrics" grep -q '"rmse"' d/compare.json
+check "quiet prints nothing" test ! -s out.txt
+
+echo '{"base": {}, "parameters": {"grid": [0]}}' >bad.json
+run sweep bad.json -o bad
+check "bad request exits 2" test "$rc" -eq 2
+check "bad request names the field" grep -q "parameters.grid\[0\]" err.txt
+check "nothing written for a bad request" test ! -e bad
+run frobnicate sweep.json
+check "unknown command exits 2" test "$rc" -eq 2
+check "unknown command is named" grep -q "unknown command 'frobnicate'" err.txt
+run sweep missing.json
+check "missing file exits 2" test "$rc" -eq 2
+run --help
+check "help exits 0" test "$rc" -eq 0
+check "help shows usage" grep -q "usage: lpv-bench sweep" out.txt
+
+echo "$passed passed, $failures failed"
+test "$failures" -eq 0

@@ -1,0 +1,154 @@
+// POST /v1/compare and POST /v1/sweep over real HTTP: images that decode, the sweep's four
+// answers (JSON, CSV, SVG, a stream of events), a client that leaves mid-sweep, and the
+// reference's cost limit. The contract test sends the OpenAPI examples besides these.
+#include "http_checks.hpp"
+#include "server_process.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace server_test {
+namespace {
+
+const nlohmann::json kSmallSweep = {{"base", {{"output", {{"width", 48}, {"height", 40}}}}},
+                                    {"parameters", {{"grid", {8, 16}}, {"iterations", {2, 4}}}},
+                                    {"reference", {{"samples", 8}}}};
+
+std::vector<nlohmann::json> lines_of(const std::string& body) {
+  std::vector<nlohmann::json> events;
+  std::istringstream in(body);
+  for (std::string line; std::getline(in, line);) events.push_back(nlohmann::json::parse(line));
+  return events;
+}
+
+TEST(HttpAccuracy, CompareAnswersBothImagesTheHeatMapAndTheMetrics) {
+  auto http = shared_server().client();
+  const nlohmann::json request = {{"base", {{"output", {{"width", 40}, {"height", 32}}}}},
+                                  {"reference", {{"samples", 4}, {"seed", 7}}}};
+  const auto r = http->Post("/v1/compare", request.dump(), "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const auto body = nlohmann::json::parse(r->body);
+  for (const auto& image : {body["base"]["image"], body["other"]["image"], body["difference"]["image"]}) {
+    const auto size = png_size(base64_decode(image.get<std::string>()));
+    ASSERT_TRUE(size);
+    EXPECT_EQ(size->width, 40);
+    EXPECT_EQ(size->height, 32);
+  }
+  EXPECT_EQ(body["other"]["label"], "reference");
+  EXPECT_EQ(body["other"]["reference"]["samples"], 4);
+  EXPECT_EQ(body["other"]["reference"]["seed"], 7);
+  EXPECT_GT(body["metrics"]["final"]["rmse"].get<double>(), 0.0);
+  EXPECT_GT(body["metrics"]["final"]["pixels"].get<int>(), 0);
+  EXPECT_GT(body["difference"]["scale"].get<double>(), 0.0);
+  EXPECT_TRUE(body["base"]["stats"]["passes"].is_array());
+}
+
+TEST(HttpAccuracy, CompareOfIdenticalSettingsHasZeroErrorAndNullPsnr) {
+  auto http = shared_server().client();
+  const nlohmann::json request = {{"base", {{"output", {{"width", 32}, {"height", 32}}}}},
+                                  {"against", nlohmann::json::object()}};
+  const auto r = http->Post("/v1/compare", request.dump(), "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const auto metrics = nlohmann::json::parse(r->body)["metrics"]["final"];
+  EXPECT_EQ(metrics["rmse"], 0.0);
+  EXPECT_TRUE(metrics["psnr_db"].is_null());  // +inf: JSON has no infinity
+  EXPECT_EQ(metrics["ssim"], 1.0);
+}
+
+TEST(HttpAccuracy, SweepAnswersJsonCsvAndSvg) {
+  auto http = shared_server().client();
+  const auto json = http->Post("/v1/sweep", kSmallSweep.dump(), "application/json");
+  ASSERT_TRUE(json);
+  ASSERT_EQ(json->status, 200) << json->body;
+  const auto body = nlohmann::json::parse(json->body);
+  EXPECT_TRUE(body["complete"].get<bool>());
+  ASSERT_EQ(body["table"]["rows"].size(), 5u);  // LPV off, then 2 grids x 2 iteration counts
+  int on_front = 0;
+  for (const auto& row : body["table"]["rows"]) on_front += row["pareto"].get<bool>() ? 1 : 0;
+  EXPECT_GE(on_front, 1);
+
+  const auto csv = http->Post("/v1/sweep?format=csv", kSmallSweep.dump(), "application/json");
+  ASSERT_TRUE(csv);
+  ASSERT_EQ(csv->status, 200) << csv->body;
+  EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
+  EXPECT_EQ(std::count(csv->body.begin(), csv->body.end(), '\n'), 6);  // header + 5 rows
+  EXPECT_EQ(csv->body.rfind("lpv,grid_x,", 0), 0u) << csv->body.substr(0, 80);
+
+  const auto svg = http->Post("/v1/sweep?format=svg", kSmallSweep.dump(), "application/json");
+  ASSERT_TRUE(svg);
+  ASSERT_EQ(svg->status, 200) << svg->body;
+  EXPECT_EQ(svg->get_header_value("Content-Type"), "image/svg+xml");
+  EXPECT_EQ(svg->body.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg->body.find("</svg>"), std::string::npos);
+
+  const auto bad = http->Post("/v1/sweep?format=xml", kSmallSweep.dump(), "application/json");
+  EXPECT_TRUE(is_json_error(bad, 400, "invalid_value", "format"));
+}
+
+TEST(HttpAccuracy, SweepStreamsItsEventsInOrder) {
+  auto http = shared_server().client();
+  const auto r = http->Post("/v1/sweep", {{"Accept", "application/x-ndjson"}}, kSmallSweep.dump(), "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/x-ndjson");
+  const std::vector<nlohmann::json> events = lines_of(r->body);
+  ASSERT_GE(events.size(), 7u);  // reference, 5 rows, done (progress lines besides)
+  std::size_t rows = 0;
+  bool reference_seen = false;
+  for (std::size_t i = 0; i + 1 < events.size(); ++i) {
+    const std::string kind = events[i]["event"];
+    if (kind == "reference_progress") {
+      EXPECT_FALSE(reference_seen);
+      continue;
+    }
+    if (kind == "reference") {
+      reference_seen = true;
+      continue;
+    }
+    ASSERT_EQ(kind, "row") << events[i].dump();
+    EXPECT_TRUE(reference_seen);
+    EXPECT_EQ(events[i]["index"], rows++);
+    EXPECT_EQ(events[i]["total"], 5);
+  }
+  EXPECT_EQ(rows, 5u);
+  EXPECT_EQ(events.back()["event"], "done");
+  EXPECT_EQ(events.back()["table"]["rows"].size(), 5u);
+}
+
+TEST(HttpAccuracy, AClientLeavingASweepLeavesTheServerServing) {
+  {
+    httplib::Client http("127.0.0.1", shared_server().port());
+    http.set_read_timeout(0, 300000);  // gives up 0.3 s into a sweep of many rows
+    nlohmann::json long_sweep = kSmallSweep;
+    long_sweep["parameters"]["iterations"] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+    const auto r = http.Post("/v1/sweep?format=ndjson", long_sweep.dump(), "application/json");
+    (void)r;  // cut short
+  }
+  auto http = shared_server().client();
+  const auto r = http->Post("/v1/render", R"({"output": {"width": 32, "height": 32}})", "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200) << r->body;
+}
+
+TEST(HttpAccuracy, ErrorsNameTheFieldUnderTheEmbeddedRequest) {
+  auto http = shared_server().client();
+  EXPECT_TRUE(is_json_error(http->Post("/v1/compare", R"({"base": {"scene": "atlantis"}, "reference": {}})",
+                                       "application/json"),
+                            404, "scene_not_found", "base.scene"));
+  EXPECT_TRUE(is_json_error(http->Post("/v1/sweep", R"({"base": {"output": {"width": 2048, "height": 2048}}})",
+                                       "application/json"),
+                            422, "limit_exceeded", "base.output"));  // the shared server allows 1048576 pixels
+  EXPECT_TRUE(is_json_error(http->Post("/v1/compare", R"({"base": {}, "against": {"output": {"height": 64}}})",
+                                       "application/json"),
+                            400, "invalid_value", "against.output"));
+  EXPECT_TRUE(is_json_error(http->Get("/v1/sweep"), 405, "method_not_allowed", ""));
+}
+
+}  // namespace
+}  // namespace server_test

@@ -1,0 +1,156 @@
+// lpv-bench: accuracy against time from the command line. `sweep` and `diff` do what
+// POST /v1/sweep and POST /v1/compare do, on a device of their own, and write files.
+#include "api/accuracy_report.hpp"
+#include "api/accuracy_request.hpp"
+#include "api/request_error.hpp"
+#include "api/request_json.hpp"
+#include "bench_options.hpp"
+#include "progress_bar.hpp"
+#include "renderer/accuracy/compare.hpp"
+#include "renderer/accuracy/sweep.hpp"
+#include "renderer/image/exr.hpp"
+#include "renderer/image/file_io.hpp"
+#include "renderer/image/png.hpp"
+#include "renderer/renderer.hpp"
+#include "sweep_markdown.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+
+std::string read_request_text(const std::string& file) {
+  std::ostringstream text;
+  if (file == "-") {
+    text << std::cin.rdbuf();
+    return text.str();
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw bench::UsageError("cannot read request file '" + file + "'");
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  image::write_file_atomically(path, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+}
+
+// Every device, renderer and workbench of one command, destroyed in the right order.
+struct Lab {
+  explicit Lab(const bench::Options& options)
+      : device([&] {
+          vkx::DeviceOptions device_options = vkx::DeviceOptions::from_environment();
+          if (options.device) device_options.selector = *options.device;
+          return device_options;
+        }()),
+        renderer(device),
+        bench(renderer) {}
+  vkx::Device device;
+  renderer::Renderer renderer;
+  accuracy::Workbench bench;
+};
+
+int run_sweep(const bench::Options& options, const std::string& text) {
+  const api::SweepRequest request = api::parse_sweep_request(text);
+  const std::size_t total = api::sweep_configurations(request).size();
+  Lab lab(options);
+  bench::ProgressBar bar(!options.quiet);
+  accuracy::SweepObserver observer;
+  observer.reference_progress = [&](double fraction) {
+    bar.update("reference", fraction, std::to_string(request.reference.samples) + " spp");
+  };
+  observer.row_done = [&](std::size_t index, std::size_t, const api::SweepRow& row) {
+    bar.update("sweep", double(index + 1) / double(total),
+               "row " + std::to_string(index + 1) + "/" + std::to_string(total) + ", " +
+                   std::to_string(row.gpu_ms).substr(0, 6) + " ms");
+  };
+  const accuracy::SweepResult result = accuracy::sweep(lab.bench, request, observer);
+  bar.finish();
+
+  const std::filesystem::path dir = options.out_dir;
+  std::filesystem::create_directories(dir);
+  nlohmann::json json = {{"complete", result.complete},
+                         {"reference", api::to_json(result.reference)},
+                         {"table", api::to_json(result.table)},
+                         {"request", nlohmann::json::parse(text)}};
+  write_text(dir / "sweep.json", json.dump(2) + "\n");
+  write_text(dir / "sweep.csv", api::to_csv(result.table));
+  const std::string markdown = bench::sweep_markdown(result.table, result.reference);
+  write_text(dir / "sweep.md", markdown);
+  write_text(dir / "sweep.svg", api::to_svg_plot(result.table, "LPV error against GPU time: " + request.base.scene));
+  if (!options.quiet) std::fputs(markdown.c_str(), stdout);
+  return 0;
+}
+
+int run_diff(const bench::Options& options, const std::string& text) {
+  const api::CompareRequest request = api::parse_compare_request(text);
+  Lab lab(options);
+  bench::ProgressBar bar(!options.quiet && request.reference.has_value());
+  const accuracy::Comparison c =
+      accuracy::compare(lab.bench, request, [&](double fraction) { bar.update("reference", fraction); });
+  bar.finish();
+
+  const std::filesystem::path dir = options.out_dir;
+  std::filesystem::create_directories(dir);
+  image::write_file_atomically(dir / "base.png", image::encode_png(c.base.display));
+  image::write_file_atomically(dir / "other.png", image::encode_png(c.other.display));
+  image::write_file_atomically(dir / "difference.png", image::encode_png(c.difference.image));
+  image::write_file_atomically(dir / "base.exr", image::encode_exr(c.base.final_image));
+  image::write_file_atomically(dir / "other.exr", image::encode_exr(c.other.final_image));
+  nlohmann::json json = {{"mask", api::to_string(c.mask)},
+                         {"metrics", {{"final", api::to_json(c.final_error)}, {"indirect", api::to_json(c.indirect_error)}}},
+                         {"difference_scale", c.difference.scale},
+                         {"other", c.other.label}};
+  if (c.base.stats) json["base_stats"] = api::to_json(*c.base.stats);
+  if (c.other.stats) json["other_stats"] = api::to_json(*c.other.stats);
+  if (c.other.reference) json["reference"] = api::to_json(*c.other.reference);
+  write_text(dir / "compare.json", json.dump(2) + "\n");
+  if (!options.quiet) {
+    std::printf("base against %s (%s pixels: %llu)\n", c.other.label.c_str(), api::to_string(c.mask).c_str(),
+                static_cast<unsigned long long>(c.final_error.pixels));
+    for (const auto& [name, m] : {std::pair{"final", c.final_error}, std::pair{"indirect", c.indirect_error}})
+      std::printf("  %-8s RMSE %.4g  rel. MSE %.4g  PSNR %.2f dB  SSIM %.4f  bias %+.4g  max %.4g\n", name, m.rmse,
+                  m.relative_mse, m.psnr_db, m.ssim, m.mean_signed_error, m.max_abs_error);
+    if (c.base.stats) std::printf("  base: %.2f ms GPU per frame\n", c.base.stats->gpu_ms.median);
+    if (c.other.stats) std::printf("  other: %.2f ms GPU per frame\n", c.other.stats->gpu_ms.median);
+    if (c.other.reference)
+      std::printf("  reference: %u spp, %.0f ms, noise RMSE %.3g\n", c.other.reference->settings.samples,
+                  c.other.reference->build_ms + c.other.reference->trace_ms, c.other.reference->noise_rmse);
+  }
+  return 0;
+}
+
+int run(int argc, char** argv) {
+  const bench::Options options = bench::parse(argc, argv);
+  if (options.help) {
+    std::fputs(bench::usage(), stdout);
+    return 0;
+  }
+  const std::string text = read_request_text(options.request_file);
+  return options.command == bench::Command::sweep ? run_sweep(options, text) : run_diff(options, text);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const bench::UsageError& e) {
+    std::fprintf(stderr, "lpv-bench: %s\n\n%s", e.what(), bench::usage());
+    return kExitBadInput;
+  } catch (const api::RequestError& e) {
+    std::fprintf(stderr, "lpv-bench: bad request: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lpv-bench: %s\n", e.what());
+    return kExitFailure;
+  }
+}

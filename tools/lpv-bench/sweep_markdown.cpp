@@ -1,0 +1,49 @@
+#include "sweep_markdown.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace bench {
+namespace {
+
+std::string number(double x, const char* format) {
+  if (!std::isfinite(x)) return x > 0 ? "inf" : "-";
+  char text[64];
+  std::snprintf(text, sizeof(text), format, x);
+  return text;
+}
+
+std::string grid_text(const std::array<std::uint32_t, 3>& g) {
+  if (g[0] == g[1] && g[1] == g[2]) return std::to_string(g[0]) + "³";
+  return std::to_string(g[0]) + "×" + std::to_string(g[1]) + "×" + std::to_string(g[2]);
+}
+
+}  // namespace
+
+std::string sweep_markdown(const api::SweepTable& table, const api::ReferenceReport& reference) {
+  std::string md;
+  md += "Reference: " + std::to_string(reference.settings.samples) + " samples per pixel, " +
+        std::to_string(reference.settings.bounces) + " bounce(s), " +
+        number(reference.build_ms + reference.trace_ms, "%.0f") + " ms, noise RMSE " +
+        number(reference.noise_rmse, "%.3g") + " (" + number(100.0 * reference.relative_noise, "%.2g") +
+        "% of its mean indirect light).\n\n";
+  md += "| LPV | grid | iterations | cascades | RSM | VPL downsample | bounces | occlusion | GPU ms | final RMSE | "
+        "final rel. MSE | final SSIM | indirect RMSE | indirect bias | Pareto |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const api::SweepRow& row : table.rows) {
+    const api::SweepSettings& s = row.settings;
+    const auto lpv_only = [&](const std::string& text) { return s.lpv ? text : std::string("–"); };
+    md += "| " + std::string(s.lpv ? "on" : "off") + " | " + lpv_only(grid_text(s.grid)) + " | " +
+          lpv_only(std::to_string(s.iterations)) + " | " + lpv_only(std::to_string(s.cascades)) + " | " +
+          lpv_only(std::to_string(s.rsm)) + " | " + lpv_only(std::to_string(s.vpl_downsample)) + " | " +
+          lpv_only(std::to_string(s.bounces)) + " | " + lpv_only(s.occlusion ? "on" : "off") + " | " +
+          number(row.gpu_ms, "%.1f") + " | " + number(row.final_error.rmse, "%.4g") + " | " +
+          number(row.final_error.relative_mse, "%.4g") + " | " + number(row.final_error.ssim, "%.4f") + " | " +
+          number(row.indirect_error.rmse, "%.4g") + " | " + number(row.indirect_error.mean_signed_error, "%+.3g") +
+          " | " + (row.pareto ? "★" : "") + " |\n";
+  }
+  md += "\nPareto (★): no other row is both faster and more accurate (" + api::error_label(table.axis) + ").\n";
+  return md;
+}
+
+}  // namespace bench
