@@ -16,6 +16,11 @@ if [ ${#scenes[@]} -eq 0 ]; then
 fi
 
 for scene in "${scenes[@]}"; do
+  if [ ! -f "$dir/$scene.sweep.json" ]; then
+    echo "accuracy-report: no sweep for '$scene' (docs/accuracy/$scene.sweep.json); have:" \
+      "$(cd "$dir" && ls *.sweep.json | sed 's/\.sweep\.json$//' | tr '\n' ' ')" >&2
+    exit 2
+  fi
   echo "== $scene" >&2
   out=$(mktemp -d)
   "$root/build/lpv-bench" sweep "$dir/$scene.sweep.json" -o "$out" >/dev/null
