@@ -2,11 +2,11 @@
 # Regenerates the accuracy-versus-time tables and plots of docs/accuracy.md: for every
 # docs/accuracy/<scene>.sweep.json, lpv-bench sweep writes docs/accuracy/<scene>.{csv,svg,md,json},
 # and the Markdown table replaces the block between the scene's markers in docs/accuracy.md.
-#   scripts/accuracy-report.sh [SCENE...]     (default: every sweep file; builds first if needed)
+#   scripts/accuracy-report.sh [SCENE...]     (default: every sweep file; builds first)
 # On this project's 2-core lavapipe machine the three built-in scenes take about 5 minutes.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-[ -x "$root/build/lpv-bench" ] || "$root/scripts/build.sh"
+"$root/scripts/build.sh" >/dev/null  # a no-op when the build is current
 dir="$root/docs/accuracy"
 doc="$root/docs/accuracy.md"
 

@@ -1,5 +1,5 @@
 #version 450
-// Geometry volume, step 1: surfels add their blocking potential to the nearest cell corner.
+// Geometry volume, step 1: surfels add their blocking potential to the cell corners around them.
 // A surfel of area A with normal n blocks the fraction A / s^2 * max(0, <n, -w>) of light
 // travelling in direction w across a cell face of side s: one-sided, since a two-sided
 // surfel cancels in 2-band SH (LPV annotations 5.1). Surfels come from the RSMs (every light
@@ -33,21 +33,31 @@ vec3 decode_albedo(float code) {
   return vec3(q & 255u, (q >> 8) & 255u, (q >> 16) & 255u) / 255.0;
 }
 
+// Split over the 8 corners around p with trilinear weights, so the volume changes
+// continuously as surfels move (a camera or light moved by a hair must not make it jump).
 void add_surfel(vec3 p, vec3 n, float area, vec3 albedo) {
   GpuLpvCascade g = lpv.cascades[push.cascade];
   float s = g.origin.w;
   vec3 q = lpv_grid_position(g, p);
-  ivec3 corner = ivec3(round(q));
-  if (any(lessThan(corner, ivec3(0))) || any(greaterThan(corner, ivec3(g.dims.xyz)))) return;
+  if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(g.dims.xyz)))) return;
   float potential = min(area / (s * s), MAX_POTENTIAL);
   if (!(potential > 0.0)) return;
   uvec3 corner_dims = g.dims.xyz + 1u;
-  uint base = (lpv_cell_index(uvec3(corner), corner_dims) * LPV_GV_SOURCES + push.source) * LPV_GV_WORDS;
-  vec4 sh = sh_cosine_lobe(n) * potential;
+  ivec3 low = ivec3(floor(q));
+  vec3 f = q - vec3(low);
+  vec4 lobe = sh_cosine_lobe(n);
   float units = lpv.scales.y;
-  for (uint k = 0u; k < 4u; ++k) atomicAdd(corner_sums[base + k], to_fixed(sh[k], units));
-  for (uint c = 0u; c < 3u; ++c) atomicAdd(corner_sums[base + 4u + c], to_fixed(albedo[c] * potential, units));
-  atomicAdd(corner_sums[base + 7u], to_fixed(potential, units));
+  for (uint i = 0u; i < 8u; ++i) {
+    ivec3 o = ivec3(i & 1u, (i >> 1u) & 1u, i >> 2u);
+    vec3 w3 = mix(1.0 - f, f, vec3(o));
+    float share = potential * w3.x * w3.y * w3.z;
+    if (share == 0.0) continue;
+    uvec3 corner = uvec3(clamp(low + o, ivec3(0), ivec3(g.dims.xyz)));
+    uint base = (lpv_cell_index(corner, corner_dims) * LPV_GV_SOURCES + push.source) * LPV_GV_WORDS;
+    for (uint k = 0u; k < 4u; ++k) atomicAdd(corner_sums[base + k], to_fixed(lobe[k] * share, units));
+    for (uint c = 0u; c < 3u; ++c) atomicAdd(corner_sums[base + 4u + c], to_fixed(albedo[c] * share, units));
+    atomicAdd(corner_sums[base + 7u], to_fixed(share, units));
+  }
 }
 
 void main() {

@@ -14,9 +14,9 @@ constexpr std::uint32_t kCameraSurfelRows = 256;
 float max_component(glm::vec3 v) { return std::max({v.x, v.y, v.z}); }
 
 // The origin that centres a grid of `dims` cells of `cell` metres on `centre`, on the lattice
-// of whole cells (rounded, so the shift is at most half a cell).
-glm::vec3 snapped_origin(glm::vec3 centre, glm::uvec3 dims, float cell) {
-  return glm::round((centre - 0.5f * glm::vec3(dims) * cell) / cell) * cell;
+// of whole cells through `anchor` (rounded, so the shift is at most half a cell).
+glm::vec3 snapped_origin(glm::vec3 centre, glm::uvec3 dims, float cell, glm::vec3 anchor) {
+  return anchor + glm::round((centre - 0.5f * glm::vec3(dims) * cell - anchor) / cell) * cell;
 }
 
 }  // namespace
@@ -40,14 +40,27 @@ std::vector<CascadePlacement> place_cascades(const api::Lpv& lpv, const scene::B
 
   const glm::vec3 inner_centre = lpv.origin ? *lpv.origin + 0.5f * glm::vec3(dims) * cell0
                                             : glm::clamp(focus, bounds.min, bounds.max);
+  // Cascades that follow the camera snap to whole cells, so that a moving camera does not make
+  // the lighting crawl. A fitted outermost cascade follows nothing: it is centred on the
+  // scene exactly, and the lattice the others snap to runs through its origin. Snapping it to
+  // the world's lattice instead put the Cornell box's centre on a tie (half a cell), which
+  // float rounding broke differently at another scale: the same scene, scaled, lit
+  // differently (docs/stability.md).
+  const bool fitted = !lpv.origin && !lpv.extent;
+  const float outer_cell = cell0 * outer_scale;
+  const glm::vec3 anchor = fitted ? bounds.center() - 0.5f * glm::vec3(dims) * outer_cell : glm::vec3(0.0f);
   std::vector<CascadePlacement> cascades;
   for (std::uint32_t c = 0; c < count; ++c) {
     CascadePlacement p;
     p.dims = dims;
     p.cell_size = cell0 * std::exp2(float(c));
-    const bool fitted_outer = !lpv.origin && !lpv.extent && c + 1 == count;
-    const glm::vec3 centre = fitted_outer ? bounds.center() : inner_centre;
-    p.origin = (c == 0 && lpv.origin) ? *lpv.origin : snapped_origin(centre, dims, p.cell_size);
+    if (c == 0 && lpv.origin) {
+      p.origin = *lpv.origin;
+    } else if (fitted && c + 1 == count) {
+      p.origin = anchor;
+    } else {
+      p.origin = snapped_origin(inner_centre, dims, p.cell_size, anchor);
+    }
     cascades.push_back(p);
   }
   return cascades;

@@ -1,6 +1,9 @@
 // One VPL into a cascade: intensity I(w) = Phi / pi * max(0, <n, w>), whose integral over the
 // sphere is Phi, moved injection_offset cells along its normal (against self-illumination)
-// and added as SH into the cell it lands in, in fixed point (deterministic in any order).
+// and added as SH, in fixed point (deterministic in any order), to the 8 cells whose centres
+// surround it with trilinear weights. Nearest-cell injection would make the grid jump by a
+// whole cell when a VPL crosses a cell boundary: a light or camera moved by a hair would
+// flicker. Shares that fall outside the grid go to its border cells, so no flux is lost.
 // Requires `lpv` (GpuLpv) and an int64 `injected` buffer declared before the include.
 #ifndef LPV_INJECT_VPL_GLSL
 #define LPV_INJECT_VPL_GLSL
@@ -8,13 +11,22 @@
 void inject_vpl(GpuLpvCascade g, vec3 position, vec3 normal, vec3 flux) {
   vec3 q = lpv_grid_position(g, position + normal * (lpv.scales.w * g.origin.w));
   if (lpv_inside_distance(g, q) < 0.0) return;
-  uvec3 cell = min(uvec3(q), g.dims.xyz - 1u);
-  uint base = lpv_cell_index(cell, g.dims.xyz) * 12u;
+  vec3 t = q - 0.5;  // in units of cell centres
+  ivec3 low = ivec3(floor(t));
+  vec3 f = t - vec3(low);
+  ivec3 last = ivec3(g.dims.xyz) - 1;
   vec4 lobe = sh_cosine_lobe(normal) / LPV_PI;
-  for (uint c = 0u; c < 3u; ++c) {
-    if (flux[c] == 0.0) continue;
-    vec4 sh = lobe * flux[c];
-    for (uint k = 0u; k < 4u; ++k) atomicAdd(injected[base + c * 4u + k], to_fixed(sh[k], lpv.scales.x));
+  for (uint corner = 0u; corner < 8u; ++corner) {
+    ivec3 o = ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
+    vec3 w3 = mix(1.0 - f, f, vec3(o));
+    float w = w3.x * w3.y * w3.z;
+    if (w == 0.0) continue;
+    uint base = lpv_cell_index(uvec3(clamp(low + o, ivec3(0), last)), g.dims.xyz) * 12u;
+    for (uint c = 0u; c < 3u; ++c) {
+      if (flux[c] == 0.0) continue;
+      vec4 sh = lobe * (flux[c] * w);
+      for (uint k = 0u; k < 4u; ++k) atomicAdd(injected[base + c * 4u + k], to_fixed(sh[k], lpv.scales.x));
+    }
   }
 }
 

@@ -22,8 +22,17 @@ Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm
   for (const Vpl& v : vpls) {
     const glm::vec3 q = (v.position + v.normal * (offset_cells * cell_size) - origin) / cell_size;
     if (glm::any(glm::lessThan(q, glm::vec3(0.0f))) || glm::any(glm::greaterThan(q, glm::vec3(dims)))) continue;
-    const glm::ivec3 cell = glm::min(glm::ivec3(q), dims - 1);
-    for (int c = 0; c < 3; ++c) grid.at(cell, c) += gpu::sh_diffuse_emitter(v.normal, v.flux[c]);
+    // Trilinear over the 8 cells whose centres surround q; shares outside go to the border.
+    const glm::vec3 t = q - 0.5f;
+    const glm::ivec3 low(glm::floor(t));
+    const glm::vec3 f = t - glm::vec3(low);
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::ivec3 o(corner & 1, (corner >> 1) & 1, corner >> 2);
+      const glm::vec3 w3 = glm::mix(1.0f - f, f, glm::vec3(o));
+      const float w = w3.x * w3.y * w3.z;
+      const glm::ivec3 cell = glm::clamp(low + o, glm::ivec3(0), dims - 1);
+      for (int c = 0; c < 3; ++c) grid.at(cell, c) += gpu::sh_diffuse_emitter(v.normal, v.flux[c] * w);
+    }
   }
   return grid;
 }

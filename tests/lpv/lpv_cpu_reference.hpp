@@ -29,7 +29,8 @@ struct Vpl {
   glm::vec3 flux;    // W
 };
 
-// Each VPL, moved offset_cells along its normal, adds Phi/pi * cosine lobe into its cell.
+// Each VPL, moved offset_cells along its normal, adds Phi/pi * cosine lobe to the 8 cells
+// around it, with trilinear weights (shares outside the grid to its border cells).
 Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims, float offset_cells);
 
 // Blocking potential SH on the +X, +Y, +Z faces of every cell (3 per cell), or empty.
