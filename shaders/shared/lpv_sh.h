@@ -6,19 +6,41 @@
 //   Y(d) = (c0, -c1 d.y, c1 d.z, -c1 d.x),  c0 = 1 / (2 sqrt(pi)),  c1 = sqrt(3) / (2 sqrt(pi)).
 // The grid stores radiant intensity I(w) in W/sr; its flux is the integral over the sphere,
 // which only the DC term carries: flux = 4 pi c0 s0 = 2 sqrt(pi) s0.
-#ifndef LPV_SH_H
+// C++ includes it once per scalar type: in float as namespace gpu (what the shaders compute)
+// and, with LPV_SH_DOUBLE defined, in double as namespace gpu_double (the CPU reference's
+// double-precision runs). Scalars are lpv_real: float in GLSL.
+#if defined(__cplusplus) && defined(LPV_SH_DOUBLE)
+#ifndef LPV_SH_DOUBLE_H
+#define LPV_SH_DOUBLE_H
+#define LPV_SH_BODY
+#endif
+#elif !defined(LPV_SH_H)
 #define LPV_SH_H
+#define LPV_SH_BODY
+#endif
+
+#ifdef LPV_SH_BODY
+#undef LPV_SH_BODY
 
 #ifdef __cplusplus
 #include <glm/glm.hpp>
+#ifdef LPV_SH_DOUBLE
+namespace gpu_double {
+using lpv_real = double;
+using vec3 = glm::dvec3;
+using vec4 = glm::dvec4;
+#else
 namespace gpu {
-using glm::dot;
-using glm::normalize;
+using lpv_real = float;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
+#endif
+using glm::dot;
+using glm::normalize;
 #define LPV_FUNC inline
-#define LPV_CONST_F inline constexpr float
+#define LPV_CONST_F inline constexpr lpv_real
 #else
+#define lpv_real float
 #define LPV_FUNC
 #define LPV_CONST_F const float
 #endif
@@ -39,6 +61,8 @@ LPV_CONST_F LPV_FAR_FACE_SOLID_ANGLE = 0.4006696846;
 LPV_CONST_F LPV_SIDE_FACE_SOLID_ANGLE = 0.4234313544;
 
 LPV_CONST_F LPV_PI = 3.14159265358979;
+LPV_CONST_F LPV_SQRT_PI = 1.7724538509;
+LPV_CONST_F LPV_INV_SQRT5 = 0.4472135955;  // 1 / sqrt(5)
 
 // The basis functions in direction d (unit).
 LPV_FUNC vec4 sh_basis(vec3 d) { return vec4(SH_C0, -SH_C1 * d.y, SH_C1 * d.z, -SH_C1 * d.x); }
@@ -49,27 +73,27 @@ LPV_FUNC vec4 sh_cosine_lobe(vec3 n) {
 }
 
 // The function an SH vector represents, in direction d.
-LPV_FUNC float sh_evaluate(vec4 sh, vec3 d) { return dot(sh, sh_basis(d)); }
+LPV_FUNC lpv_real sh_evaluate(vec4 sh, vec3 d) { return dot(sh, sh_basis(d)); }
 
 // The flux of an intensity distribution: its integral over the sphere.
-LPV_FUNC float sh_flux(vec4 sh) { return 2.0f * 1.7724538509f * sh.x; }
+LPV_FUNC lpv_real sh_flux(vec4 sh) { return 2.0f * LPV_SQRT_PI * sh.x; }
 
 // A diffuse emitter of flux phi facing n: I(w) = phi / pi * max(0, <n, w>), whose integral
 // over the sphere is phi (the annotations' correction 4.1 of the paper's missing 1/pi).
-LPV_FUNC vec4 sh_diffuse_emitter(vec3 n, float phi) { return sh_cosine_lobe(n) * (phi / LPV_PI); }
+LPV_FUNC vec4 sh_diffuse_emitter(vec3 n, lpv_real phi) { return sh_cosine_lobe(n) * (phi / LPV_PI); }
 
 // Unit direction from a source cell's centre to the centre of a face of the neighbour that
 // lies along unit axis `ahead`: `side` = 0 for the far face, else the unit axis (orthogonal
 // to `ahead`) the side face faces. The far face centre is 1.5 cells ahead; a side face
 // centre is 1 cell ahead and half a cell to the side.
-LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead + 0.5f * side); }
+LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead + lpv_real(0.5) * side); }
 
-LPV_FUNC float lpv_positive(float x) { return x > 0.0f ? x : 0.0f; }
+LPV_FUNC lpv_real lpv_positive(lpv_real x) { return x > 0.0f ? x : 0.0f; }
 
 // Sum of the positive parts of A + (2 p + q) / sqrt(5) over the four sign pairs of p = +-bi,
 // q = +-bj: the side faces of the two neighbours along axis i whose normals lie along axis j.
-LPV_FUNC float lpv_positive_side_faces(float mean, float bi, float bj) {
-  const float k = 0.4472135955f;  // 1 / sqrt(5)
+LPV_FUNC lpv_real lpv_positive_side_faces(lpv_real mean, lpv_real bi, lpv_real bj) {
+  const lpv_real k = LPV_INV_SQRT5;
   return lpv_positive(mean + k * (2.0f * bi + bj)) + lpv_positive(mean + k * (2.0f * bi - bj)) +
          lpv_positive(mean + k * (-2.0f * bi + bj)) + lpv_positive(mean + k * (-2.0f * bi - bj));
 }
@@ -83,28 +107,30 @@ LPV_FUNC float lpv_positive_side_faces(float mean, float bi, float bj) {
 // face is negative (|linear part| <= constant part), 0 for a cell with no positive flux.
 // Written out per face (I(w) = A + B.w with A = c0 s0, B = c1 (-s3, -s1, s2)) rather than as
 // loops over directions: lavapipe runs dynamically indexed vectors one lane at a time.
-LPV_FUNC float lpv_outgoing_scale(vec4 sh) {
-  float mean = SH_C0 * sh.x;
-  float bx = -SH_C1 * sh.w;
-  float by = -SH_C1 * sh.y;
-  float bz = SH_C1 * sh.z;
+LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) {
+  lpv_real mean = SH_C0 * sh.x;
+  lpv_real bx = -SH_C1 * sh.w;
+  lpv_real by = -SH_C1 * sh.y;
+  lpv_real bz = SH_C1 * sh.z;
   if (mean <= 0.0f) return 0.0f;
   if (bx * bx + by * by + bz * bz <= mean * mean) return 1.0f;
-  float far_faces = lpv_positive(mean + bx) + lpv_positive(mean - bx) + lpv_positive(mean + by) +
+  lpv_real far_faces = lpv_positive(mean + bx) + lpv_positive(mean - bx) + lpv_positive(mean + by) +
                     lpv_positive(mean - by) + lpv_positive(mean + bz) + lpv_positive(mean - bz);
-  float side_faces = lpv_positive_side_faces(mean, bx, by) + lpv_positive_side_faces(mean, bx, bz) +
+  lpv_real side_faces = lpv_positive_side_faces(mean, bx, by) + lpv_positive_side_faces(mean, bx, bz) +
                      lpv_positive_side_faces(mean, by, bx) + lpv_positive_side_faces(mean, by, bz) +
                      lpv_positive_side_faces(mean, bz, bx) + lpv_positive_side_faces(mean, bz, by);
-  float positive = LPV_FAR_FACE_SOLID_ANGLE * far_faces + LPV_SIDE_FACE_SOLID_ANGLE * side_faces;
+  lpv_real positive = LPV_FAR_FACE_SOLID_ANGLE * far_faces + LPV_SIDE_FACE_SOLID_ANGLE * side_faces;
   // The sum of all 30 face fluxes: the linear parts cancel between opposite faces.
-  float total = mean * (6.0f * LPV_FAR_FACE_SOLID_ANGLE + 24.0f * LPV_SIDE_FACE_SOLID_ANGLE);
+  lpv_real total = mean * (6.0f * LPV_FAR_FACE_SOLID_ANGLE + 24.0f * LPV_SIDE_FACE_SOLID_ANGLE);
   return positive > total ? total / positive : 1.0f;
 }
 
 #ifdef __cplusplus
-}  // namespace gpu
+}  // namespace gpu or gpu_double
+#else
+#undef lpv_real
 #endif
 #undef LPV_FUNC
 #undef LPV_CONST_F
 
-#endif
+#endif  // LPV_SH_BODY

@@ -1,6 +1,8 @@
 #include "lpv_cpu_reference.hpp"
 
 #include "shaders/shared/lpv_sh.h"
+#define LPV_SH_DOUBLE
+#include "shaders/shared/lpv_sh.h"
 
 #include <algorithm>
 
@@ -9,36 +11,67 @@ namespace {
 
 const glm::ivec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
+// The shared formulas in the grid's precision.
+template <class Vec4>
+struct Maths;
+
+#define LPV_REF_MATHS(VEC4, NS)                                                                      \
+  template <>                                                                                        \
+  struct Maths<VEC4> {                                                                               \
+    using real = NS::lpv_real;                                                                       \
+    using vec3 = NS::vec3;                                                                           \
+    static constexpr real far_omega = NS::LPV_FAR_FACE_SOLID_ANGLE;                                  \
+    static constexpr real side_omega = NS::LPV_SIDE_FACE_SOLID_ANGLE;                                \
+    static real flux(const VEC4& sh) { return NS::sh_flux(sh); }                                     \
+    static VEC4 emitter(vec3 n, real phi) { return NS::sh_diffuse_emitter(n, phi); }                 \
+    static real outgoing_scale(const VEC4& sh) { return NS::lpv_outgoing_scale(sh); }                \
+    static real evaluate(const VEC4& sh, vec3 d) { return NS::sh_evaluate(sh, d); }                  \
+    static vec3 face_direction(vec3 ahead, vec3 side) { return NS::lpv_face_direction(ahead, side); } \
+  };
+LPV_REF_MATHS(glm::vec4, gpu)
+LPV_REF_MATHS(glm::dvec4, gpu_double)
+#undef LPV_REF_MATHS
+
 }  // namespace
 
-double Grid::flux(int channel) const {
+template <class Vec4>
+double BasicGrid<Vec4>::flux(int channel) const {
   double total = 0.0;
-  for (std::size_t i = static_cast<std::size_t>(channel); i < sh.size(); i += 3) total += gpu::sh_flux(sh[i]);
+  for (std::size_t i = static_cast<std::size_t>(channel); i < sh.size(); i += 3) total += Maths<Vec4>::flux(sh[i]);
   return total;
 }
 
-Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims, float offset_cells) {
-  Grid grid(dims);
+template <class Vec4>
+BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
+                       float offset_cells) {
+  using M = Maths<Vec4>;
+  using real = typename M::real;
+  using vec3 = typename M::vec3;
+  BasicGrid<Vec4> grid(dims);
   for (const Vpl& v : vpls) {
-    const glm::vec3 q = (v.position + v.normal * (offset_cells * cell_size) - origin) / cell_size;
-    if (glm::any(glm::lessThan(q, glm::vec3(0.0f))) || glm::any(glm::greaterThan(q, glm::vec3(dims)))) continue;
+    const vec3 q = (vec3(v.position) + vec3(v.normal) * real(offset_cells * cell_size) - vec3(origin)) / real(cell_size);
+    if (glm::any(glm::lessThan(q, vec3(0))) || glm::any(glm::greaterThan(q, vec3(dims)))) continue;
     // Trilinear over the 8 cells whose centres surround q; shares outside go to the border.
-    const glm::vec3 t = q - 0.5f;
+    const vec3 t = q - real(0.5);
     const glm::ivec3 low(glm::floor(t));
-    const glm::vec3 f = t - glm::vec3(low);
+    const vec3 f = t - vec3(low);
     for (int corner = 0; corner < 8; ++corner) {
       const glm::ivec3 o(corner & 1, (corner >> 1) & 1, corner >> 2);
-      const glm::vec3 w3 = glm::mix(1.0f - f, f, glm::vec3(o));
-      const float w = w3.x * w3.y * w3.z;
+      const vec3 w3 = glm::mix(real(1) - f, f, vec3(o));
+      const real w = w3.x * w3.y * w3.z;
       const glm::ivec3 cell = glm::clamp(low + o, glm::ivec3(0), dims - 1);
-      for (int c = 0; c < 3; ++c) grid.at(cell, c) += gpu::sh_diffuse_emitter(v.normal, v.flux[c] * w);
+      for (int c = 0; c < 3; ++c) grid.at(cell, c) += M::emitter(vec3(v.normal), real(v.flux[c]) * w);
     }
   }
   return grid;
 }
 
-Grid propagate(const Grid& grid, const FaceBlocking& blocking) {
-  Grid next(grid.dims);
+template <class Vec4>
+BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking) {
+  using M = Maths<Vec4>;
+  using real = typename M::real;
+  using vec3 = typename M::vec3;
+  BasicGrid<Vec4> next(grid.dims);
   for (int z = 0; z < grid.dims.z; ++z)
     for (int y = 0; y < grid.dims.y; ++y)
       for (int x = 0; x < grid.dims.x; ++x) {
@@ -46,26 +79,33 @@ Grid propagate(const Grid& grid, const FaceBlocking& blocking) {
         for (int i = 0; i < 6; ++i) {
           const glm::ivec3 from = cell - kAxes[i];
           if (!grid.contains(from)) continue;
-          const glm::vec3 ahead(kAxes[i]);
-          glm::vec4 block(0.0f);
+          const vec3 ahead(kAxes[i]);
+          Vec4 block(0);
           if (!blocking.empty()) block = blocking[grid.index(glm::min(cell, from)) * 3 + std::size_t(i / 2)];
           for (int c = 0; c < 3; ++c) {
-            const glm::vec4 sent = grid.at(from, c) * gpu::lpv_outgoing_scale(grid.at(from, c));
+            const Vec4 sent = grid.at(from, c) * M::outgoing_scale(grid.at(from, c));
             // The far face, then the side faces across `ahead`.
             for (int f = 0; f < 6; ++f) {
               if (f != i && f / 2 == i / 2) continue;
-              const glm::vec3 normal(kAxes[f]);
+              const vec3 normal(kAxes[f]);
               const bool far = f == i;
-              const glm::vec3 w = far ? ahead : gpu::lpv_face_direction(ahead, normal);
-              const float omega = far ? gpu::LPV_FAR_FACE_SOLID_ANGLE : gpu::LPV_SIDE_FACE_SOLID_ANGLE;
-              float flux = omega * std::max(gpu::sh_evaluate(sent, w), 0.0f);
-              if (!blocking.empty()) flux *= 1.0f - std::clamp(gpu::sh_evaluate(block, -w), 0.0f, 1.0f);
-              next.at(cell, c) += gpu::sh_diffuse_emitter(normal, flux);
+              const vec3 w = far ? ahead : M::face_direction(ahead, normal);
+              const real omega = far ? M::far_omega : M::side_omega;
+              real flux = omega * std::max(M::evaluate(sent, w), real(0));
+              if (!blocking.empty()) flux *= real(1) - std::clamp(M::evaluate(block, -w), real(0), real(1));
+              next.at(cell, c) += M::emitter(normal, flux);
             }
           }
         }
       }
   return next;
 }
+
+template struct BasicGrid<glm::vec4>;
+template struct BasicGrid<glm::dvec4>;
+template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float);
+template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float);
+template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&);
+template GridD propagate<glm::dvec4>(const GridD&, const BasicFaceBlocking<glm::dvec4>&);
 
 }  // namespace lpv_ref

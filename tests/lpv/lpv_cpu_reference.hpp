@@ -1,7 +1,8 @@
 // A CPU reference of LPV injection and propagation: the maths of lpv_inject.comp and
-// lpv_propagate.comp written plainly (loops over faces, doubles for the sums), on the same
-// shared formulas (shaders/shared/lpv_sh.h). Tests compare the GPU grids with it and check
-// conservation laws on it for grids too small or iteration counts too large for a frame.
+// lpv_propagate.comp written plainly (loops over faces), on the same shared formulas
+// (shaders/shared/lpv_sh.h), in float (what the GPU computes) or in double (to measure how
+// far the GPU's float result is from the exact one). Tests compare the GPU grids with it and
+// check conservation laws on it for grids too small or iteration counts too large for a frame.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -11,17 +12,21 @@
 
 namespace lpv_ref {
 
-struct Grid {
+// `Vec4` is glm::vec4 or glm::dvec4: the precision the grid holds and is computed in.
+template <class Vec4>
+struct BasicGrid {
   glm::ivec3 dims{0};
-  std::vector<glm::vec4> sh;  // 3 per cell (R, G, B), x-fastest
+  std::vector<Vec4> sh;  // 3 per cell (R, G, B), x-fastest
 
-  explicit Grid(glm::ivec3 d) : dims(d), sh(std::size_t(d.x) * d.y * d.z * 3, glm::vec4(0.0f)) {}
+  explicit BasicGrid(glm::ivec3 d) : dims(d), sh(std::size_t(d.x) * d.y * d.z * 3, Vec4(0)) {}
   std::size_t index(glm::ivec3 c) const { return std::size_t(c.x + dims.x * (c.y + dims.y * c.z)); }
   bool contains(glm::ivec3 c) const { return glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) && glm::all(glm::lessThan(c, dims)); }
-  glm::vec4& at(glm::ivec3 c, int channel) { return sh[index(c) * 3 + std::size_t(channel)]; }
-  const glm::vec4& at(glm::ivec3 c, int channel) const { return sh[index(c) * 3 + std::size_t(channel)]; }
+  Vec4& at(glm::ivec3 c, int channel) { return sh[index(c) * 3 + std::size_t(channel)]; }
+  const Vec4& at(glm::ivec3 c, int channel) const { return sh[index(c) * 3 + std::size_t(channel)]; }
   double flux(int channel) const;  // integral of the intensity over the sphere, summed over cells (W)
 };
+using Grid = BasicGrid<glm::vec4>;
+using GridD = BasicGrid<glm::dvec4>;
 
 struct Vpl {
   glm::vec3 position;
@@ -31,13 +36,24 @@ struct Vpl {
 
 // Each VPL, moved offset_cells along its normal, adds Phi/pi * cosine lobe to the 8 cells
 // around it, with trilinear weights (shares outside the grid to its border cells).
-Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims, float offset_cells);
+template <class Vec4>
+BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
+                       float offset_cells);
 
 // Blocking potential SH on the +X, +Y, +Z faces of every cell (3 per cell), or empty.
-using FaceBlocking = std::vector<glm::vec4>;
+template <class Vec4>
+using BasicFaceBlocking = std::vector<Vec4>;
+using FaceBlocking = BasicFaceBlocking<glm::vec4>;
 
 // One propagation iteration from `grid` (what each cell holds), with the face blocking
 // applied if given.
-Grid propagate(const Grid& grid, const FaceBlocking& blocking = {});
+template <class Vec4>
+BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking = {});
+
+// The float forms most tests use.
+inline Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
+                   float offset_cells) {
+  return inject<glm::vec4>(vpls, origin, cell_size, dims, offset_cells);
+}
 
 }  // namespace lpv_ref

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace {
@@ -69,49 +70,71 @@ api::RenderRequest small_grid_request(std::uint32_t iterations) {
   return r;
 }
 
-lpv_ref::Grid grid_of(const renderer::LpvSnapshot::Cascade& cascade) {
-  lpv_ref::Grid g{glm::ivec3(cascade.dims)};
-  g.sh = cascade.accumulated;
+// The GPU's grid (float) in the double precision of the reference it is measured against.
+lpv_ref::GridD grid_of(const renderer::LpvSnapshot::Cascade& cascade) {
+  lpv_ref::GridD g{glm::ivec3(cascade.dims)};
+  for (std::size_t i = 0; i < g.sh.size(); ++i) g.sh[i] = glm::dvec4(cascade.accumulated[i]);
   return g;
 }
 
 // Largest difference of two grids, relative to the largest coefficient.
-double grid_difference(const lpv_ref::Grid& a, const lpv_ref::Grid& b) {
+double grid_difference(const lpv_ref::GridD& a, const lpv_ref::GridD& b) {
   double diff = 0.0, scale = 0.0;
   for (std::size_t i = 0; i < a.sh.size(); ++i)
     for (int k = 0; k < 4; ++k) {
-      diff = std::max(diff, double(std::abs(a.sh[i][k] - b.sh[i][k])));
-      scale = std::max(scale, double(std::abs(b.sh[i][k])));
+      diff = std::max(diff, std::abs(a.sh[i][k] - b.sh[i][k]));
+      scale = std::max(scale, std::abs(b.sh[i][k]));
     }
   return diff / scale;
 }
 
-TEST_F(Lpv, InjectedGridMatchesTheCpuReference) {
-  const auto result = gpu_test::renderer().render(small_grid_request(0), renderer::kReadbackLinear | renderer::kReadbackLpv);
-  const renderer::LpvSnapshot& snap = result.lpv;
-  ASSERT_EQ(snap.cascades.size(), 1u);
+// The GPU computes in float (24-bit significands: 6e-8 relative per rounding) and sums in
+// 64-bit fixed point at injection (2^-60 of the scene's flux bound per unit: exact for this
+// purpose). A coefficient of the injected grid is a sum of lobes each a few float operations
+// deep, and after 6 iterations every coefficient has been through about 6 x 30 face terms and
+// their scaling: float rounding bounds the difference from exact arithmetic at about
+// 200 x 6e-8 = 1.2e-5 of the largest coefficient, and it is usually far smaller since the
+// roundings do not all go one way. The bounds below are that estimate; the measured values
+// are printed.
+constexpr double kInjectedGridTolerance = 1e-6;
+constexpr double kPropagatedGridTolerance = 1.2e-5;
+
+std::vector<lpv_ref::Vpl> vpls_of(const renderer::LpvSnapshot& snap) {
   std::vector<lpv_ref::Vpl> vpls;
   for (std::size_t i = 0; i < snap.rsm_position.size(); ++i)
     if (snap.rsm_position[i].w != 0.0f)
       vpls.push_back({glm::vec3(snap.rsm_position[i]), glm::normalize(glm::vec3(snap.rsm_normal[i])),
                       glm::vec3(snap.rsm_flux[i])});
-  ASSERT_FALSE(vpls.empty());
-  const auto& c = snap.cascades[0];
-  const lpv_ref::Grid cpu = lpv_ref::inject(vpls, c.origin, c.cell_size, glm::ivec3(c.dims), 0.5f);
-  EXPECT_LT(grid_difference(grid_of(c), cpu), 1e-4);
+  return vpls;
 }
 
-TEST_F(Lpv, PropagatedGridMatchesTheCpuReference) {
+TEST_F(Lpv, InjectedGridMatchesTheDoublePrecisionReference) {
+  const auto result = gpu_test::renderer().render(small_grid_request(0), renderer::kReadbackLinear | renderer::kReadbackLpv);
+  const renderer::LpvSnapshot& snap = result.lpv;
+  ASSERT_EQ(snap.cascades.size(), 1u);
+  const std::vector<lpv_ref::Vpl> vpls = vpls_of(snap);
+  ASSERT_FALSE(vpls.empty());
+  const auto& c = snap.cascades[0];
+  const lpv_ref::GridD exact = lpv_ref::inject<glm::dvec4>(vpls, c.origin, c.cell_size, glm::ivec3(c.dims), 0.5f);
+  const double d = grid_difference(grid_of(c), exact);
+  std::printf("injected grid, GPU (float) against double: %.2e of the largest coefficient\n", d);
+  EXPECT_LT(d, kInjectedGridTolerance);
+}
+
+TEST_F(Lpv, PropagatedGridMatchesTheDoublePrecisionReference) {
   auto& r = gpu_test::renderer();
   const auto injected = r.render(small_grid_request(0), renderer::kReadbackLinear | renderer::kReadbackLpv);
   const auto propagated = r.render(small_grid_request(6), renderer::kReadbackLinear | renderer::kReadbackLpv);
-  lpv_ref::Grid grid = grid_of(injected.lpv.cascades.at(0));
-  lpv_ref::Grid accumulated = grid;
+  // From the GPU's own injected grid, so that only propagation is compared.
+  lpv_ref::GridD grid = grid_of(injected.lpv.cascades.at(0));
+  lpv_ref::GridD accumulated = grid;
   for (int k = 0; k < 6; ++k) {
     grid = lpv_ref::propagate(grid);
     for (std::size_t i = 0; i < grid.sh.size(); ++i) accumulated.sh[i] += grid.sh[i];
   }
-  EXPECT_LT(grid_difference(grid_of(propagated.lpv.cascades.at(0)), accumulated), 1e-4);
+  const double d = grid_difference(grid_of(propagated.lpv.cascades.at(0)), accumulated);
+  std::printf("6 iterations accumulated, GPU (float) against double: %.2e of the largest coefficient\n", d);
+  EXPECT_LT(d, kPropagatedGridTolerance);
 }
 
 TEST_F(Lpv, PropagatedFluxNeverExceedsTheInjectedFluxWithOrWithoutOcclusion) {
