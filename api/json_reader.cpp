@@ -83,6 +83,21 @@ float as_float(const Field& f, float lo, float hi) {
   return x;
 }
 
+double as_double(const Field& f, double lo, double hi) {
+  const auto text = [](double x) { return json(x).dump(); };
+  const std::string expectation = "a number in [" + text(lo) + ", " + text(hi) + "]";
+  if (!f.value->is_number()) f.reject(expectation);
+  const double d = f.value->get<double>();
+  if (!std::isfinite(d) || d < lo || d > hi) f.reject(expectation);
+  return d;
+}
+
+std::string as_string(const Field& f, std::size_t max_bytes) {
+  if (!f.value->is_string() || f.value->get_ref<const std::string&>().size() > max_bytes)
+    f.reject("a string of at most " + std::to_string(max_bytes) + " bytes");
+  return f.value->get<std::string>();
+}
+
 bool as_bool(const Field& f) {
   if (!f.value->is_boolean()) f.reject("true or false");
   return f.value->get<bool>();

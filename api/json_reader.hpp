@@ -118,6 +118,10 @@ E as_enum(const Field& f, const std::array<E, N>& values) {
 
 // Any JSON number, integer or not, that is finite and in [lo, hi] once stored as a float.
 float as_float(const Field& f, float lo, float hi);
+// Any finite JSON number in [lo, hi], kept as a double (measurements, not settings).
+double as_double(const Field& f, double lo, double hi);
+// A string of at most `max_bytes` bytes.
+std::string as_string(const Field& f, std::size_t max_bytes);
 bool as_bool(const Field& f);
 // The elements of an array of at most `max_size` elements.
 std::vector<Field> as_array(const Field& f, std::size_t max_size);

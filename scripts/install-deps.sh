@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The single source of truth for the project's dependencies: Debian 12 packages only.
+# The single source of truth for the project's dependencies: Debian 12 packages, and the
+# npm packages of the browser test from its committed lock file (tests/web).
 # Used by scripts/run.sh, scripts/test.sh, .ci/run and docker/Dockerfile.
 # Installs only what is missing, so a second run costs one dpkg query.
 set -euo pipefail
@@ -21,20 +22,33 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev curl
   # real and deliberately broken glTF files; clang for the sanitizer build and libFuzzer
   assimp-testmodels clang libclang-rt-dev
+  # the web page's browser test (tests/web): Chromium driven by playwright-core on Node.js
+  chromium fonts-dejavu-core nodejs
 )
 
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# npm: Debian's package, unless the nodejs installed bundles its own (NodeSource's does, and
+# conflicts with Debian's npm).
+command -v npm >/dev/null || missing+=(npm)
 
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "install-deps: installing ${missing[*]}" >&2
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -q
+  $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-echo "install-deps: installing ${missing[*]}" >&2
-SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -q
-$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+# The browser test's npm packages, exactly as tests/web/package-lock.json pins them, into
+# tests/web/node_modules (ignored by git); again only when the lock file changed. (The
+# Dockerfile runs this script once before the sources are there: nothing to do then.)
+web_test="$(cd "$(dirname "$0")/.." && pwd)/tests/web"
+if [ -f "$web_test/package-lock.json" ] && ! cmp -s "$web_test/package-lock.json" "$web_test/node_modules/.installed-lock"; then
+  echo "install-deps: npm ci in tests/web" >&2
+  (cd "$web_test" && npm ci --no-audit --no-fund)
+  cp "$web_test/package-lock.json" "$web_test/node_modules/.installed-lock"
+fi

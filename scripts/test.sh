@@ -17,6 +17,9 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 
 status=0
 (cd "$root/build" && ctest --output-on-failure --timeout 600 "$@") || status=1
+# CTest shows a test's output only when it fails: a skipped test's reason ("SKIP ...") is
+# printed here, so that no skip goes unexplained.
+grep -h '^SKIP ' "$root/build/Testing/Temporary/LastTest.log" 2>/dev/null || true
 
 if [ "${LPV_TEST_SANITIZE:-1}" != 0 ]; then
   echo "== sanitizer build (build-sanitize: clang, AddressSanitizer + UndefinedBehaviorSanitizer)"

@@ -57,4 +57,13 @@ void check_limits(const api::SweepRequest& request, const RenderLimits& limits) 
   check_reference(request.reference, request.base.output, limits, "reference");
 }
 
+void check_limits(const api::BenchSuite& suite, const RenderLimits& limits) {
+  for (std::size_t i = 0; i < suite.cases.size(); ++i)
+    check_embedded(suite.cases[i].request, limits, "cases[" + std::to_string(i) + "].request");
+  for (const auto& [field, count] : {std::pair{"repetitions", suite.repetitions}, std::pair{"warmup", suite.warmup}})
+    if (count > limits.max_repeat)
+      throw LimitExceeded(field, "is " + std::to_string(count) + "; this server allows at most " +
+                                     std::to_string(limits.max_repeat) + " per case");
+}
+
 }  // namespace server

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "api/accuracy_request.hpp"
+#include "api/bench_suite.hpp"
 #include "api/render_request.hpp"
 
 #include <cstdint>
@@ -37,5 +38,8 @@ void check_limits(const api::RenderRequest& request, const RenderLimits& limits)
 // "parameters"), and for the reference's cost.
 void check_limits(const api::CompareRequest& request, const RenderLimits& limits);
 void check_limits(const api::SweepRequest& request, const RenderLimits& limits);
+// Every case's request (errors name the field under "cases[i].request"); repetitions and
+// warm-up renders per case within max_repeat, as a request's frames are.
+void check_limits(const api::BenchSuite& suite, const RenderLimits& limits);
 
 }  // namespace server

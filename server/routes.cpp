@@ -5,12 +5,14 @@
 #include "renderer/scene/builtin_scenes.hpp"
 #include "server/access.hpp"
 #include "server/accuracy_routes.hpp"
+#include "server/bench_route.hpp"
 #include "server/client_connection.hpp"
 #include "server/http_errors.hpp"
 #include "server/request_log.hpp"
 #include "server/render_response.hpp"
 #include "server/scene_report.hpp"
 #include "server/utc_time.hpp"
+#include "server/web_routes.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -40,6 +42,9 @@ constexpr std::array kRoutes = {
     Route{"/v1/render", "/v1/render", "POST"},
     Route{"/v1/compare", "/v1/compare", "POST"},
     Route{"/v1/sweep", "/v1/sweep", "POST"},
+    Route{"/v1/bench", "/v1/bench", "POST"},
+    Route{kWebPageRoute, "/", "GET"},  // the web page (docs/web.md) and its assets
+    Route{kWebAssetRoute, "/{asset}", "GET"},
 };
 
 // The longest a scene's name may be; it is only ever shown.
@@ -230,7 +235,8 @@ std::string route_pattern(const std::string& path) {
 void install_routes(httplib::Server& http, Service& service) {
   http.set_pre_routing_handler([&service](const httplib::Request& request, httplib::Response& response) {
     start_request_clock();
-    if (service.options.token.empty() || request.path == "/healthz" || request.path == "/readyz")
+    if (service.options.token.empty() || request.path == "/healthz" || request.path == "/readyz" ||
+        is_web_page_path(request.path))
       return httplib::Server::HandlerResponse::Unhandled;
     if (bearer_token_matches(request.get_header_value("Authorization"), service.options.token))
       return httplib::Server::HandlerResponse::Unhandled;
@@ -280,6 +286,11 @@ void install_routes(httplib::Server& http, Service& service) {
                                     const httplib::ContentReader& content) {
     handle_sweep(request, response, content, service);
   });
+  http.Post("/v1/bench", [&service](const httplib::Request& request, httplib::Response& response,
+                                    const httplib::ContentReader& content) {
+    handle_bench(request, response, content, service);
+  });
+  install_web_routes(http);
   for (const Route& route : kRoutes) install_method_not_allowed(http, route);
 
   // httplib answers some requests itself (no route, body too large, unreadable HTTP)

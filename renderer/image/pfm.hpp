@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "renderer/image/image.hpp"
@@ -15,5 +16,10 @@ namespace image {
 // Throws std::invalid_argument if the image is empty or pixels.size() is not
 // width * height * 4.
 std::vector<uint8_t> encode_pfm(const RgbaF32Image& img);
+
+// Decodes a colour PFM ("PF", either byte order) into RGBA with alpha 1, row 0 = top.
+// Throws std::invalid_argument saying what is wrong with anything else (a grey "Pf" map,
+// a bad header, too few bytes, a side over 65536).
+RgbaF32Image decode_pfm(std::span<const uint8_t> bytes);
 
 }  // namespace image

@@ -1,5 +1,8 @@
 #include "bench_options.hpp"
 
+#include <charconv>
+#include <functional>
+#include <sstream>
 #include <string_view>
 
 namespace bench {
@@ -7,65 +10,211 @@ namespace bench {
 const char* usage() {
   return R"(usage: lpv-bench sweep REQUEST.json|- [options]
        lpv-bench diff REQUEST.json|- [options]
+       lpv-bench run SUITE [options]
+       lpv-bench compare BASELINE.json CANDIDATE.json [options]
+       lpv-bench ab --a LPV_BENCH_A --b LPV_BENCH_B SUITE [options]
+       lpv-bench worker SUITE [options]
 
-sweep  renders the reference once, then every configuration of LPV settings the
-       request lists (the schema of POST /v1/sweep), and writes the accuracy-versus-
-       time table: sweep.json, sweep.csv, sweep.md (Markdown) and sweep.svg (error
-       against GPU time, Pareto front highlighted). A progress bar on standard error.
-diff   compares a render with a second setting or with the reference (the schema of
-       POST /v1/compare): writes base.png, other.png, difference.png (heat map),
-       base.exr, other.exr (linear) and compare.json (metrics, stats, reference).
+sweep    renders the reference once, then every configuration of LPV settings the
+         request lists (the schema of POST /v1/sweep), and writes the accuracy-versus-
+         time table: sweep.json, sweep.csv, sweep.md (Markdown) and sweep.svg (error
+         against GPU time, Pareto front highlighted). A progress bar on standard error.
+diff     compares a render with a second setting or with the reference (the schema of
+         POST /v1/compare): writes base.png, other.png, difference.png (heat map),
+         base.exr, other.exr (linear) and compare.json (metrics, stats, reference).
+run      times a benchmark suite (a file, or the name of one in bench/suites: default,
+         quick): per case an image render, warm-up renders, then timed repetitions;
+         writes the results (bench/results.schema.json) and prints a summary table.
+compare  a candidate's results against a baseline's: per case and metric the ratio of
+         the medians and a verdict (faster, slower, unchanged: Mann-Whitney U and a
+         minimum effect), and whether the image changed.
+ab       runs the suite with two builds' lpv-bench taking turns render by render (A B,
+         B A, ...) and compares them pair by pair (Wilcoxon signed-rank on the ratios):
+         the comparison that holds on a shared machine. Writes ab.json (the comparison),
+         a.json and b.json (each build's results).
+worker   one build's side of ab: renders the suite's cases when told to on standard input
+         and answers on standard output (the build must have it: ab starts it).
+See docs/perf-regression.md.
 
 options:
-  -o, --out-dir DIR      directory for the result files (default: .), made if missing
+  -o, --out FILE|DIR     sweep, diff, ab: directory for the files (default: .), made if
+                         missing; run: the results file (default: results.json);
+                         compare: also write the comparison as JSON
   --device NAME|INDEX    Vulkan device (default: $LPV_DEVICE, else lavapipe)
   -q, --quiet            no progress bar or summary
   -h, --help             this text
+run, ab:
+  --warmup N             untimed renders per case before the timed ones (default: the suite's)
+run, ab, worker:
+  --server-binary PATH   lpv-server for the server_round_trip cases, started on a free
+                         loopback port (default: the lpv-server beside lpv-bench; in ab,
+                         each build's own)
+  --no-server            skip the server_round_trip cases instead
+run:
+  --repetitions N        timed renders per case (default: the suite's)
+  --url URL              render every case through this lpv-server (POST /v1/render;
+                         $LPV_SERVER_TOKEN is sent as its bearer token)
+  --label NAME           the run's name in reports (default: the commit)
+  --commit ID            the commit to record (default: the build's, or $LPV_BENCH_COMMIT)
+run, compare, ab:
+  --report FILE          also write a Markdown summary (for job summaries)
+compare, ab:
+  --alpha P              significance level of each test (default: 0.01)
+  --min-effect F         smallest relative change that counts (default: 0.05 = 5%)
+  --min-ms MS            smallest absolute change that counts (default: 0.1; on a real
+                         GPU, whose passes take microseconds, use 0.005)
+  --image-tolerance E    relative MSE of the thumbnails still "the same image" (default: 1e-4)
+  --gate-passes          a pass slower is a regression too (default: only the frame's totals,
+                         gpu_ms, wall_ms and round_trip_ms, are; passes are reported)
+ab:
+  --a PATH, --b PATH     lpv-bench of the baseline (A) and of the candidate (B)
+  --rounds N             pairs of timed renders per case (default: the suite's repetitions)
 
-environment: LPV_DEVICE, LPV_PIPELINE_CACHE (a file, or "off")
-exit status: 0 success, 1 failure (device, files), 2 bad usage or bad request
+environment: LPV_DEVICE, LPV_PIPELINE_CACHE (a file, or "off"), LPV_BENCH_COMMIT,
+             LPV_SERVER_TOKEN
+exit status: 0 success (compare, ab: no regression); 1 failure (device, files, a case
+             that failed; compare, ab: a total slower (or a pass, with --gate-passes), an
+             image changed, a case failing in the candidate, or no case compared at all);
+             2 bad usage or bad input
 )";
 }
 
+namespace {
+
+constexpr unsigned bit(Command c) { return 1u << static_cast<unsigned>(c); }
+constexpr unsigned kAll = bit(Command::sweep) | bit(Command::diff) | bit(Command::run) | bit(Command::compare) |
+                          bit(Command::ab) | bit(Command::worker);
+constexpr unsigned kSuites = bit(Command::run) | bit(Command::ab);
+constexpr unsigned kLocalRuns = kSuites | bit(Command::worker);  // where this build renders
+constexpr unsigned kVerdicts = bit(Command::compare) | bit(Command::ab);
+constexpr unsigned kRenders = bit(Command::sweep) | bit(Command::diff) | kLocalRuns;
+
+const char* name_of(Command c) {
+  switch (c) {
+    case Command::sweep: return "sweep";
+    case Command::diff: return "diff";
+    case Command::run: return "run";
+    case Command::compare: return "compare";
+    case Command::ab: return "ab";
+    case Command::worker: return "worker";
+  }
+  return "?";
+}
+
+template <class T>
+std::string text_of(T x) {
+  std::ostringstream text;
+  text << x;
+  return text.str();
+}
+
+template <class T>
+T number(const std::string& option, const std::string& text, T lo, T hi) {
+  T value{};
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !(value >= lo) || !(value <= hi))
+    throw UsageError(option + " must be a number in [" + text_of(lo) + ", " + text_of(hi) + "], got '" +
+                     text + "'");
+  return value;
+}
+
+struct Flag {
+  std::string_view name;
+  std::string_view alias;
+  unsigned commands;
+  std::function<void(Options&, const std::string& value)> set;  // empty: a switch, see below
+  bool takes_value = true;
+};
+
+const std::vector<Flag>& flags() {
+  using S = const std::string&;
+  static const std::vector<Flag> table = {
+      {"--out", "-o", kAll & ~bit(Command::worker), [](Options& o, S v) { o.out = v; }},
+      {"--device", "", kRenders, [](Options& o, S v) { o.device = v; }},
+      {"--quiet", "-q", kAll, [](Options& o, S) { o.quiet = true; }, false},
+      {"--url", "", bit(Command::run), [](Options& o, S v) { o.url = v; }},
+      {"--repetitions", "", bit(Command::run),
+       [](Options& o, S v) { o.repetitions = number<std::uint32_t>("--repetitions", v, 1, 1000); }},
+      {"--warmup", "", kSuites, [](Options& o, S v) { o.warmup = number<std::uint32_t>("--warmup", v, 0, 100); }},
+      {"--report", "", bit(Command::run) | kVerdicts, [](Options& o, S v) { o.report = v; }},
+      {"--label", "", bit(Command::run), [](Options& o, S v) { o.label = v; }},
+      {"--commit", "", bit(Command::run), [](Options& o, S v) { o.commit = v; }},
+      {"--server-binary", "", kLocalRuns, [](Options& o, S v) { o.server_binary = v; }},
+      {"--no-server", "", kLocalRuns, [](Options& o, S) { o.no_server = true; }, false},
+      {"--alpha", "", kVerdicts,
+       [](Options& o, S v) { o.compare.thresholds.alpha = number<double>("--alpha", v, 1e-9, 0.5); }},
+      {"--min-effect", "", kVerdicts,
+       [](Options& o, S v) { o.compare.thresholds.min_effect = number<double>("--min-effect", v, 0.0, 10.0); }},
+      {"--min-ms", "", kVerdicts,
+       [](Options& o, S v) { o.compare.thresholds.min_ms = number<double>("--min-ms", v, 0.0, 1e6); }},
+      {"--image-tolerance", "", kVerdicts,
+       [](Options& o, S v) { o.compare.image_tolerance = number<double>("--image-tolerance", v, 0.0, 1e6); }},
+      {"--gate-passes", "", kVerdicts, [](Options& o, S) { o.compare.gate_passes = true; }, false},
+      {"--a", "", bit(Command::ab), [](Options& o, S v) { o.build_a = v; }},
+      {"--b", "", bit(Command::ab), [](Options& o, S v) { o.build_b = v; }},
+      {"--rounds", "", bit(Command::ab), [](Options& o, S v) { o.rounds = number<std::uint32_t>("--rounds", v, 1, 1000); }},
+  };
+  return table;
+}
+
+Command command_named(const std::string& name) {
+  for (const Command c : {Command::sweep, Command::diff, Command::run, Command::compare, Command::ab, Command::worker})
+    if (name == name_of(c)) return c;
+  throw UsageError("unknown command '" + name + "' (sweep, diff, run, compare, ab or worker)");
+}
+
+// The positional arguments each command takes, and what they are.
+void check_inputs(const Options& o) {
+  const std::size_t wanted = o.command == Command::compare ? 2 : 1;
+  if (o.inputs.size() < wanted) {
+    switch (o.command) {
+      case Command::sweep:
+      case Command::diff: throw UsageError("missing the request file (or - for standard input)");
+      case Command::run:
+      case Command::ab:
+      case Command::worker: throw UsageError("missing the suite (a file, or a name in bench/suites)");
+      case Command::compare: throw UsageError("compare needs two results files: BASELINE.json CANDIDATE.json");
+    }
+  }
+  if (o.inputs.size() > wanted) throw UsageError("unexpected argument '" + o.inputs[wanted] + "'");
+  if (o.command == Command::ab && (!o.build_a || !o.build_b))
+    throw UsageError("ab needs both builds: --a PATH_TO_LPV_BENCH_A --b PATH_TO_LPV_BENCH_B");
+}
+
+}  // namespace
+
 Options parse(int argc, char** argv) {
   Options o;
-  std::optional<std::string> command;
-  std::optional<std::string> request;
+  std::optional<Command> command;
+  // Options are checked against the command once it is known (it may come after them).
+  std::vector<std::pair<const Flag*, std::string>> given;
   for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw UsageError("option " + std::string(arg) + " needs a value");
-      return argv[++i];
-    };
+    const std::string arg = argv[i];
     if (arg == "-h" || arg == "--help") {
       o.help = true;
       return o;
-    } else if (arg == "-o" || arg == "--out-dir") {
-      o.out_dir = value();
-    } else if (arg == "--device") {
-      o.device = value();
-    } else if (arg == "-q" || arg == "--quiet") {
-      o.quiet = true;
-    } else if (arg.size() > 1 && arg[0] == '-') {
-      throw UsageError("unknown option '" + std::string(arg) + "'");
+    }
+    if (arg.size() > 1 && arg[0] == '-') {
+      const Flag* flag = nullptr;
+      for (const Flag& f : flags())
+        if (arg == f.name || (!f.alias.empty() && arg == f.alias)) flag = &f;
+      if (!flag) throw UsageError("unknown option '" + arg + "'");
+      if (flag->takes_value && i + 1 >= argc) throw UsageError("option " + arg + " needs a value");
+      given.emplace_back(flag, flag->takes_value ? argv[++i] : "");
     } else if (!command) {
-      command = arg;
-    } else if (!request) {
-      request = arg;
+      command = command_named(arg);
     } else {
-      throw UsageError("unexpected argument '" + std::string(arg) + "'");
+      o.inputs.push_back(arg);
     }
   }
-  if (!command) throw UsageError("missing the command (sweep or diff)");
-  if (*command == "sweep") {
-    o.command = Command::sweep;
-  } else if (*command == "diff") {
-    o.command = Command::diff;
-  } else {
-    throw UsageError("unknown command '" + *command + "' (sweep or diff)");
+  if (!command) throw UsageError("missing the command (sweep, diff, run, compare, ab or worker)");
+  o.command = *command;
+  for (const auto& [flag, value] : given) {
+    if (!(flag->commands & bit(o.command)))
+      throw UsageError("option " + std::string(flag->name) + " is not for " + name_of(o.command));
+    flag->set(o, value);
   }
-  if (!request) throw UsageError("missing the request file (or - for standard input)");
-  o.request_file = *request;
+  check_inputs(o);
   return o;
 }
 

@@ -1,21 +1,44 @@
-// Command line of lpv-bench: a subcommand, a request file and common options.
+// Command line of lpv-bench: a subcommand, its inputs and its options.
 #pragma once
 
+#include "renderer/bench/results_comparison.hpp"
+
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace bench {
 
-enum class Command { sweep, diff };
+enum class Command { sweep, diff, run, compare, ab, worker };
 
 struct Options {
   Command command = Command::sweep;
-  std::string request_file;              // "-" reads standard input
-  std::string out_dir = ".";             // where the result files go
-  std::optional<std::string> device;     // overrides LPV_DEVICE
-  bool quiet = false;                    // no progress or summary on standard error
+  std::vector<std::string> inputs;     // sweep, diff: the request ("-": stdin); run, ab, worker: the suite;
+                                       // compare: two results
+  std::optional<std::string> out;      // -o: the directory (sweep, diff, ab) or the file (run, compare)
+  std::optional<std::string> device;   // overrides LPV_DEVICE
+  bool quiet = false;                  // no progress or summary
   bool help = false;
+
+  // run (some for ab and worker too)
+  std::optional<std::string> url;            // render through this lpv-server
+  std::optional<std::uint32_t> repetitions;  // overrides the suite's
+  std::optional<std::uint32_t> warmup;       // overrides the suite's
+  std::optional<std::string> report;         // Markdown summary (run, compare, ab)
+  std::optional<std::string> label;
+  std::optional<std::string> commit;         // overrides the build's commit
+  std::optional<std::string> server_binary;  // lpv-server for round trips (default: beside lpv-bench)
+  bool no_server = false;                    // skip round trips rather than start a server
+
+  // compare, ab
+  CompareOptions compare;
+
+  // ab
+  std::optional<std::string> build_a;  // lpv-bench of the baseline
+  std::optional<std::string> build_b;  // lpv-bench of the candidate
+  std::optional<std::uint32_t> rounds;  // pairs of renders per case (default: the suite's repetitions)
 };
 
 class UsageError : public std::runtime_error {

@@ -1,10 +1,15 @@
-// lpv-bench: accuracy against time from the command line. `sweep` and `diff` do what
-// POST /v1/sweep and POST /v1/compare do, on a device of their own, and write files.
+// lpv-bench: accuracy against time and performance regressions from the command line.
+// `sweep` and `diff` do what POST /v1/sweep and POST /v1/compare do, on a device of their
+// own, and write files; `run`, `compare` and `ab` time benchmark suites and judge the
+// differences (commands.hpp).
 #include "api/accuracy_report.hpp"
 #include "api/accuracy_request.hpp"
 #include "api/request_error.hpp"
 #include "api/request_json.hpp"
 #include "bench_options.hpp"
+#include "commands.hpp"
+#include "input_files.hpp"
+#include "lab.hpp"
 #include "progress_bar.hpp"
 #include "renderer/accuracy/compare.hpp"
 #include "renderer/accuracy/sweep.hpp"
@@ -39,29 +44,10 @@ std::string read_request_text(const std::string& file) {
   return text.str();
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  image::write_file_atomically(path, std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
-}
-
-// Every device, renderer and workbench of one command, destroyed in the right order.
-struct Lab {
-  explicit Lab(const bench::Options& options)
-      : device([&] {
-          vkx::DeviceOptions device_options = vkx::DeviceOptions::from_environment();
-          if (options.device) device_options.selector = *options.device;
-          return device_options;
-        }()),
-        renderer(device),
-        bench(renderer) {}
-  vkx::Device device;
-  renderer::Renderer renderer;
-  accuracy::Workbench bench;
-};
-
 int run_sweep(const bench::Options& options, const std::string& text) {
   const api::SweepRequest request = api::parse_sweep_request(text);
   const std::size_t total = api::sweep_configurations(request).size();
-  Lab lab(options);
+  bench::Lab lab(options);
   bench::ProgressBar bar(!options.quiet);
   accuracy::SweepObserver observer;
   observer.reference_progress = [&](double fraction) {
@@ -75,30 +61,30 @@ int run_sweep(const bench::Options& options, const std::string& text) {
   const accuracy::SweepResult result = accuracy::sweep(lab.bench, request, observer);
   bar.finish();
 
-  const std::filesystem::path dir = options.out_dir;
+  const std::filesystem::path dir = options.out.value_or(".");
   std::filesystem::create_directories(dir);
   nlohmann::json json = {{"complete", result.complete},
                          {"reference", api::to_json(result.reference)},
                          {"table", api::to_json(result.table)},
                          {"request", nlohmann::json::parse(text)}};
-  write_text(dir / "sweep.json", json.dump(2) + "\n");
-  write_text(dir / "sweep.csv", api::to_csv(result.table));
+  bench::write_text_file(dir / "sweep.json", json.dump(2) + "\n");
+  bench::write_text_file(dir / "sweep.csv", api::to_csv(result.table));
   const std::string markdown = bench::sweep_markdown(result.table, result.reference);
-  write_text(dir / "sweep.md", markdown);
-  write_text(dir / "sweep.svg", api::to_svg_plot(result.table, "LPV error against GPU time: " + request.base.scene));
+  bench::write_text_file(dir / "sweep.md", markdown);
+  bench::write_text_file(dir / "sweep.svg", api::to_svg_plot(result.table, "LPV error against GPU time: " + request.base.scene));
   if (!options.quiet) std::fputs(markdown.c_str(), stdout);
   return 0;
 }
 
 int run_diff(const bench::Options& options, const std::string& text) {
   const api::CompareRequest request = api::parse_compare_request(text);
-  Lab lab(options);
+  bench::Lab lab(options);
   bench::ProgressBar bar(!options.quiet && request.reference.has_value());
   const accuracy::Comparison c =
       accuracy::compare(lab.bench, request, [&](double fraction) { bar.update("reference", fraction); });
   bar.finish();
 
-  const std::filesystem::path dir = options.out_dir;
+  const std::filesystem::path dir = options.out.value_or(".");
   std::filesystem::create_directories(dir);
   image::write_file_atomically(dir / "base.png", image::encode_png(c.base.display));
   image::write_file_atomically(dir / "other.png", image::encode_png(c.other.display));
@@ -112,7 +98,7 @@ int run_diff(const bench::Options& options, const std::string& text) {
   if (c.base.stats) json["base_stats"] = api::to_json(*c.base.stats);
   if (c.other.stats) json["other_stats"] = api::to_json(*c.other.stats);
   if (c.other.reference) json["reference"] = api::to_json(*c.other.reference);
-  write_text(dir / "compare.json", json.dump(2) + "\n");
+  bench::write_text_file(dir / "compare.json", json.dump(2) + "\n");
   if (!options.quiet) {
     std::printf("base against %s (%s pixels: %llu)\n", c.other.label.c_str(), api::to_string(c.mask).c_str(),
                 static_cast<unsigned long long>(c.final_error.pixels));
@@ -134,8 +120,15 @@ int run(int argc, char** argv) {
     std::fputs(bench::usage(), stdout);
     return 0;
   }
-  const std::string text = read_request_text(options.request_file);
-  return options.command == bench::Command::sweep ? run_sweep(options, text) : run_diff(options, text);
+  switch (options.command) {
+    case bench::Command::run: return bench::run_command(options);
+    case bench::Command::compare: return bench::compare_command(options);
+    case bench::Command::ab: return bench::ab_command(options);
+    case bench::Command::worker: return bench::worker_command(options);
+    case bench::Command::sweep: return run_sweep(options, read_request_text(options.inputs[0]));
+    case bench::Command::diff: return run_diff(options, read_request_text(options.inputs[0]));
+  }
+  return kExitFailure;
 }
 
 }  // namespace
@@ -148,6 +141,9 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const api::RequestError& e) {
     std::fprintf(stderr, "lpv-bench: bad request: %s\n", e.what());
+    return kExitBadInput;
+  } catch (const bench::BadInput& e) {
+    std::fprintf(stderr, "lpv-bench: %s\n", e.what());
     return kExitBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lpv-bench: %s\n", e.what());

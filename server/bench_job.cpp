@@ -1,0 +1,26 @@
+#include "server/bench_job.hpp"
+
+#include "renderer/bench/renderer_case_runner.hpp"
+
+namespace server {
+namespace {
+
+constexpr std::size_t kShortCommit = 12;
+
+}  // namespace
+
+void BenchJob::run(accuracy::Workbench& bench) {
+  // No scene files (what the server renders is uploaded), and no round trips: measuring the
+  // server's HTTP from inside the server would measure nothing a client sees.
+  bench::RendererCaseRunner renders(bench.renderer, device, false);
+  bench::RunObserver observer;
+  observer.stop_requested = [this] { return stop.load() || Clock::now() >= deadline; };
+  result = bench::run_suite(suite,
+                            {&renders, nullptr, "POST /v1/bench runs in the server; time round trips with "
+                                                "lpv-bench run --url"},
+                            {suite.repetitions, suite.warmup}, observer);
+  result->mode = "server";
+  result->label = result->build.commit.substr(0, kShortCommit);
+}
+
+}  // namespace server

@@ -1,0 +1,191 @@
+// lpv-bench compare and ab on constructed results: an image change is flagged even when
+// every time is the same, rounding is not, and failures and missing cases are reported.
+#include "renderer/bench/image_fingerprint.hpp"
+#include "renderer/bench/results_comparison.hpp"
+#include "renderer/image/pfm.hpp"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+// A 40x30 gradient scaled by `brightness`.
+image::RgbaF32Image gradient(float brightness) {
+  image::RgbaF32Image img{40, 30, {}};
+  for (std::uint32_t y = 0; y < img.height; ++y)
+    for (std::uint32_t x = 0; x < img.width; ++x)
+      for (const float v : {0.01f * float(x), 0.02f * float(y), 0.5f, 1.0f}) img.pixels.push_back(v * brightness);
+  return img;
+}
+
+api::BenchResults results(const std::string& label, const image::RgbaF32Image& picture, std::vector<double> gpu_ms) {
+  api::BenchResults r;
+  r.suite = "test";
+  r.suite_version = 1;
+  r.label = label;
+  r.mode = "in_process";
+  r.repetitions = static_cast<std::uint32_t>(gpu_ms.size());
+  r.machine.hostname = "host";
+  r.build.commit = "unknown";
+  api::BenchCaseResult c;
+  c.name = "cornell-box/lpv";
+  c.request = nlohmann::json::object();
+  c.metrics = {{"gpu_ms", gpu_ms}, {"wall_ms", gpu_ms}};
+  c.image = bench::fingerprint(picture);
+  r.cases.push_back(c);
+  return r;
+}
+
+const std::vector<double> kTimes = {10.0, 10.2, 9.9, 10.1, 10.0, 10.3, 9.8};
+
+TEST(BenchComparison, AChangedImageIsARegressionEvenWhenTimesAreUnchanged) {
+  const bench::Comparison c =
+      bench::compare_runs(results("base", gradient(1.0f), kTimes), results("cand", gradient(1.2f), kTimes), {});
+  ASSERT_EQ(c.cases.size(), 1u);
+  EXPECT_EQ(c.count(bench::Verdict::unchanged), 2u);
+  EXPECT_EQ(c.count(bench::Verdict::slower), 0u);
+  EXPECT_EQ(c.cases[0].image.verdict, bench::ImageVerdict::changed);
+  ASSERT_TRUE(c.cases[0].image.metrics);
+  EXPECT_GT(c.cases[0].image.metrics->relative_mse, 1e-4);
+  EXPECT_EQ(c.images_changed(), 1u);
+  EXPECT_TRUE(c.regression());
+}
+
+TEST(BenchComparison, TheSameImageAndRoundingAreNotAChange) {
+  const api::BenchResults base = results("base", gradient(1.0f), kTimes);
+  const bench::Comparison same = bench::compare_runs(base, results("cand", gradient(1.0f), kTimes), {});
+  EXPECT_EQ(same.cases[0].image.verdict, bench::ImageVerdict::same);
+  EXPECT_FALSE(same.regression());
+  // A float's last bits differ (a different compiler, the order of atomic adds).
+  const bench::Comparison rounded = bench::compare_runs(base, results("cand", gradient(1.000001f), kTimes), {});
+  EXPECT_EQ(rounded.cases[0].image.verdict, bench::ImageVerdict::within_tolerance);
+  EXPECT_FALSE(rounded.regression());
+}
+
+TEST(BenchComparison, AnImageOfAnotherSizeIsChanged) {
+  api::BenchResults cand = results("cand", gradient(1.0f), kTimes);
+  image::RgbaF32Image wide = gradient(1.0f);
+  wide.width = 30;
+  wide.height = 40;
+  cand.cases[0].image = bench::fingerprint(wide);
+  const bench::Comparison c = bench::compare_runs(results("base", gradient(1.0f), kTimes), cand, {});
+  EXPECT_EQ(c.cases[0].image.verdict, bench::ImageVerdict::changed);
+  EXPECT_NE(c.cases[0].image.detail.find("30x40 instead of 40x30"), std::string::npos) << c.cases[0].image.detail;
+}
+
+TEST(BenchComparison, ACorruptThumbnailIsReportedNotThrown) {
+  api::BenchResults cand = results("cand", gradient(1.5f), kTimes);
+  cand.cases[0].image->thumbnail_pfm_base64 = "not base64!";
+  const bench::Comparison c = bench::compare_runs(results("base", gradient(1.0f), kTimes), cand, {});
+  EXPECT_EQ(c.cases[0].image.verdict, bench::ImageVerdict::changed);
+  EXPECT_NE(c.cases[0].image.detail.find("not base64"), std::string::npos) << c.cases[0].image.detail;
+}
+
+TEST(BenchComparison, SlowerTimesAreARegression) {
+  std::vector<double> slower;
+  for (const double t : kTimes) slower.push_back(t * 1.3);
+  const bench::Comparison c =
+      bench::compare_runs(results("base", gradient(1.0f), kTimes), results("cand", gradient(1.0f), slower), {});
+  EXPECT_EQ(c.count(bench::Verdict::slower), 2u);
+  EXPECT_NEAR(c.cases[0].metrics[0].ratio, 1.3, 1e-9);
+  EXPECT_TRUE(c.regression());
+}
+
+TEST(BenchComparison, APassSlowerIsReportedAndGatesOnlyWhenAskedTo) {
+  api::BenchResults base = results("base", gradient(1.0f), kTimes);
+  api::BenchResults cand = results("cand", gradient(1.0f), kTimes);
+  base.cases[0].metrics.push_back({"pass.rsm", {2.0, 2.1, 2.0, 1.9, 2.0, 2.05, 2.0}});
+  cand.cases[0].metrics.push_back({"pass.rsm", {3.0, 3.1, 3.0, 2.9, 3.0, 3.05, 3.0}});
+  const bench::Comparison by_default = bench::compare_runs(base, cand, {});
+  EXPECT_EQ(by_default.count(bench::Verdict::slower), 1u);
+  EXPECT_EQ(by_default.regressions(), 0u);
+  EXPECT_FALSE(by_default.regression());
+  bench::CompareOptions strict;
+  strict.gate_passes = true;
+  EXPECT_TRUE(bench::compare_runs(base, cand, strict).regression());
+}
+
+TEST(BenchComparison, FailuresAndMissingCases) {
+  const api::BenchResults base = results("base", gradient(1.0f), kTimes);
+  api::BenchResults cand = results("cand", gradient(1.0f), kTimes);
+  cand.cases[0].status = api::BenchCaseStatus::failed;
+  cand.cases[0].reason = "device lost";
+  bench::Comparison c = bench::compare_runs(base, cand, {});
+  EXPECT_EQ(c.cases[0].outcome, bench::CaseOutcome::failed);
+  EXPECT_TRUE(c.cases[0].candidate_failed);
+  EXPECT_TRUE(c.regression());
+
+  // Broken in both: not this candidate's doing.
+  api::BenchResults broken = base;
+  broken.cases[0].status = api::BenchCaseStatus::failed;
+  EXPECT_FALSE(bench::compare_runs(broken, cand, {}).regression());
+
+  api::BenchResults renamed = base;
+  renamed.cases[0].name = "another";
+  c = bench::compare_runs(base, renamed, {});
+  ASSERT_EQ(c.cases.size(), 2u);
+  EXPECT_EQ(c.cases[0].outcome, bench::CaseOutcome::only_in_baseline);
+  EXPECT_EQ(c.cases[1].outcome, bench::CaseOutcome::only_in_candidate);
+  EXPECT_FALSE(c.regression());
+}
+
+TEST(BenchComparison, TooFewRepetitionsAreWarnedAbout) {
+  const bench::Comparison c = bench::compare_runs(results("base", gradient(1.0f), {10.0, 10.1, 10.2}),
+                                                  results("cand", gradient(1.0f), {20.0, 20.1, 20.2}), {});
+  EXPECT_EQ(c.count(bench::Verdict::slower), 0u);  // 3 against 3 cannot reach p < 0.01
+  ASSERT_FALSE(c.warnings.empty());
+  EXPECT_NE(c.warnings.back().find("3 against 3 repetitions"), std::string::npos) << c.warnings.back();
+}
+
+TEST(BenchComparison, PairsAreComparedPairByPair) {
+  // Each pair's machine load multiplies both builds; B is 25% slower within every pair.
+  std::vector<double> a, b;
+  for (const double load : {1.0, 1.4, 0.9, 1.6, 1.1, 1.3, 1.0, 1.5, 0.95, 1.2}) {
+    a.push_back(10.0 * load);
+    b.push_back(12.5 * load);
+  }
+  const bench::Comparison c = bench::compare_pairs(results("A", gradient(1.0f), a), results("B", gradient(1.0f), b), {});
+  EXPECT_TRUE(c.paired);
+  ASSERT_EQ(c.cases[0].metrics.size(), 2u);
+  const bench::MetricVerdict& v = c.cases[0].metrics[0];
+  EXPECT_NEAR(v.ratio, 1.25, 1e-9);
+  EXPECT_EQ(v.n_baseline, 10u);
+  EXPECT_EQ(v.verdict, bench::Verdict::slower);
+  EXPECT_TRUE(c.regression());
+  // The same samples as separate runs: the load's spread hides the change.
+  EXPECT_EQ(bench::compare_runs(results("A", gradient(1.0f), a), results("B", gradient(1.0f), b), {})
+                .count(bench::Verdict::slower),
+            0u);
+}
+
+TEST(BenchFingerprint, ThumbnailIsABoxFilterToAtMost64Pixels) {
+  image::RgbaF32Image big{130, 70, std::vector<float>(130 * 70 * 4, 2.0f)};
+  big.pixels[0] = 11.0f;  // the top-left block averages it in
+  const image::RgbaF32Image small = bench::thumbnail(big, 64);
+  EXPECT_EQ(small.width, 44u);  // a factor of 3: 130 / 3 rounded up
+  EXPECT_EQ(small.height, 24u);
+  EXPECT_FLOAT_EQ(small.pixels[0], 3.0f);  // (11 + 8 * 2) / 9
+  EXPECT_FLOAT_EQ(small.pixels[4], 2.0f);
+  EXPECT_FLOAT_EQ(small.pixels.back(), 2.0f);  // the cut block at the corner
+
+  const api::BenchImage f = bench::fingerprint(big);
+  EXPECT_EQ(f.sha256.size(), 64u);
+  EXPECT_EQ(f.thumbnail_width, 44u);
+  EXPECT_NE(f.sha256, bench::fingerprint(gradient(1.0f)).sha256);
+}
+
+TEST(BenchFingerprint, PfmDecodesWhatItEncodes) {
+  const image::RgbaF32Image img = gradient(3.0f);
+  const std::vector<std::uint8_t> pfm = image::encode_pfm(img);
+  const image::RgbaF32Image back = image::decode_pfm(pfm);
+  EXPECT_EQ(back.width, img.width);
+  EXPECT_EQ(back.height, img.height);
+  for (std::size_t i = 0; i < img.pixels.size(); ++i)
+    EXPECT_EQ(back.pixels[i], i % 4 == 3 ? 1.0f : img.pixels[i]) << i;
+  const std::vector<std::uint8_t> truncated(pfm.begin(), pfm.end() - 4);
+  EXPECT_THROW(image::decode_pfm(truncated), std::invalid_argument);
+  const std::string grey = "Pf\n1 1\n-1.0\n0000";
+  EXPECT_THROW(image::decode_pfm(std::span(reinterpret_cast<const std::uint8_t*>(grey.data()), grey.size())),
+               std::invalid_argument);
+}
+
+}  // namespace

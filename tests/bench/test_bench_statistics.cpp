@@ -1,0 +1,162 @@
+// The statistics of lpv-bench compare and ab on made-up timings whose truth is known: the
+// exact p-values on small cases, then verdicts over many seeded trials, so that each claim
+// ("a 20% shift with low noise is slower") is a rate, not the luck of one draw.
+#include "renderer/bench/metric_verdict.hpp"
+#include "renderer/bench/statistics.hpp"
+#include "synthetic_times.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+namespace {
+
+using bench::Verdict;
+using bench_test::SyntheticTimes;
+
+constexpr int kTrials = 200;
+const bench::Thresholds kDefaults;  // alpha 0.01, min effect 5%, 0.1 ms
+
+// How many of kTrials give `wanted`; each trial draws from its own seed.
+int count_verdicts(Verdict wanted, const std::function<bench::MetricVerdict(SyntheticTimes&)>& trial) {
+  int n = 0;
+  for (int seed = 1; seed <= kTrials; ++seed) {
+    SyntheticTimes times(static_cast<std::uint32_t>(seed));
+    n += trial(times).verdict == wanted ? 1 : 0;
+  }
+  return n;
+}
+
+TEST(BenchStatistics, MannWhitneyExactPValues) {
+  // Complete separation of 3 and 3: 2 of the C(6, 3) = 20 splits are as extreme.
+  EXPECT_NEAR(bench::mann_whitney_p(std::vector{1.0, 2.0, 3.0}, std::vector{4.0, 5.0, 6.0}), 0.1, 1e-12);
+  EXPECT_NEAR(bench::mann_whitney_smallest_p(3, 3), 0.1, 1e-12);
+  EXPECT_NEAR(bench::mann_whitney_smallest_p(5, 5), 2.0 / 252.0, 1e-12);
+  // Identical samples (all ties) say nothing.
+  EXPECT_DOUBLE_EQ(bench::mann_whitney_p(std::vector{2.0, 2.0, 2.0}, std::vector{2.0, 2.0, 2.0}), 1.0);
+  // Interleaved: 1 3 5 against 2 4 6 is as central as it gets but one step.
+  EXPECT_GT(bench::mann_whitney_p(std::vector{1.0, 3.0, 5.0}, std::vector{2.0, 4.0, 6.0}), 0.5);
+  EXPECT_DOUBLE_EQ(bench::mann_whitney_p(std::vector<double>{}, std::vector{1.0}), 1.0);
+}
+
+TEST(BenchStatistics, WilcoxonExactPValues) {
+  // 5 differences of one sign: 2 of 2^5 sign patterns are as extreme.
+  EXPECT_NEAR(bench::wilcoxon_signed_rank_p(std::vector{0.1, 0.2, 0.3, 0.4, 0.5}), 2.0 / 32.0, 1e-12);
+  EXPECT_NEAR(bench::wilcoxon_smallest_p(10), 2.0 / 1024.0, 1e-12);
+  EXPECT_DOUBLE_EQ(bench::wilcoxon_signed_rank_p(std::vector{0.0, 0.0}), 1.0);  // zeros are dropped
+  EXPECT_GT(bench::wilcoxon_signed_rank_p(std::vector{-0.3, 0.1, -0.2, 0.25, 0.05, -0.15}), 0.5);
+}
+
+TEST(BenchStatistics, NormalApproximationsBeyondTheExactRange) {
+  SyntheticTimes times(7);
+  const auto a = times.times(150, 10.0, 0.05);
+  const auto same = times.times(150, 10.0, 0.05);
+  const auto shifted = times.times(150, 11.0, 0.05);
+  EXPECT_GT(bench::mann_whitney_p(a, same), 0.01);
+  EXPECT_LT(bench::mann_whitney_p(a, shifted), 1e-6);
+  std::vector<double> differences;
+  for (std::size_t i = 0; i < a.size(); ++i) differences.push_back(shifted[i] - a[i]);
+  EXPECT_LT(bench::wilcoxon_signed_rank_p(differences), 1e-6);
+}
+
+TEST(BenchStatistics, MedianIntervalFromOrderStatistics) {
+  const std::vector<double> x = {5, 3, 9, 1, 7, 2, 10, 4, 8, 6};
+  // n = 10: P(B <= 1) = 11/1024 <= 0.025, P(B <= 2) = 56/1024 > 0.025: the 2nd and 9th values.
+  EXPECT_EQ(bench::median_interval(x, 0.95), std::make_pair(2.0, 9.0));
+  EXPECT_EQ(bench::median_interval(x, 0.99), std::make_pair(1.0, 10.0));
+  EXPECT_EQ(bench::median_interval({4.0}, 0.99), std::make_pair(4.0, 4.0));
+}
+
+TEST(BenchVerdicts, IdenticalDistributionsAreUnchanged) {
+  const int unchanged = count_verdicts(Verdict::unchanged, [](SyntheticTimes& t) {
+    return bench::compare_unpaired("gpu_ms", t.times(10, 100.0, 0.03), t.times(10, 100.0, 0.03), kDefaults);
+  });
+  EXPECT_EQ(unchanged, kTrials);
+  const std::vector<double> same = {10.0, 10.5, 9.8, 10.1, 10.2};
+  const bench::MetricVerdict v = bench::compare_unpaired("gpu_ms", same, same, kDefaults);
+  EXPECT_EQ(v.verdict, Verdict::unchanged);
+  EXPECT_DOUBLE_EQ(v.ratio, 1.0);
+}
+
+TEST(BenchVerdicts, TwentyPercentSlowerWithLowNoiseIsSlower) {
+  const int slower = count_verdicts(Verdict::slower, [](SyntheticTimes& t) {
+    return bench::compare_unpaired("gpu_ms", t.times(10, 100.0, 0.03), t.times(10, 120.0, 0.03), kDefaults);
+  });
+  EXPECT_EQ(slower, kTrials);
+  const int faster = count_verdicts(Verdict::faster, [](SyntheticTimes& t) {
+    return bench::compare_unpaired("gpu_ms", t.times(10, 120.0, 0.03), t.times(10, 100.0, 0.03), kDefaults);
+  });
+  EXPECT_EQ(faster, kTrials);
+}
+
+TEST(BenchVerdicts, TwentyPercentBuriedInHighNoiseIsNotSignificant) {
+  // Noise of 50% (log-normal sigma 0.5) and 10 repetitions: a 20% shift is rarely
+  // significant at alpha 0.01 (power about 5%); it must not be called often.
+  const int slower = count_verdicts(Verdict::slower, [](SyntheticTimes& t) {
+    return bench::compare_unpaired("gpu_ms", t.times(10, 100.0, 0.5), t.times(10, 120.0, 0.5), kDefaults);
+  });
+  EXPECT_LE(slower, kTrials / 10);
+}
+
+TEST(BenchVerdicts, SignificantButTinyChangesAreUnchanged) {
+  // 2% slower with almost no noise: significant, but under the minimum effect of 5%.
+  const int unchanged = count_verdicts(Verdict::unchanged, [](SyntheticTimes& t) {
+    return bench::compare_unpaired("gpu_ms", t.times(10, 100.0, 0.001), t.times(10, 102.0, 0.001), kDefaults);
+  });
+  EXPECT_EQ(unchanged, kTrials);
+  // 50% of 0.1 ms is below the timers' resolution (min_ms 0.1).
+  const std::vector<double> base = {0.10, 0.10, 0.10, 0.10, 0.10};
+  const std::vector<double> cand = {0.15, 0.15, 0.15, 0.15, 0.15};
+  EXPECT_EQ(bench::compare_unpaired("pass.tonemap", base, cand, kDefaults).verdict, Verdict::unchanged);
+}
+
+// Pairs share the machine's state at their time: `drift` multiplies both.
+struct PairedTimes {
+  std::vector<double> a, b;
+};
+PairedTimes pairs(SyntheticTimes& t, std::size_t n, double a_ms, double b_ms, double noise, double drift) {
+  PairedTimes p;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double load = std::exp(drift * t.normal());
+    p.a.push_back(a_ms * load * std::exp(noise * t.normal()));
+    p.b.push_back(b_ms * load * std::exp(noise * t.normal()));
+  }
+  return p;
+}
+
+TEST(BenchPairedVerdicts, IdenticalBuildsAreUnchanged) {
+  const int unchanged = count_verdicts(Verdict::unchanged, [](SyntheticTimes& t) {
+    const PairedTimes p = pairs(t, 10, 100.0, 100.0, 0.02, 0.3);
+    return bench::compare_paired("gpu_ms", p.a, p.b, kDefaults);
+  });
+  EXPECT_EQ(unchanged, kTrials);
+}
+
+TEST(BenchPairedVerdicts, TwentyPercentSlowerIsFoundThroughMachineDrift) {
+  // The machine's load swings by 30% between pairs: separate runs cannot see a 20% change
+  // through it, pairs can.
+  const int paired = count_verdicts(Verdict::slower, [](SyntheticTimes& t) {
+    const PairedTimes p = pairs(t, 10, 100.0, 120.0, 0.02, 0.3);
+    const bench::MetricVerdict v = bench::compare_paired("gpu_ms", p.a, p.b, kDefaults);
+    EXPECT_NEAR(v.ratio, 1.2, 0.05);
+    EXPECT_LE(v.ratio_interval->first, v.ratio);
+    EXPECT_GE(v.ratio_interval->second, v.ratio);
+    return v;
+  });
+  EXPECT_EQ(paired, kTrials);
+  const int unpaired = count_verdicts(Verdict::slower, [](SyntheticTimes& t) {
+    const PairedTimes p = pairs(t, 10, 100.0, 120.0, 0.02, 0.3);
+    return bench::compare_unpaired("gpu_ms", p.a, p.b, kDefaults);
+  });
+  EXPECT_LE(unpaired, kTrials / 4);
+}
+
+TEST(BenchPairedVerdicts, TwentyPercentBuriedInHighNoiseIsNotSignificant) {
+  const int slower = count_verdicts(Verdict::slower, [](SyntheticTimes& t) {
+    const PairedTimes p = pairs(t, 10, 100.0, 120.0, 0.5, 0.0);
+    return bench::compare_paired("gpu_ms", p.a, p.b, kDefaults);
+  });
+  EXPECT_LE(slower, kTrials / 10);
+}
+
+}  // namespace

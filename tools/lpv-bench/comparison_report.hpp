@@ -1,0 +1,14 @@
+// A comparison for people: the terminal shows each case's totals and whatever changed;
+// the Markdown report (--report) adds every metric, for job summaries.
+#pragma once
+
+#include "renderer/bench/results_comparison.hpp"
+
+#include <string>
+
+namespace bench {
+
+std::string comparison_text(const Comparison& comparison);
+std::string comparison_markdown(const Comparison& comparison);
+
+}  // namespace bench

@@ -1,0 +1,148 @@
+// Sweeps from the page: POST /v1/sweep?format=ndjson with the current settings as the base
+// (at a smaller image size: a sweep renders every row and traces a reference), read as a
+// stream so progress shows while the reference is traced and the rows arrive; the plot
+// grows with them and gets its Pareto front when the sweep is done. A point (or a row's
+// button) loads its configuration into the settings.
+
+import { sweep } from './api_client.js';
+import { describeSettings, sweepPlot } from './sweep_plot.js';
+import { formatMs } from './svg.js';
+
+const LIST_PARAMETERS = ['grid', 'iterations', 'cascades', 'rsm', 'vpl_downsample', 'bounces'];
+
+// "8, 16, 32" -> [8, 16, 32]; what is not a number goes to the server as text, which names it.
+function parseList(text) {
+  return text.split(',').map((item) => item.trim()).filter(Boolean).map((item) => (Number.isNaN(Number(item)) ? item : Number(item)));
+}
+
+export class SweepPanel {
+  #controller = null;
+  #rows = [];
+
+  constructor({ elements, state, errors }) {
+    Object.assign(this, { elements, state, errors });
+    elements.form.addEventListener('submit', (event) => {
+      event.preventDefault();
+      this.run();
+    });
+    elements.stop.addEventListener('click', () => this.#controller?.abort());
+  }
+
+  #body() {
+    const { elements } = this;
+    const parameters = {};
+    for (const name of LIST_PARAMETERS) {
+      const values = parseList(elements.lists[name].value);
+      if (values.length) parameters[name] = values;
+    }
+    const occlusion = [];
+    if (elements.occlusionOn.checked) occlusion.push(true);
+    if (elements.occlusionOff.checked) occlusion.push(false);
+    if (occlusion.length) parameters.occlusion = occlusion;
+    const base = this.state.request;
+    const side = Number(elements.size.value);
+    base.output = { ...base.output, width: side, height: side };
+    return {
+      base,
+      parameters,
+      lpv_off_row: elements.lpvOff.checked,
+      reference: { samples: Number(elements.samples.value) },
+      axis: { image: elements.image.value, metric: elements.metric.value },
+    };
+  }
+
+  async run() {
+    this.#controller?.abort();
+    const controller = new AbortController();
+    this.#controller = controller;
+    const { elements } = this;
+    const body = this.#body();
+    this.#rows = [];
+    this.errors.clear();
+    this.#draw(body.axis);
+    elements.run.disabled = true;
+    elements.stop.disabled = false;
+    this.#progress('Tracing the reference', 0);
+    try {
+      await sweep(body, controller.signal, (event) => this.#onEvent(event, body.axis));
+    } catch (error) {
+      if (error.name === 'AbortError') this.#progress('Stopped', elements.progress.value);
+      else this.errors.show(error);
+    } finally {
+      if (this.#controller === controller) {
+        elements.run.disabled = false;
+        elements.stop.disabled = true;
+      }
+    }
+  }
+
+  #onEvent(event, axis) {
+    const { elements } = this;
+    switch (event.event) {
+      case 'reference_progress':
+        this.#progress('Tracing the reference', event.fraction);
+        break;
+      case 'reference':
+        elements.status.textContent = `Reference: ${event.reference.samples} samples per pixel, traced in ${formatMs(event.reference.trace_ms)} ms` +
+          `${event.reference.cached ? ' (cached)' : ''}, noise RMSE ${event.reference.noise_rmse.toPrecision(3)}.`;
+        break;
+      case 'row':
+        this.#rows[event.index] = event.row;
+        this.#progress(`Rendered ${event.index + 1} of ${event.total} configurations`, (event.index + 1) / event.total);
+        this.#draw(axis);
+        break;
+      case 'done':
+        this.#rows = event.table.rows;
+        this.#progress(event.complete ? `Done: ${this.#rows.length} configurations` : 'Ended early at the deadline', 1);
+        this.#draw(axis);
+        break;
+      case 'error':
+        this.#progress('Failed', this.elements.progress.value);
+        this.errors.show(event.error);
+        break;
+    }
+  }
+
+  #progress(text, fraction) {
+    this.elements.progressLabel.textContent = text;
+    this.elements.progress.value = fraction;
+  }
+
+  #draw(axis) {
+    const rows = this.#rows.filter(Boolean);
+    this.elements.plot.replaceChildren(sweepPlot(rows, axis, (row) => this.load(row)));
+    this.#table(rows, axis);
+  }
+
+  #table(rows, axis) {
+    const table = this.elements.table;
+    const caption = Object.assign(document.createElement('caption'), { textContent: 'The rows: load one into the settings' });
+    const head = document.createElement('tr');
+    for (const title of ['configuration', 'GPU ms', `${axis.metric} (${axis.image})`, 'Pareto', ''])
+      head.append(Object.assign(document.createElement('th'), { textContent: title, scope: 'col' }));
+    const body = rows.map((row) => {
+      const tr = document.createElement('tr');
+      const load = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Load' });
+      load.addEventListener('click', () => this.load(row));
+      const error = row[`${axis.image}_error`][axis.metric];
+      for (const text of [describeSettings(row.settings), formatMs(row.gpu_ms), error === null ? '∞' : error.toPrecision(3), row.pareto ? '★' : ''])
+        tr.append(Object.assign(document.createElement('td'), { textContent: text }));
+      const cell = document.createElement('td');
+      cell.append(load);
+      tr.append(cell);
+      return tr;
+    });
+    table.replaceChildren(caption, head, ...body);
+  }
+
+  // A row's settings into the request's LPV fields (the rest of the settings stay).
+  load(row) {
+    const { settings } = row;
+    if (!settings.lpv) return this.state.setAll({ 'lpv.enabled': false });
+    const cubic = settings.grid.every((cells) => cells === settings.grid[0]);
+    const values = { 'lpv.enabled': true, 'lpv.grid': cubic ? settings.grid[0] : settings.grid };
+    for (const name of ['iterations', 'cascades', 'rsm', 'vpl_downsample', 'bounces', 'occlusion'])
+      values[`lpv.${name}`] = settings[name];
+    this.state.setAll(values);
+  }
+}
