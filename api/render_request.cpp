@@ -71,6 +71,14 @@ std::string to_string(PlanRule r) {
   throw std::invalid_argument("api::to_string: invalid PlanRule");
 }
 
+std::string to_string(Injection i) {
+  switch (i) {
+    case Injection::trilinear: return "trilinear";
+    case Injection::nearest: return "nearest";
+  }
+  throw std::invalid_argument("api::to_string: invalid Injection");
+}
+
 bool plan_applies(const RenderRequest& request, PlanRule r) {
   return request.plan == PlanMode::auto_ &&
          std::find(request.plan_keep.begin(), request.plan_keep.end(), r) == request.plan_keep.end();

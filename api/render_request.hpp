@@ -63,6 +63,10 @@ enum class PlanMode { auto_, exact };
 // The rules of plan "auto", each of which a request may turn off ("plan_keep"): what it
 // names then runs as requested.
 enum class PlanRule { lights, shadows, surfaces, grid, rsm, cascades, iterations, convergence };
+// How VPLs (and geometry-volume surfels) are added to the grid: split over the 8 cells around
+// them (continuous as they move: no flicker), or into the one cell they land in (the paper's
+// way: cheaper, but a light or camera moved by a hair can make the indirect light jump).
+enum class Injection { trilinear, nearest };
 
 struct Output {
   std::uint32_t width = 512;
@@ -91,6 +95,7 @@ struct Lpv {
   bool occlusion_from_rsm = true;      // "occlusion_sources": surfels of the RSMs ...
   bool occlusion_from_camera = true;   // ... and of the camera's depth and normal buffer
   std::uint32_t bounces = 1;           // 2: light the geometry volume blocks is reflected on
+  Injection injection = Injection::trilinear;
   float injection_offset = 0.5f;       // VPLs move this many cells along their normal
   float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
   // With plan "auto": propagation stops once the remaining iterations would add less than
@@ -146,6 +151,7 @@ std::string to_string(ImageFormat f);
 std::string to_string(Tonemap t);
 std::string to_string(PlanMode p);
 std::string to_string(PlanRule r);
+std::string to_string(Injection i);
 
 // Whether the planner's rule `r` applies: plan "auto" and not in plan_keep.
 bool plan_applies(const RenderRequest& request, PlanRule r);

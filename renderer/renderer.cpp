@@ -554,11 +554,12 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       break;
     case kInject:
       inject.record(cmd, cascade, lpv_uniforms, frame.plan.run[kRsm] ? &*rsm_maps : nullptr, vpls_per_view_side(lpv),
-                    frame.gpu, *volumes);
+                    frame.gpu, *volumes, lpv.injection);
       break;
     case kGeometryVolume:
       geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, *targets,
-                      {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.z},
+                      {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.z,
+                       lpv.injection},
                       *volumes);
       break;
     case kPropagate:

@@ -33,6 +33,9 @@ vec3 decode_albedo(float code) {
   return vec3(q & 255u, (q >> 8) & 255u, (q >> 16) & 255u) / 255.0;
 }
 
+// lpv.injection "nearest": each surfel to its nearest corner only (cheaper, not continuous).
+layout(constant_id = 0) const bool TRILINEAR_INJECTION = true;
+
 // Split over the 8 corners around p with trilinear weights, so the volume changes
 // continuously as surfels move (a camera or light moved by a hair must not make it jump).
 void add_surfel(vec3 p, vec3 n, float area, vec3 albedo) {
@@ -43,14 +46,14 @@ void add_surfel(vec3 p, vec3 n, float area, vec3 albedo) {
   float potential = min(area / (s * s), MAX_POTENTIAL);
   if (!(potential > 0.0)) return;
   uvec3 corner_dims = g.dims.xyz + 1u;
-  ivec3 low = ivec3(floor(q));
+  ivec3 low = TRILINEAR_INJECTION ? ivec3(floor(q)) : ivec3(round(q));
   vec3 f = q - vec3(low);
   vec4 lobe = sh_cosine_lobe(n);
   float units = lpv.scales.y;
-  for (uint i = 0u; i < 8u; ++i) {
+  for (uint i = 0u; i < (TRILINEAR_INJECTION ? 8u : 1u); ++i) {
     ivec3 o = ivec3(i & 1u, (i >> 1u) & 1u, i >> 2u);
     vec3 w3 = mix(1.0 - f, f, vec3(o));
-    float share = potential * w3.x * w3.y * w3.z;
+    float share = TRILINEAR_INJECTION ? potential * w3.x * w3.y * w3.z : potential;
     if (share == 0.0) continue;
     uvec3 corner = uvec3(clamp(low + o, ivec3(0), ivec3(g.dims.xyz)));
     uint base = (lpv_cell_index(corner, corner_dims) * LPV_GV_SOURCES + push.source) * LPV_GV_WORDS;

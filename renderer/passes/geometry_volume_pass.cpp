@@ -19,9 +19,12 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  inject_ = vkx::Pipeline(
-      device, vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants)),
-      spirv_lpv_geometry_inject_comp);
+  for (const api::Injection injection : {api::Injection::trilinear, api::Injection::nearest}) {
+    const std::array<std::uint32_t, 1> trilinear{injection == api::Injection::trilinear ? 1u : 0u};
+    inject_[std::size_t(injection)] = vkx::Pipeline(
+        device, vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants)),
+        spirv_lpv_geometry_inject_comp, trilinear);
+  }
   corners_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image}, sizeof(std::uint32_t)),
                            spirv_lpv_geometry_corners_comp);
   resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, image, image}, sizeof(std::uint32_t)),
@@ -33,7 +36,8 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
                                 const LpvVolumes& volumes) const {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
-  vkx::DescriptorWriter(inject_.descriptor_set())
+  const vkx::Pipeline& inject = inject_[std::size_t(sources.injection)];
+  vkx::DescriptorWriter(inject.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .image(1, image, maps.position.view(), general)
       .image(2, image, maps.normal.view(), general)
@@ -57,14 +61,14 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
   vkCmdFillBuffer(cmd, volumes.corner_sums.handle(), 0, VK_WHOLE_SIZE, 0);
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-  inject_.bind(cmd);
+  inject.bind(cmd);
   if (sources.rsm) {
-    inject_.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_RSM});
+    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_RSM});
     vkCmdDispatch(cmd, vkx::group_count(maps.resolution, gpu::LPV_VPL_GROUP), vkx::group_count(maps.resolution, gpu::LPV_VPL_GROUP),
                   maps.layers);
   }
   if (sources.camera) {
-    inject_.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA});
+    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA});
     const std::uint32_t s = sources.camera_stride;
     vkCmdDispatch(cmd, vkx::group_count(vkx::group_count(camera.width, s), gpu::LPV_VPL_GROUP),
                   vkx::group_count(vkx::group_count(camera.height, s), gpu::LPV_VPL_GROUP), 1);

@@ -4,9 +4,12 @@
 // every cell face (lpv_geometry_resolve.comp).
 #pragma once
 
+#include "api/render_request.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
+
+#include <array>
 
 namespace renderer {
 
@@ -14,6 +17,7 @@ struct GeometrySources {
   bool rsm = true;     // surfels of every RSM texel
   bool camera = true;  // surfels of every camera_stride-th G-buffer pixel (each way)
   std::uint32_t camera_stride = 1;
+  api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
 };
 
 class GeometryVolumePass {
@@ -25,7 +29,7 @@ class GeometryVolumePass {
 
  private:
   const vkx::Device& device_;
-  vkx::Pipeline inject_;
+  std::array<vkx::Pipeline, 2> inject_;  // by api::Injection
   vkx::Pipeline corners_;
   vkx::Pipeline resolve_;
 };

@@ -26,20 +26,27 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const std::uint32_t push = sizeof(CascadeConstants);
-  inject_ = vkx::Pipeline(device, vkx::compute_layout({uniform, image, image, image, buffer, buffer}, push),
-                          spirv_lpv_inject_comp);
-  emitters_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, buffer, buffer}, sizeof(EmitterConstants)),
-                            spirv_lpv_inject_emitters_comp);
+  for (const api::Injection injection : {api::Injection::trilinear, api::Injection::nearest}) {
+    const std::array<std::uint32_t, 1> trilinear{injection == api::Injection::trilinear ? 1u : 0u};
+    inject_[std::size_t(injection)] = vkx::Pipeline(
+        device, vkx::compute_layout({uniform, image, image, image, buffer, buffer}, push), spirv_lpv_inject_comp, trilinear);
+    emitters_[std::size_t(injection)] =
+        vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, buffer, buffer}, sizeof(EmitterConstants)),
+                      spirv_lpv_inject_emitters_comp, trilinear);
+  }
   resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image, image, image, image, buffer}, push),
                            spirv_lpv_inject_resolve_comp);
 }
 
 void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
-                           std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes) const {
+                           std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes,
+                           api::Injection injection) const {
+  const vkx::Pipeline& inject = inject_[std::size_t(injection)];
+  const vkx::Pipeline& emitters = emitters_[std::size_t(injection)];
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   if (maps)
-    vkx::DescriptorWriter(inject_.descriptor_set())
+    vkx::DescriptorWriter(inject.descriptor_set())
         .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
         .image(1, image, maps->position.view(), VK_IMAGE_LAYOUT_GENERAL)
         .image(2, image, maps->normal.view(), VK_IMAGE_LAYOUT_GENERAL)
@@ -48,7 +55,7 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
         .buffer(5, storage, volumes.flux_stats.handle())
         .apply(device_.handle());
   if (scene.emitter_count)
-    vkx::DescriptorWriter(emitters_.descriptor_set())
+    vkx::DescriptorWriter(emitters.descriptor_set())
         .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
         .buffer(1, storage, scene.emitters.handle())
         .buffer(2, storage, volumes.injected.handle())
@@ -70,15 +77,15 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   }
   if (maps) {
-    inject_.bind(cmd);
-    inject_.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_offset(cascade)});
+    inject.bind(cmd);
+    inject.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_offset(cascade)});
     const std::uint32_t groups = vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP);
     vkCmdDispatch(cmd, groups, groups, maps->layers);
   }
   if (scene.emitter_count) {  // after the RSM's VPLs: both add to the same integer sums
     if (maps) vkx::compute_barrier(cmd);
-    emitters_.bind(cmd);
-    emitters_.push(cmd, EmitterConstants{cascade, volumes.vpl_flux_offset(cascade), scene.emitter_count});
+    emitters.bind(cmd);
+    emitters.push(cmd, EmitterConstants{cascade, volumes.vpl_flux_offset(cascade), scene.emitter_count});
     vkCmdDispatch(cmd, vkx::group_count(scene.emitter_count, gpu::LPV_EMITTER_GROUP), 1, 1);
   }
   vkx::compute_barrier(cmd);

@@ -1,12 +1,16 @@
 // LPV injection for one cascade: the RSM texels, merged into VPLs, and the emissive surfels
-// become fixed-point SH in the cell each lands in (lpv_inject.comp, lpv_inject_emitters.comp);
+// become fixed-point SH in the cells around each, or the one it lands in, as lpv.injection
+// says (lpv_inject.comp, lpv_inject_emitters.comp);
 // the sums then become the float grid propagation starts from and the first term of the
 // accumulated light (lpv_inject_resolve.comp).
 #pragma once
 
+#include "api/render_request.hpp"
 #include "renderer/gpu_scene.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
+
+#include <array>
 
 namespace renderer {
 
@@ -17,12 +21,13 @@ class LpvInjectPass {
   // `params` is the frame's gpu::GpuLpv; `maps` are the frame's RSMs, nullptr when no light
   // drew any. The first cascade also clears the flux statistics.
   void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
-              std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes) const;
+              std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes,
+              api::Injection injection) const;
 
  private:
   const vkx::Device& device_;
-  vkx::Pipeline inject_;
-  vkx::Pipeline emitters_;
+  std::array<vkx::Pipeline, 2> inject_;    // by api::Injection
+  std::array<vkx::Pipeline, 2> emitters_;  // by api::Injection
   vkx::Pipeline resolve_;
 };
 

@@ -8,18 +8,22 @@
 #ifndef LPV_INJECT_VPL_GLSL
 #define LPV_INJECT_VPL_GLSL
 
+// lpv.injection "nearest": each VPL into the one cell it lands in (the paper's way; cheaper,
+// but not continuous). A specialization constant, so each pipeline runs one of the two.
+layout(constant_id = 0) const bool TRILINEAR_INJECTION = true;
+
 void inject_vpl(GpuLpvCascade g, vec3 position, vec3 normal, vec3 flux) {
   vec3 q = lpv_grid_position(g, position + normal * (lpv.scales.w * g.origin.w));
   if (lpv_inside_distance(g, q) < 0.0) return;
-  vec3 t = q - 0.5;  // in units of cell centres
-  ivec3 low = ivec3(floor(t));
-  vec3 f = t - vec3(low);
   ivec3 last = ivec3(g.dims.xyz) - 1;
+  vec3 t = q - 0.5;  // in units of cell centres
+  ivec3 low = TRILINEAR_INJECTION ? ivec3(floor(t)) : min(ivec3(q), last);
+  vec3 f = t - vec3(low);
   vec4 lobe = sh_cosine_lobe(normal) / LPV_PI;
-  for (uint corner = 0u; corner < 8u; ++corner) {
+  for (uint corner = 0u; corner < (TRILINEAR_INJECTION ? 8u : 1u); ++corner) {
     ivec3 o = ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
     vec3 w3 = mix(1.0 - f, f, vec3(o));
-    float w = w3.x * w3.y * w3.z;
+    float w = TRILINEAR_INJECTION ? w3.x * w3.y * w3.z : 1.0;
     if (w == 0.0) continue;
     uint base = lpv_cell_index(uvec3(clamp(low + o, ivec3(0), last)), g.dims.xyz) * 12u;
     for (uint c = 0u; c < 3u; ++c) {

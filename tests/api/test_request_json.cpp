@@ -101,6 +101,7 @@ void expect_same(const api::RenderRequest& a, const api::RenderRequest& b) {
   EXPECT_EQ(a.lpv.occlusion_from_rsm, b.lpv.occlusion_from_rsm);
   EXPECT_EQ(a.lpv.occlusion_from_camera, b.lpv.occlusion_from_camera);
   EXPECT_EQ(a.lpv.bounces, b.lpv.bounces);
+  EXPECT_EQ(a.lpv.injection, b.lpv.injection);
   EXPECT_EQ(a.lpv.injection_offset, b.lpv.injection_offset);
   EXPECT_EQ(a.lpv.intensity, b.lpv.intensity);
   EXPECT_EQ(a.lpv.origin, b.lpv.origin);
@@ -194,8 +195,8 @@ TEST(ParseRequest, ReadsEveryField) {
     "output": {"width": 640, "height": 480, "format": "exr", "view": "normal", "exposure": -1.5, "tonemap": "aces"},
     "shadows": {"enabled": false, "resolution": 2048},
     "lpv": {"enabled": false, "grid": [16, 8, 4], "cascades": 3, "iterations": 0, "rsm": 64, "vpl_downsample": 4,
-            "occlusion": false, "occlusion_sources": ["camera"], "bounces": 2, "injection_offset": 0.25,
-            "intensity": 2.5, "origin": [-1, 0, -1], "extent": 2},
+            "occlusion": false, "occlusion_sources": ["camera"], "bounces": 2, "injection": "nearest",
+            "injection_offset": 0.25, "intensity": 2.5, "origin": [-1, 0, -1], "extent": 2},
     "repeat": 10
   })");
   EXPECT_EQ(r.scene, "sponza_v2.1");
@@ -244,6 +245,7 @@ TEST(ParseRequest, ReadsEveryField) {
   EXPECT_FALSE(r.lpv.occlusion_from_rsm);
   EXPECT_TRUE(r.lpv.occlusion_from_camera);
   EXPECT_EQ(r.lpv.bounces, 2u);
+  EXPECT_EQ(r.lpv.injection, api::Injection::nearest);
   EXPECT_EQ(r.lpv.injection_offset, 0.25f);
   EXPECT_EQ(r.lpv.intensity, 2.5f);
   EXPECT_EQ(r.lpv.origin, glm::vec3(-1, 0, -1));
@@ -462,6 +464,7 @@ std::vector<BadRequest> bad_requests() {
       {R"({"lpv": {"bounces": 0}})", "lpv.bounces"},
       {R"({"lpv": {"bounces": 3}})", "lpv.bounces"},
       {R"({"lpv": {"injection_offset": -0.1}})", "lpv.injection_offset"},
+      {R"({"lpv": {"injection": "bilinear"}})", "lpv.injection"},
       {R"({"lpv": {"injection_offset": 2.5}})", "lpv.injection_offset"},
       {R"({"lpv": {"intensity": -1}})", "lpv.intensity"},
       {R"({"lpv": {"origin": [0, 0]}})", "lpv.origin"},
@@ -671,6 +674,7 @@ api::RenderRequest full_request() {
   r.lpv.vpl_downsample = 2;
   r.lpv.occlusion_from_camera = false;
   r.lpv.bounces = 2;
+  r.lpv.injection = api::Injection::nearest;
   r.lpv.injection_offset = 0.3f;
   r.lpv.intensity = 1.7f;
   r.lpv.origin = glm::vec3(-2.5f, 0.1f, 3.0f);

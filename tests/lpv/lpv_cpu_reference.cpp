@@ -43,7 +43,7 @@ double BasicGrid<Vec4>::flux(int channel) const {
 
 template <class Vec4>
 BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
-                       float offset_cells) {
+                       float offset_cells, bool nearest) {
   using M = Maths<Vec4>;
   using real = typename M::real;
   using vec3 = typename M::vec3;
@@ -51,6 +51,11 @@ BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cel
   for (const Vpl& v : vpls) {
     const vec3 q = (vec3(v.position) + vec3(v.normal) * real(offset_cells * cell_size) - vec3(origin)) / real(cell_size);
     if (glm::any(glm::lessThan(q, vec3(0))) || glm::any(glm::greaterThan(q, vec3(dims)))) continue;
+    if (nearest) {
+      const glm::ivec3 cell = glm::min(glm::ivec3(q), dims - 1);
+      for (int c = 0; c < 3; ++c) grid.at(cell, c) += M::emitter(vec3(v.normal), real(v.flux[c]));
+      continue;
+    }
     // Trilinear over the 8 cells whose centres surround q; shares outside go to the border.
     const vec3 t = q - real(0.5);
     const glm::ivec3 low(glm::floor(t));
@@ -103,8 +108,8 @@ BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<V
 
 template struct BasicGrid<glm::vec4>;
 template struct BasicGrid<glm::dvec4>;
-template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float);
-template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float);
+template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
+template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
 template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&);
 template GridD propagate<glm::dvec4>(const GridD&, const BasicFaceBlocking<glm::dvec4>&);
 

@@ -35,10 +35,11 @@ struct Vpl {
 };
 
 // Each VPL, moved offset_cells along its normal, adds Phi/pi * cosine lobe to the 8 cells
-// around it, with trilinear weights (shares outside the grid to its border cells).
+// around it, with trilinear weights (shares outside the grid to its border cells), or with
+// `nearest` to the one cell it lands in (lpv.injection "nearest").
 template <class Vec4>
 BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
-                       float offset_cells);
+                       float offset_cells, bool nearest = false);
 
 // Blocking potential SH on the +X, +Y, +Z faces of every cell (3 per cell), or empty.
 template <class Vec4>

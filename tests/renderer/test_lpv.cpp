@@ -109,16 +109,23 @@ std::vector<lpv_ref::Vpl> vpls_of(const renderer::LpvSnapshot& snap) {
 }
 
 TEST_F(Lpv, InjectedGridMatchesTheDoublePrecisionReference) {
-  const auto result = gpu_test::renderer().render(small_grid_request(0), renderer::kReadbackLinear | renderer::kReadbackLpv);
-  const renderer::LpvSnapshot& snap = result.lpv;
-  ASSERT_EQ(snap.cascades.size(), 1u);
-  const std::vector<lpv_ref::Vpl> vpls = vpls_of(snap);
-  ASSERT_FALSE(vpls.empty());
-  const auto& c = snap.cascades[0];
-  const lpv_ref::GridD exact = lpv_ref::inject<glm::dvec4>(vpls, c.origin, c.cell_size, glm::ivec3(c.dims), 0.5f);
-  const double d = grid_difference(grid_of(c), exact);
-  std::printf("injected grid, GPU (float) against double: %.2e of the largest coefficient\n", d);
-  EXPECT_LT(d, kInjectedGridTolerance);
+  for (const api::Injection injection : {api::Injection::trilinear, api::Injection::nearest}) {
+    api::RenderRequest request = small_grid_request(0);
+    request.lpv.injection = injection;
+    const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+    const renderer::LpvSnapshot& snap = result.lpv;
+    ASSERT_EQ(snap.cascades.size(), 1u);
+    const std::vector<lpv_ref::Vpl> vpls = vpls_of(snap);
+    ASSERT_FALSE(vpls.empty());
+    const auto& c = snap.cascades[0];
+    const bool nearest = injection == api::Injection::nearest;
+    const lpv_ref::GridD exact =
+        lpv_ref::inject<glm::dvec4>(vpls, c.origin, c.cell_size, glm::ivec3(c.dims), 0.5f, nearest);
+    const double d = grid_difference(grid_of(c), exact);
+    std::printf("injected grid (%s), GPU (float) against double: %.2e of the largest coefficient\n",
+                api::to_string(injection).c_str(), d);
+    EXPECT_LT(d, kInjectedGridTolerance) << api::to_string(injection);
+  }
 }
 
 TEST_F(Lpv, PropagatedGridMatchesTheDoublePrecisionReference) {
