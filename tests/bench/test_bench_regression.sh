@@ -4,6 +4,7 @@
 # caught with unchanged times, the same suite through a server, and bad input.
 #   test_bench_regression.sh LPV_BENCH LPV_SERVER CHECK_JSON_SCHEMA BENCH_DIR
 set -u
+. "$(dirname "$0")/../cli/script_checks.sh"
 bin="$(realpath "$1")"
 server_bin="$(realpath "$2")"
 check_schema="$(realpath "$3")"
@@ -13,15 +14,6 @@ work=$(mktemp -d)
 server_pid=""
 trap '[ -n "$server_pid" ] && kill "$server_pid" 2>/dev/null; rm -rf "$work"' EXIT
 cd "$work" || exit 1
-failures=0
-passed=0
-
-check() {  # check NAME CONDITION...
-  local name="$1"; shift
-  if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failures=$((failures + 1)); fi
-}
-# Runs lpv-bench, keeping its exit status in $rc, standard output in out.txt, error in err.txt.
-run() { "$bin" "$@" >out.txt 2>err.txt; rc=$?; }
 valid() { "$check_schema" "$schema" "$1" || { cat err.txt; return 1; }; }
 
 # --- run, in this process; the round trip through the lpv-server beside lpv-bench -------
@@ -128,5 +120,4 @@ check "ab names a missing build" grep -q "\-\-b: './nothing' is not an executabl
 run run quick --url ftp://example.com -q
 check "a bad URL exits 2" test "$rc" -eq 2
 
-echo "$passed passed, $failures failed"
-test "$failures" -eq 0
+finish

@@ -2,20 +2,11 @@
 # lpv-bench as a user runs it: the files of a sweep and of a diff, exit codes and messages.
 #   test_bench.sh LPV_BENCH
 set -u
+. "$(dirname "$0")/script_checks.sh"
 bin="$(realpath "$1")"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-failures=0
-passed=0
-
-check() {  # check NAME CONDITION...
-  local name="$1"; shift
-  if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failures=$((failures + 1)); fi
-}
-# Runs lpv-bench, keeping its exit status in $rc, standard output in out.txt, error in err.txt.
-run() { "$bin" "$@" >out.txt 2>err.txt; rc=$?; }
-u32be() { od -An -tu1 -j"$2" -N4 "$1" | awk '{print $1*16777216 + $2*65536 + $3*256 + $4}'; }
 
 cat >sweep.json <<'JSON'
 {"base": {"output": {"width": 48, "height": 32}}, "parameters": {"grid": [8, 16], "occlusion": [true, false]},
@@ -56,5 +47,4 @@ run --help
 check "help exits 0" test "$rc" -eq 0
 check "help shows usage" grep -q "usage: lpv-bench sweep" out.txt
 
-echo "$passed passed, $failures failed"
-test "$failures" -eq 0
+finish

@@ -2,21 +2,12 @@
 # lpv-render as a user runs it: files written, exit codes and messages for bad input.
 #   test_cli.sh LPV_RENDER [GLTF_CORPUS_DIR]
 set -u
+. "$(dirname "$0")/script_checks.sh"
 bin="$(realpath "$1")"
 corpus="$(realpath "${2:-/usr/share/assimp/models/glTF2}")"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-failures=0
-passed=0
-
-check() {  # check NAME CONDITION...
-  local name="$1"; shift
-  if "$@"; then passed=$((passed + 1)); else echo "FAIL: $name"; failures=$((failures + 1)); fi
-}
-# Runs lpv-render, keeping its exit status in $rc and its standard error in err.txt.
-run() { "$bin" "$@" >out.txt 2>err.txt; rc=$?; }
-u32be() { od -An -tu1 -j"$2" -N4 "$1" | awk '{print $1*16777216 + $2*65536 + $3*256 + $4}'; }
 
 # No arguments: the default scene to cornell-box.png, 512x512, with validation on.
 run --validation
@@ -130,5 +121,4 @@ check "help exits 0" test "$rc" -eq 0
 check "help documents --scene FILE" grep -q -- "--scene FILE" out.txt
 check "help documents exit status 3" grep -q "^  3 " out.txt
 
-echo "$passed passed, $failures failed"
-test "$failures" -eq 0
+finish

@@ -23,7 +23,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -32,15 +31,11 @@ namespace {
 constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 
+// A request file, or standard input for "-".
 std::string read_request_text(const std::string& file) {
+  if (file != "-") return bench::read_text_file(file);
   std::ostringstream text;
-  if (file == "-") {
-    text << std::cin.rdbuf();
-    return text.str();
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw bench::UsageError("cannot read request file '" + file + "'");
-  text << in.rdbuf();
+  text << std::cin.rdbuf();
   return text.str();
 }
 
