@@ -3,13 +3,14 @@
 // a slider, the difference, the metrics of A against B and each pass's time for both.
 
 import { compare } from './api_client.js';
+import { LatestRun } from './latest_run.js';
 import { showPng } from './images.js';
 import { clone, describeChanges, mergePatch } from './request_state.js';
 import { showMetrics } from './metrics_table.js';
 import { passTimeChart } from './stats_view.js';
 
 export class AbCompare extends EventTarget {
-  #controller = null;
+  #run = new LatestRun();
   #pinned = null;
 
   constructor({ elements, state, errors }) {
@@ -49,17 +50,12 @@ export class AbCompare extends EventTarget {
 
   async run() {
     if (!this.#pinned) return;
-    this.#controller?.abort();
-    const controller = new AbortController();
-    this.#controller = controller;
     const { elements } = this;
-    const b = this.state.request;
-    const body = { base: this.#pinned, against: mergePatch(this.#pinned, b) };
-    this.errors.clear();
-    elements.status.textContent = 'Rendering A and B…';
-    elements.run.disabled = true;
-    try {
-      const answer = await compare(body, controller.signal);
+    const body = { base: this.#pinned, against: mergePatch(this.#pinned, this.state.request) };
+    const options = { button: elements.run, status: elements.status, errors: this.errors,
+                      busyText: 'Rendering A and B…', enabled: () => Boolean(this.#pinned) };
+    await this.#run.start(options, async (signal) => {
+      const answer = await compare(body, signal);
       await Promise.all([
         showPng(elements.imageA, answer.base.image),
         showPng(elements.imageB, answer.other.image),
@@ -75,12 +71,6 @@ export class AbCompare extends EventTarget {
       }));
       elements.result.hidden = false;
       elements.status.textContent = `Done: A, and B = A with ${Object.keys(body.against).length ? JSON.stringify(body.against) : 'nothing changed'}.`;
-    } catch (error) {
-      if (error.name === 'AbortError') return;
-      elements.status.textContent = 'Failed.';
-      this.errors.show(error);
-    } finally {
-      if (this.#controller === controller) elements.run.disabled = !this.#pinned;
-    }
+    });
   }
 }

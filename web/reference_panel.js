@@ -3,13 +3,14 @@
 // map of the difference and the metrics, with the reference's own noise to read them by.
 
 import { compare } from './api_client.js';
+import { LatestRun } from './latest_run.js';
 import { showPng } from './images.js';
 import { deepEqual } from './request_state.js';
 import { showMetrics } from './metrics_table.js';
 import { formatMs } from './svg.js';
 
 export class ReferencePanel {
-  #controller = null;
+  #run = new LatestRun();
   #computedFor = null;  // the request the result on show answers
 
   constructor({ elements, state, errors }) {
@@ -22,17 +23,13 @@ export class ReferencePanel {
   }
 
   async run() {
-    this.#controller?.abort();
-    const controller = new AbortController();
-    this.#controller = controller;
     const { elements } = this;
     const request = this.state.request;
     const body = { base: request, reference: { samples: Number(elements.samples.value) }, mask: elements.mask.value };
-    this.errors.clear();
-    elements.status.textContent = 'Tracing the reference and rendering…';
-    elements.button.disabled = true;
-    try {
-      const answer = await compare(body, controller.signal);
+    const options = { button: elements.button, status: elements.status, errors: this.errors,
+                      busyText: 'Tracing the reference and rendering…' };
+    await this.#run.start(options, async (signal) => {
+      const answer = await compare(body, signal);
       await Promise.all([
         showPng(elements.referenceImage, answer.other.image),
         showPng(elements.differenceImage, answer.difference.image),
@@ -46,13 +43,7 @@ export class ReferencePanel {
       elements.result.hidden = false;
       this.#computedFor = request;
       elements.status.textContent = 'Done: for the current settings.';
-    } catch (error) {
-      if (error.name === 'AbortError') return;
-      elements.status.textContent = 'Failed.';
-      this.errors.show(error);
-    } finally {
-      if (this.#controller === controller) elements.button.disabled = false;
-    }
+    });
   }
 
   #markOutdated() {
