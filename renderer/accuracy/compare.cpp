@@ -17,9 +17,16 @@ CompareSide rendered_side(std::string label, RenderedViews views) {
   return side;
 }
 
-// The surfaces seen and their edges, for the masks, when no reference is compared: direct
-// light only is exact and costs one camera ray and a shadow ray per light and pixel.
-constexpr api::ReferenceSettings kVisibilityOnly{1, 0, 1};
+// What the camera sees and its edges, for the interior mask when no reference is compared:
+// direct light only is exact and costs one camera ray and a shadow ray per light and pixel.
+constexpr reference::Settings kVisibilityOnly{.samples = 1, .bounces = 0};
+
+// The pixels a render saw a surface in: the shading writes alpha 1 there, 0 elsewhere.
+image::Mask surfaces_of(const image::RgbaF32Image& render) {
+  image::Mask mask(std::size_t(render.width) * render.height);
+  for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = render.pixels[4 * i + 3] > 0.0f ? 1 : 0;
+  return mask;
+}
 
 }  // namespace
 
@@ -37,21 +44,26 @@ Comparison compare(Workbench& bench, const api::CompareRequest& request, const r
   comparison.mask = request.mask;
   comparison.base = rendered_side("base", render_views(bench.renderer, request.base));
 
-  const scene::Scene& scene = bench.renderer.scene(request.base.scene);
-  const api::ReferenceSettings truth = request.reference.value_or(kVisibilityOnly);
-  const ReferenceCache::Entry reference = bench.references.get(scene, request.base, truth, progress);
+  image::Mask mask;
   if (request.reference) {
+    const ReferenceCache::Entry reference =
+        bench.references.get(bench.renderer.scene(request.base.scene), request.base, *request.reference, progress);
     CompareSide& side = comparison.other;
     side.label = "reference";
     side.final_image = reference.result->final_image;
     side.indirect = reference.result->indirect;
     side.display = display_image(side.final_image, request.base.output.tonemap);
     side.reference = reference.report;
+    mask = metric_mask(*reference.result, request.mask);
   } else {
     comparison.other = rendered_side("against", render_views(bench.renderer, *request.other));
+    if (request.mask == api::MetricMask::surfaces) mask = surfaces_of(comparison.base.final_image);
+    if (request.mask == api::MetricMask::interior) {
+      const scene::Scene& scene = bench.renderer.scene(request.base.scene);
+      mask = metric_mask(reference::render(scene, reference_view(scene, request.base), kVisibilityOnly), request.mask);
+    }
   }
 
-  const image::Mask mask = metric_mask(*reference.result, request.mask);
   const CompareSide& base = comparison.base;
   const CompareSide& other = comparison.other;
   comparison.final_error = image::compare_images(base.final_image, other.final_image, mask);

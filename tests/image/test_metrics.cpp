@@ -410,14 +410,19 @@ TEST(Heatmap, ExplicitScaleMapsDifferencesOntoTheRamp) {
   EXPECT_NE(heat_colour(0.5), heat_colour(1.0));
 }
 
+// 10x10 grey: 0.01, 0.02, ..., 0.99 and one firefly of 1000.
+RgbaF32Image ramp_with_firefly() {
+  std::vector<float> values;
+  for (int i = 1; i <= 99; ++i) values.push_back(static_cast<float>(i) / 100.0f);
+  values.push_back(1000.0f);
+  return grey_image(10, 10, values);
+}
+
 TEST(Heatmap, AutomaticScaleIsThe99thPercentile) {
   // 10x10 against black: grey differences 0.01, 0.02, ..., 0.99 and one firefly of 1000.
   // Nearest rank of 100 values: the ceil(99)-th smallest, 0.99. The maximum would be 1000,
   // an interpolated percentile 0.99 + 0.01 (1000 - 0.99) = 10.98.
-  std::vector<float> values;
-  for (int i = 1; i <= 99; ++i) values.push_back(static_cast<float>(i) / 100.0f);
-  values.push_back(1000.0f);
-  const RgbaF32Image img = grey_image(10, 10, values);
+  const RgbaF32Image img = ramp_with_firefly();
   const RgbaF32Image reference = grey_image(10, 10, std::vector<float>(100, 0.0f));
   const image::Heatmap heatmap = difference_heatmap(img, reference);
   EXPECT_FLOAT_EQ(heatmap.scale, static_cast<float>(luminance(0.99f, 0.99f, 0.99f)));
@@ -430,10 +435,7 @@ TEST(Heatmap, AutomaticScaleIsThe99thPercentile) {
 TEST(Heatmap, MaskChoosesTheScaleAndGreysTheRest) {
   // As above with the firefly and 0.99 masked out: 98 values, rank ceil(97.02) = 98, the
   // largest left: 0.98.
-  std::vector<float> values;
-  for (int i = 1; i <= 99; ++i) values.push_back(static_cast<float>(i) / 100.0f);
-  values.push_back(1000.0f);
-  const RgbaF32Image img = grey_image(10, 10, values);
+  const RgbaF32Image img = ramp_with_firefly();
   const RgbaF32Image reference = grey_image(10, 10, std::vector<float>(100, 0.0f));
   Mask mask(100, 1);
   mask[98] = mask[99] = 0;

@@ -136,6 +136,26 @@ TEST_F(Accuracy, AgainstTheReferenceMasksCountOnlySurfaces) {
   EXPECT_TRUE(interior.other.reference->cached);  // one reference for the three masks
 }
 
+TEST_F(Accuracy, BetweenTwoSettingsMasksComeFromWhatTheCameraSees) {
+  accuracy::Workbench bench(gpu_test::renderer());
+  api::CompareRequest request;
+  request.base.output.width = 64;
+  request.base.output.height = 64;
+  request.base.camera = api::Camera{};
+  request.base.camera->position = {0.0f, 1.0f, 6.0f};  // the box with black background around it
+  request.other = request.base;
+  request.other->lpv.grid = glm::uvec3(16);
+  request.mask = api::MetricMask::surfaces;
+  const accuracy::Comparison surfaces = accuracy::compare(bench, request);
+  request.mask = api::MetricMask::interior;
+  const accuracy::Comparison interior = accuracy::compare(bench, request);
+  EXPECT_GT(surfaces.final_error.pixels, 64u * 64u / 8);
+  EXPECT_LT(surfaces.final_error.pixels, 64u * 64u);
+  EXPECT_GT(interior.final_error.pixels, 0u);
+  EXPECT_LT(interior.final_error.pixels, surfaces.final_error.pixels);
+  EXPECT_GT(surfaces.final_error.rmse, 0.0);  // 16^3 against 32^3 differ
+}
+
 // The reference's 8-bit picture is made on the CPU; it must match what the tonemap pass
 // makes of the same linear image, or the two would not look alike side by side.
 TEST_F(Accuracy, CpuDisplayEncodingMatchesTheTonemapPass) {
