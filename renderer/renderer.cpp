@@ -563,12 +563,12 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
                       *volumes);
       break;
     case kPropagate:
-      propagate.record(cmd, cascade, steps.first, steps.count, lpv_uniforms, *volumes);
+      propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.gpu.info.z, lpv_uniforms, *volumes);
       break;
     case kShade:
       shade.record(cmd, frame.gpu, *targets,
                    {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes, frame.plan.run[kInject],
-                    needs_direct_light(frame.request.output.view)});
+                    gpu_view(frame.request.output.view)});
       break;
     case kTonemap:
       tonemap.record(cmd, *targets, frame.request.output.tonemap,

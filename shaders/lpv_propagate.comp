@@ -9,7 +9,10 @@
 // From the second iteration on, the geometry volume on the face shared with the neighbour
 // blocks part of the light (none in the first, where the injecting surface would block itself).
 //
-// Speed: the 30 faces are written out by macros with their directions and normals as literals
+// Speed: occlusion and bounces are specialization constants, not branches on the frame's
+// flags: lavapipe runs both sides of a branch under a lane mask, so a run-time flag would make
+// every face pay for the blocking and reflection code (a third of the pass) even when off.
+// The 30 faces are written out by macros with their directions and normals as literals
 // (lavapipe's compiler does not unroll loops this large), so each face costs one 4-wide dot
 // per channel plus two multiply-adds (a cosine lobe along an axis has two non-zero terms).
 #extension GL_GOOGLE_include_directive : require
@@ -28,6 +31,11 @@ layout(set = 0, binding = 4, rgba32f) uniform image3D accumulated_b;
 layout(set = 0, binding = 5, rgba32f) uniform readonly image3D faces;
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_offset; uint iteration; } push;
+
+// The faces' blocking potentials apply (from the second iteration on, when the frame has a
+// geometry volume), and with them the light the blockers reflect (bounces: 2).
+layout(constant_id = 0) const bool OCCLUDED = false;
+layout(constant_id = 1) const bool BOUNCES = false;
 
 #include "shared/lpv_grid_flux.glsl"
 
@@ -51,7 +59,7 @@ const float LOBE_C1 = SH_COSINE_C1 / LPV_PI;  // and linear term per watt
   {                                                                                                 \
     const vec4 basis = sh_basis(W);                                                                 \
     vec3 flux = (OMEGA) * max(vec3(dot(sh_r, basis), dot(sh_g, basis), dot(sh_b, basis)), vec3(0.0)); \
-    if (occluded) flux *= transmitted(blocking, albedo, W, flux, gathered);                        \
+    if (OCCLUDED) flux *= transmitted(blocking, albedo, W, flux, gathered);                        \
     gathered[0].x += LOBE_C0 * flux.r;                                                              \
     gathered[1].x += LOBE_C0 * flux.g;                                                              \
     gathered[2].x += LOBE_C0 * flux.b;                                                              \
@@ -64,7 +72,7 @@ const float LOBE_C1 = SH_COSINE_C1 / LPV_PI;  // and linear term per watt
 // bounces, the light they stop is reflected back, diffusely around their mean normal.
 float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gathered[3]) {
   float blocked = clamp(dot(blocking, sh_basis(-w)), 0.0, 1.0);
-  if (albedo != vec3(0.0) && blocked > 0.0) {
+  if (BOUNCES && albedo != vec3(0.0) && blocked > 0.0) {
     vec3 mean_normal = vec3(-blocking.w, -blocking.y, blocking.z);
     vec3 n = dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -w;
     vec4 lobe = sh_cosine_lobe(n) / LPV_PI;
@@ -87,10 +95,10 @@ float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gath
       vec4 sh_b = imageLoad(grids, lpv_grid_texel(neighbour, 2, source, depth));                 \
       vec4 blocking = vec4(0.0);                                                                    \
       vec3 albedo = vec3(0.0);                                                                      \
-      if (occluded) {                                                                               \
+      if (OCCLUDED) {                                                                               \
         ivec3 lower = min(cell, neighbour);                                                         \
         blocking = imageLoad(faces, ivec3(6 * lower.x + AXIS_INDEX, lower.yz));                     \
-        if (bounces) albedo = imageLoad(faces, ivec3(6 * lower.x + 3 + AXIS_INDEX, lower.yz)).rgb;   \
+        if (BOUNCES) albedo = imageLoad(faces, ivec3(6 * lower.x + 3 + AXIS_INDEX, lower.yz)).rgb;   \
       }                                                                                             \
       FACE(W_FAR, LPV_FAR_FACE_SOLID_ANGLE, FAR)                                                    \
       FACE(W1, LPV_SIDE_FACE_SOLID_ANGLE, S1)                                                       \
@@ -108,8 +116,6 @@ void main() {
   uint depth = g.dims.z;
   uint source = (push.iteration + 1u) & 1u;  // iteration 1 reads grid 0 and writes grid 1
   uint target = push.iteration & 1u;
-  bool occluded = (lpv.info.z & LPV_FLAG_OCCLUSION) != 0u && push.iteration >= 2u;
-  bool bounces = occluded && (lpv.info.z & LPV_FLAG_BOUNCES) != 0u;
 
   vec4 gathered[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
   NEIGHBOUR(ivec3(1, 0, 0), 0, PX, vec3(1, 0, 0), PY, vec3(T5, S5, 0), NY, vec3(T5, -S5, 0), PZ, vec3(T5, 0, S5),

@@ -10,10 +10,11 @@
 
 layout(local_size_x = SHADE_GROUP_X, local_size_y = SHADE_GROUP_Y) in;
 
-// Specialised to false for frames without LPV: lavapipe runs both sides of a branch under a
-// lane mask, so the indirect-light code would cost every pixel even when no grid exists.
+// Specialised per frame: lavapipe runs both sides of a branch under a lane mask, so code for
+// what the frame does not show (the indirect light without a grid, the other views) would
+// cost every pixel.
 layout(constant_id = 0) const bool WITH_INDIRECT = true;
-layout(constant_id = 1) const bool WITH_DIRECT = true;  // false: views without direct light skip the lights
+layout(constant_id = 1) const uint VIEW = VIEW_FINAL;  // VIEW_*
 
 layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2D g_position;
@@ -138,7 +139,7 @@ void main() {
   vec3 albedo = imageLoad(g_albedo, ivec2(pixel)).rgb;
   uint material = uint(position.w) - 1u;
 
-  uint view = frame.size_view.z;
+  const uint view = VIEW;
   vec3 value;
   if (view == VIEW_ALBEDO) {
     value = albedo;
@@ -151,7 +152,7 @@ void main() {
     value = WITH_INDIRECT ? lpv_cell_view(p) * frame.exposure.x : vec3(0.0);
   } else {
     vec3 e = vec3(0.0);
-    if (WITH_DIRECT && view != VIEW_INDIRECT)
+    if (view != VIEW_INDIRECT)
       for (uint i = 0u; i < frame.size_view.w; ++i) e += irradiance(lights[i], p, n);
     if (WITH_INDIRECT && view != VIEW_DIRECT) e += lpv.scales.z * indirect_irradiance(p, n);
     vec3 emitted = view == VIEW_INDIRECT ? vec3(0.0) : materials[material].emissive.rgb;

@@ -16,18 +16,20 @@ struct IterationConstants {
 
 LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  pipeline_ = vkx::Pipeline(device,
-                            vkx::compute_layout({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, image, image, image, image, image,
-                                                 VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                                sizeof(IterationConstants)),
-                            spirv_lpv_propagate_comp);
+  layout_ = vkx::compute_layout(
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, image, image, image, image, image, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      sizeof(IterationConstants));
 }
 
-void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
-                              const vkx::Buffer& params, const LpvVolumes& volumes) const {
+const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& params, const LpvVolumes& volumes) const {
+  std::unique_ptr<vkx::Pipeline>& p = variants_[v];
+  if (!p) {
+    const std::array<std::uint32_t, 2> constants{v != kOpen ? 1u : 0u, v == kOccludedBounces ? 1u : 0u};
+    p = std::make_unique<vkx::Pipeline>(device_, layout_, spirv_lpv_propagate_comp, constants);
+  }
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
-  vkx::DescriptorWriter(pipeline_.descriptor_set())
+  vkx::DescriptorWriter(p->descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .image(1, image, volumes.grids.view(), general)
       .image(2, image, volumes.accumulated[0].view(), general)
@@ -36,10 +38,28 @@ void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::u
       .image(5, image, volumes.faces.view(), general)
       .buffer(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.flux_stats.handle())
       .apply(device_.handle());
-  pipeline_.bind(cmd);
+  return *p;
+}
+
+void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
+                              std::uint32_t lpv_flags, const vkx::Buffer& params, const LpvVolumes& volumes) const {
+  // Occlusion starts with the second iteration: in the first, the surfaces that injected
+  // the light would block it.
+  const Variant later = (lpv_flags & gpu::LPV_FLAG_BOUNCES)     ? kOccludedBounces
+                        : (lpv_flags & gpu::LPV_FLAG_OCCLUSION) ? kOccluded
+                                                                : kOpen;
+  const std::uint32_t last = first + count - 1;
+  // Descriptor sets are written before the first bind: writing a bound set would invalidate
+  // the command buffer.
+  const vkx::Pipeline* opening = first < 2 ? &variant(kOpen, params, volumes) : nullptr;
+  const vkx::Pipeline* occluding = last >= 2 ? &variant(later, params, volumes) : nullptr;
   const glm::uvec3 d = volumes.dims;
-  for (std::uint32_t k = first; k < first + count; ++k) {
-    pipeline_.push(cmd, IterationConstants{cascade, volumes.grid_flux_offset(cascade, k), k});
+  const vkx::Pipeline* bound = nullptr;
+  for (std::uint32_t k = first; k <= last; ++k) {
+    const vkx::Pipeline& pipeline = k < 2 ? *opening : *occluding;
+    if (&pipeline != bound) pipeline.bind(cmd);
+    bound = &pipeline;
+    pipeline.push(cmd, IterationConstants{cascade, volumes.grid_flux_offset(cascade, k), k});
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
                   vkx::group_count(d.z, gpu::LPV_GROUP));
     vkx::compute_barrier(cmd);

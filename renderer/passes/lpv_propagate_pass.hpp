@@ -2,6 +2,9 @@
 // result to the cascade's accumulated light.
 #pragma once
 
+#include <array>
+#include <memory>
+
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
@@ -12,15 +15,21 @@ class LpvPropagatePass {
   explicit LpvPropagatePass(const vkx::Device& device);
 
   // Expects the injected grid in the first half of volumes.grids, and the geometry volume's
-  // faces when the frame's occlusion flag is set.
+  // faces when `lpv_flags` (GpuLpv::info.z) has LPV_FLAG_OCCLUSION.
   // Records iterations first .. first + count - 1 (1-based: the ping-pong halves and the
   // start of occlusion follow the iteration number, so a propagation may be cut in chunks).
-  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, const vkx::Buffer& params,
-              const LpvVolumes& volumes) const;
+  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, std::uint32_t lpv_flags,
+              const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
  private:
+  enum Variant { kOpen, kOccluded, kOccludedBounces, kVariantCount };
+  // The pipeline specialised for one variant, its descriptor set written for this recording
+  // (made on first use: a frame without occlusion never compiles the occluded shader).
+  const vkx::Pipeline& variant(Variant v, const vkx::Buffer& params, const LpvVolumes& volumes) const;
+
   const vkx::Device& device_;
-  vkx::Pipeline pipeline_;
+  vkx::PipelineLayoutDesc layout_;
+  mutable std::array<std::unique_ptr<vkx::Pipeline>, kVariantCount> variants_;
 };
 
 }  // namespace renderer

@@ -13,15 +13,15 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   layout_ = vkx::compute_layout(
       {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, sampled, sampled, sampled});
-  variant(true, true);
-  variant(true, false);
+  variant(gpu::VIEW_FINAL, true);
+  variant(gpu::VIEW_FINAL, false);
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
   grid_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR);
 }
 
-const vkx::Pipeline& ShadePass::variant(bool direct, bool indirect) const {
-  std::unique_ptr<vkx::Pipeline>& p = variants_[(direct ? 2 : 0) + (indirect ? 1 : 0)];
-  const std::uint32_t constants[] = {indirect ? VK_TRUE : VK_FALSE, direct ? VK_TRUE : VK_FALSE};
+const vkx::Pipeline& ShadePass::variant(std::uint32_t view, bool indirect) const {
+  std::unique_ptr<vkx::Pipeline>& p = variants_.at(view * 2 + (indirect ? 1 : 0));
+  const std::uint32_t constants[] = {indirect ? VK_TRUE : VK_FALSE, view};
   if (!p) p = std::make_unique<vkx::Pipeline>(device_, layout_, spirv_shade_comp, constants);
   return *p;
 }
@@ -31,7 +31,7 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
   const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  const vkx::Pipeline& pipeline = variant(in.direct, in.indirect);
+  const vkx::Pipeline& pipeline = variant(in.view, in.indirect);
   vkx::DescriptorWriter(pipeline.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.frame.handle())
       .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.position.view(), VK_IMAGE_LAYOUT_GENERAL)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "renderer/frame_targets.hpp"
+#include "renderer/gpu_types.hpp"
 #include "renderer/gpu_scene.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
@@ -20,7 +21,7 @@ struct ShadeInputs {
   const vkx::Buffer& lpv;          // gpu::GpuLpv (cascade count 0: no indirect light)
   const LpvVolumes& volumes;       // the cascades' accumulated SH (not read without indirect light)
   bool indirect;                   // the LPV ran: shade its indirect light
-  bool direct;                     // the view shows direct light
+  std::uint32_t view;              // gpu::VIEW_*
 };
 
 class ShadePass {
@@ -32,11 +33,11 @@ class ShadePass {
 
  private:
   // One shader specialised by what the frame shows (lavapipe runs both sides of a branch):
-  // index direct * 2 + indirect; made on first use, the two a final frame needs at start.
-  const vkx::Pipeline& variant(bool direct, bool indirect) const;
+  // index view * 2 + indirect; made on first use, the two final frames at start.
+  const vkx::Pipeline& variant(std::uint32_t view, bool indirect) const;
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;
-  mutable std::array<std::unique_ptr<vkx::Pipeline>, 4> variants_;
+  mutable std::array<std::unique_ptr<vkx::Pipeline>, 2 * gpu::VIEW_COUNT> variants_;
   vkx::Sampler shadow_sampler_;  // depth compare with bilinear 2x2 PCF
   vkx::Sampler grid_sampler_;    // trilinear, clamped to the edge
 };

@@ -105,7 +105,9 @@ TEST_F(GltfScenes, EmissiveSurfaceLightsItsSurroundingsWithoutAnyLight) {
   // The injected flux is what the emitter sends out: pi * L * area = pi * 10 * 0.25 W (red).
   EXPECT_NEAR(indirect.stats.lpv->vpl_flux[0], gpu_test::kPi * 10.0 * 0.25, 1e-3);
   for (const api::PassStats& p : indirect.stats.passes) {
-    if (p.name == "rsm") EXPECT_FALSE(p.ran) << "no light: no reflective shadow map";
+    if (p.name == "rsm") {
+      EXPECT_FALSE(p.ran) << "no light: no reflective shadow map";
+    }
   }
 }
 

@@ -168,6 +168,34 @@ TEST_F(Lpv, PropagatedFluxNeverExceedsTheInjectedFluxWithOrWithoutOcclusion) {
   }
 }
 
+// Occlusion and bounces are compiled into separate shaders (specialization constants), so
+// each must be seen to act: not in the first iteration (the injecting surfaces would block
+// their own light), then blocking light, and with bounces: 2 sending some of it back.
+TEST_F(Lpv, OcclusionActsFromTheSecondIterationAndBouncesReturnBlockedLight) {
+  auto propagated = [](std::uint32_t iterations, bool occlusion, std::uint32_t bounces) {
+    api::RenderRequest request = lpv_request("cornell-box");
+    request.lpv.iterations = iterations;
+    request.lpv.occlusion = occlusion;
+    request.lpv.bounces = bounces;
+    const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+    return std::make_pair(result.stats.lpv->cascades.at(0).propagated_flux.back()[0],
+                          result.lpv.cascades.at(0).accumulated);
+  };
+  const auto [open1, open1_grid] = propagated(1, false, 1);
+  const auto [occluded1, occluded1_grid] = propagated(1, true, 2);
+  EXPECT_EQ(open1, occluded1);
+  EXPECT_EQ(open1_grid, occluded1_grid);
+
+  const double open = propagated(8, false, 1).first;
+  const double occluded = propagated(8, true, 1).first;
+  const double bounced = propagated(8, true, 2).first;
+  std::printf("flux after 8 iterations: open %.4g, occluded %.4g, occluded with bounces %.4g W\n", open, occluded,
+              bounced);
+  EXPECT_LT(occluded, 0.95 * open);
+  EXPECT_GT(bounced, 1.02 * occluded);
+  EXPECT_LE(bounced, open * (1.0 + 1e-5));
+}
+
 TEST_F(Lpv, IdenticalRequestsGiveBitwiseIdenticalGridsAndImages) {
   auto& r = gpu_test::renderer();
   api::RenderRequest request = lpv_request("cornell-box", api::View::final_);
