@@ -36,57 +36,75 @@ vec3 decode_albedo(float code) {
 // lpv.injection "nearest": each surfel to its nearest corner only (cheaper, not continuous).
 layout(constant_id = 0) const bool TRILINEAR_INJECTION = true;
 
+// The lattice is the cell corners; each holds LPV_GV_WORDS sums per source: the blocking
+// potential's SH (4), the blockers' albedo (3) and the potential (1), each weighted by it.
+#define SPLAT_VALUES LPV_GV_WORDS
+#define SPLAT_SUMS corner_sums
+uint splat_index(ivec3 corner) {
+  uvec3 corner_dims = lpv.cascades[push.cascade].dims.xyz + 1u;
+  return (lpv_cell_index(uvec3(corner), corner_dims) * LPV_GV_SOURCES + push.source) * LPV_GV_WORDS;
+}
+#include "shared/lpv_splat.glsl"
+
 // Split over the 8 corners around p with trilinear weights, so the volume changes
 // continuously as surfels move (a camera or light moved by a hair must not make it jump).
-void add_surfel(vec3 p, vec3 n, float area, vec3 albedo) {
+// False when the surfel adds nothing to this cascade.
+bool surfel_splat(vec3 p, vec3 n, float area, vec3 albedo, out ivec3 low, out vec3 f, out float values[SPLAT_VALUES]) {
   GpuLpvCascade g = lpv.cascades[push.cascade];
   float s = g.origin.w;
   vec3 q = lpv_grid_position(g, p);
-  if (any(lessThan(q, vec3(0.0))) || any(greaterThan(q, vec3(g.dims.xyz)))) return;
   float potential = min(area / (s * s), MAX_POTENTIAL);
-  if (!(potential > 0.0)) return;
-  uvec3 corner_dims = g.dims.xyz + 1u;
-  ivec3 low = TRILINEAR_INJECTION ? ivec3(floor(q)) : ivec3(round(q));
-  vec3 f = q - vec3(low);
   vec4 lobe = sh_cosine_lobe(n);
-  float units = lpv.scales.y;
-  for (uint i = 0u; i < (TRILINEAR_INJECTION ? 8u : 1u); ++i) {
-    ivec3 o = ivec3(i & 1u, (i >> 1u) & 1u, i >> 2u);
-    vec3 w3 = mix(1.0 - f, f, vec3(o));
-    float share = TRILINEAR_INJECTION ? potential * w3.x * w3.y * w3.z : potential;
-    if (share == 0.0) continue;
-    uvec3 corner = uvec3(clamp(low + o, ivec3(0), ivec3(g.dims.xyz)));
-    uint base = (lpv_cell_index(corner, corner_dims) * LPV_GV_SOURCES + push.source) * LPV_GV_WORDS;
-    for (uint k = 0u; k < 4u; ++k) atomicAdd(corner_sums[base + k], to_fixed(lobe[k] * share, units));
-    for (uint c = 0u; c < 3u; ++c) atomicAdd(corner_sums[base + 4u + c], to_fixed(albedo[c] * share, units));
-    atomicAdd(corner_sums[base + 7u], to_fixed(share, units));
-  }
+  for (uint k = 0u; k < 4u; ++k) values[k] = lobe[k] * potential;
+  for (uint c = 0u; c < 3u; ++c) values[4u + c] = albedo[c] * potential;
+  values[7] = potential;
+  low = TRILINEAR_INJECTION ? ivec3(floor(q)) : ivec3(round(q));
+  f = TRILINEAR_INJECTION ? q - vec3(low) : vec3(0.0);
+  return all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(g.dims.xyz))) && potential > 0.0;
 }
 
 void main() {
   uvec3 id = gl_GlobalInvocationID;
+  bool found = false;
+  vec3 position = vec3(0.0);
+  vec3 normal = vec3(0.0, 0.0, 1.0);
+  float area = 0.0;
+  vec3 albedo = vec3(0.0);
   if (push.source == LPV_GV_SOURCE_RSM) {
     uint res = lpv.sizes.x;
-    if (id.x >= res || id.y >= res) return;
     ivec3 texel = ivec3(id);
-    vec4 position = imageLoad(rsm_position, texel);
-    if (position.w == 0.0) return;
-    vec4 normal = imageLoad(rsm_normal, texel);
-    add_surfel(position.xyz, normalize(normal.xyz), imageLoad(rsm_flux, texel).w, decode_albedo(normal.w));
+    if (id.x < res && id.y < res) {
+      vec4 p = imageLoad(rsm_position, texel);
+      vec4 n = imageLoad(rsm_normal, texel);
+      found = p.w != 0.0;
+      position = p.xyz;
+      normal = n.xyz;
+      area = imageLoad(rsm_flux, texel).w;
+      albedo = decode_albedo(n.w);
+    }
   } else {
     // Every stride-th pixel of the camera's G-buffer, standing for stride^2 pixels.
     uint stride = lpv.sizes.z;
     ivec2 size = imageSize(g_position);
     ivec2 pixel = ivec2(id.xy * stride + stride / 2u);
-    if (pixel.x >= size.x || pixel.y >= size.y) return;
-    vec4 position = imageLoad(g_position, pixel);
-    if (position.w == 0.0) return;
-    vec3 n = normalize(imageLoad(g_normal, pixel).xyz);
-    vec3 to_camera = lpv.camera.yzw - position.xyz;
-    float dist2 = dot(to_camera, to_camera);
-    float side = lpv.camera.x * float(stride);  // the pixels' footprint at unit distance
-    float projected_area = side * side * dist2;
-    float cos_view = abs(dot(n, to_camera)) * inversesqrt(max(dist2, 1e-30));
-    add_surfel(position.xyz, n, projected_area / max(cos_view, MIN_AREA_COSINE), imageLoad(g_albedo, pixel).rgb);
+    if (pixel.x < size.x && pixel.y < size.y) {
+      vec4 p = imageLoad(g_position, pixel);
+      found = p.w != 0.0;
+      position = p.xyz;
+      normal = imageLoad(g_normal, pixel).xyz;
+      vec3 to_camera = lpv.camera.yzw - position;
+      float dist2 = dot(to_camera, to_camera);
+      float side = lpv.camera.x * float(stride);  // the pixels' footprint at unit distance
+      float projected_area = side * side * dist2;
+      float cos_view = abs(dot(normalize(normal), to_camera)) * inversesqrt(max(dist2, 1e-30));
+      area = projected_area / max(cos_view, MIN_AREA_COSINE);
+      albedo = imageLoad(g_albedo, pixel).rgb;
+    }
   }
+  found = found && dot(normal, normal) > 0.0;
+  ivec3 low;
+  vec3 f;
+  float values[SPLAT_VALUES];
+  bool adds = surfel_splat(position, found ? normalize(normal) : vec3(0.0, 0.0, 1.0), area, albedo, low, f, values);
+  splat_subgroup(found && adds, low, f, values, ivec3(lpv.cascades[push.cascade].dims.xyz), lpv.scales.y);
 }

@@ -46,6 +46,10 @@ void main() {
   // The flux of all VPLs, for the statistics.
   add_grid_flux(flux, push.stats_offset, lpv.scales.x);
 
-  if (weight <= 0.0 || dot(normal, normal) == 0.0) return;
-  inject_vpl(lpv.cascades[push.cascade], position / weight, normalize(normal), flux);
+  bool lit = weight > 0.0 && dot(normal, normal) > 0.0;
+  ivec3 low;
+  vec3 f;
+  float values[SPLAT_VALUES];
+  bool inside = vpl_splat(lit ? position / weight : vec3(0.0), lit ? normalize(normal) : vec3(0.0, 0.0, 1.0), flux, low, f, values);
+  splat_subgroup(lit && inside, low, f, values, vpl_last_cell(), lpv.scales.x);
 }

@@ -23,5 +23,9 @@ void main() {
   bool in_range = i < push.count;
   vec3 flux = in_range ? emitters[i].flux.rgb : vec3(0.0);
   add_grid_flux(flux, push.stats_offset, lpv.scales.x);  // every invocation: a subgroup sum
-  if (in_range) inject_vpl(lpv.cascades[push.cascade], emitters[i].position.xyz, emitters[i].normal.xyz, flux);
+  ivec3 low;
+  vec3 f;
+  float values[SPLAT_VALUES];
+  if (in_range && vpl_splat(emitters[i].position.xyz, emitters[i].normal.xyz, flux, low, f, values))
+    splat_point(low, f, values, vpl_last_cell(), lpv.scales.x);
 }

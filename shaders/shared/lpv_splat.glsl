@@ -1,0 +1,90 @@
+// Trilinear splatting of points into a lattice of 64-bit fixed-point sums (the injection of
+// VPLs into cells, the geometry volume's surfels into cell corners). A point at lattice
+// position low + f (0 <= f < 1) adds w(o) * values to the 8 lattice points low + o around it,
+// w(o) the trilinear weight; lattice points past the border are clamped onto it, so nothing
+// is lost. Fixed-point integer sums are associative: the result is the same in any order.
+//
+// Two ways to add:
+// - splat_point: one invocation, one atomic add per lattice point and non-zero value.
+// - splat_subgroup: the points of a subgroup, which nearly always lie close together
+//   (neighbouring texels of a reflective shadow map or of the G-buffer), are summed first:
+//   each invocation takes a lattice point of the box around the subgroup's points and
+//   gathers every point's share of it in float, in the fixed order of the invocations (so the
+//   sum is deterministic too), then adds it with one atomic per value. lavapipe pays ~20
+//   cycles for each atomic however uncontended, so on the Cornell box this is 2.5 times
+//   faster than splat_point for the injection and twice for the geometry volume. A
+//   subgroup whose box has more than 4 lattice points per invocation falls back to
+//   splat_point.
+//
+// The includer defines before the include:
+//   SPLAT_VALUES              the number of values per lattice point,
+//   SPLAT_SUMS                its int64_t buffer array of the sums,
+//   uint splat_index(ivec3)   the index in SPLAT_SUMS of a lattice point's first value.
+#ifndef LPV_SPLAT_GLSL
+#define LPV_SPLAT_GLSL
+
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_shuffle : require
+
+// The weight the point (low, f) gives lattice point `cell`, with the clamping to [0, last]:
+// separable, the product over the axes of the weights of the (one or two) steps o landing on it.
+float splat_weight(ivec3 cell, ivec3 low, vec3 f, ivec3 last) {
+  vec3 at_low = mix(vec3(0.0), 1.0 - f, equal(clamp(low, ivec3(0), last), cell));
+  vec3 at_high = mix(vec3(0.0), f, equal(clamp(low + 1, ivec3(0), last), cell));
+  vec3 w = at_low + at_high;
+  return w.x * w.y * w.z;
+}
+
+void splat_point(ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, float units) {
+  for (uint corner = 0u; corner < 8u; ++corner) {
+    ivec3 o = ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
+    vec3 w3 = mix(1.0 - f, f, vec3(o));
+    float w = w3.x * w3.y * w3.z;
+    if (w == 0.0) continue;
+    uint base = splat_index(clamp(low + o, ivec3(0), last));
+    for (uint i = 0u; i < SPLAT_VALUES; ++i) {
+      if (values[i] != 0.0) atomicAdd(SPLAT_SUMS[base + i], to_fixed(values[i] * w, units));
+    }
+  }
+}
+
+// Lattice points per invocation a subgroup may gather before it falls back to splat_point.
+const uint SPLAT_LATTICE_PER_INVOCATION = 4u;
+
+// Every invocation of the subgroup must call this, in uniform control flow; `valid` says
+// whether this one has a point.
+void splat_subgroup(bool valid, ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, float units) {
+  const int NONE = 0x7fffffff;
+  if (!valid) {  // no share anywhere: weight 0 where the lattice is, values 0
+    low = ivec3(0);
+    f = vec3(0.0);
+    for (uint i = 0u; i < SPLAT_VALUES; ++i) values[i] = 0.0;
+  }
+  ivec3 lo = subgroupMin(valid ? clamp(low, ivec3(0), last) : ivec3(NONE));
+  ivec3 hi = subgroupMax(valid ? clamp(low + 1, ivec3(0), last) : ivec3(-NONE));
+  if (lo.x > hi.x) return;  // no point in the subgroup
+  ivec3 box = hi - lo + 1;
+  uint lattice = uint(box.x * box.y * box.z);
+  if (lattice > SPLAT_LATTICE_PER_INVOCATION * gl_SubgroupSize) {
+    if (valid) splat_point(low, f, values, last, units);
+    return;
+  }
+  for (uint first = 0u; first < lattice; first += gl_SubgroupSize) {
+    uint index = first + gl_SubgroupInvocationID;
+    ivec3 cell = lo + ivec3(index % uint(box.x), (index / uint(box.x)) % uint(box.y), index / uint(box.x * box.y));
+    float sums[SPLAT_VALUES];
+    for (uint i = 0u; i < SPLAT_VALUES; ++i) sums[i] = 0.0;
+    for (uint p = 0u; p < gl_SubgroupSize; ++p) {
+      float w = splat_weight(cell, subgroupShuffle(low, p), subgroupShuffle(f, p), last);
+      for (uint i = 0u; i < SPLAT_VALUES; ++i) sums[i] += w * subgroupShuffle(values[i], p);
+    }
+    if (index >= lattice) continue;
+    uint base = splat_index(cell);
+    for (uint i = 0u; i < SPLAT_VALUES; ++i) {
+      if (sums[i] != 0.0) atomicAdd(SPLAT_SUMS[base + i], to_fixed(sums[i], units));
+    }
+  }
+}
+
+#endif
