@@ -268,13 +268,16 @@ void Device::create_device() {
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
   VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
   vkGetPhysicalDeviceProperties2(physical_, &properties);
-  const bool subgroup_sums = (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT) &&
-                             (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
+  // Subgroup shuffles sum the splats of a subgroup before its atomics (lpv_splat.glsl).
+  const VkSubgroupFeatureFlags subgroup_needs = VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
+  const bool subgroup_ops = (subgroup.supportedOperations & subgroup_needs) == subgroup_needs &&
+                            (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
   if (!supported.features.shaderInt64 || !supported12.shaderBufferInt64Atomics ||
-      !supported12.shaderSubgroupExtendedTypes || !subgroup_sums)
+      !supported12.shaderSubgroupExtendedTypes || !subgroup_ops)
     throw std::runtime_error("device '" + info_.name + "' lacks 64-bit integer atomics or subgroup sums of them "
                              "(shaderInt64, shaderBufferInt64Atomics, shaderSubgroupExtendedTypes, subgroup "
-                             "arithmetic in compute), which the LPV passes need for deterministic accumulation");
+                             "arithmetic and shuffles in compute), which the LPV passes need for deterministic "
+                             "accumulation");
   VkPhysicalDeviceFeatures features10{};
   features10.shaderInt64 = VK_TRUE;
   VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
