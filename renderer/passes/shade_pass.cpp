@@ -12,11 +12,10 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   layout_ = vkx::compute_layout(
-      {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, sampled, sampled, sampled});
+      {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, image, image, image});
   variant(gpu::VIEW_FINAL, true);
   variant(gpu::VIEW_FINAL, false);
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
-  grid_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR);
 }
 
 const vkx::Pipeline& ShadePass::variant(std::uint32_t view, bool indirect) const {
@@ -43,9 +42,9 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
       .buffer(7, storage, scene.materials.handle())
       .buffer(8, storage, targets.linear.handle())
       .buffer(9, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.lpv.handle())
-      .image(10, sampled, in.volumes.accumulated[0].view(), VK_IMAGE_LAYOUT_GENERAL, grid_sampler_.handle())
-      .image(11, sampled, in.volumes.accumulated[1].view(), VK_IMAGE_LAYOUT_GENERAL, grid_sampler_.handle())
-      .image(12, sampled, in.volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL, grid_sampler_.handle())
+      .image(10, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[0].view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(11, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[1].view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(12, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL)
       .apply(device_.handle());
 
   pipeline.bind(cmd);

@@ -39,7 +39,6 @@ class ShadePass {
   vkx::PipelineLayoutDesc layout_;
   mutable std::array<std::unique_ptr<vkx::Pipeline>, 2 * gpu::VIEW_COUNT> variants_;
   vkx::Sampler shadow_sampler_;  // depth compare with bilinear 2x2 PCF
-  vkx::Sampler grid_sampler_;    // trilinear, clamped to the edge
 };
 
 }  // namespace renderer
