@@ -12,6 +12,9 @@
 // Speed: occlusion and bounces are specialization constants, not branches on the frame's
 // flags: lavapipe runs both sides of a branch under a lane mask, so a run-time flag would make
 // every face pay for the blocking and reflection code (a third of the pass) even when off.
+// The first iteration of an occluded frame runs the occluded shader with no blockers (the
+// same result bit for bit: flux * 1), so a frame compiles one variant, not two (lavapipe
+// compiles at first use; this shader takes a sixth of a second).
 // The 30 faces are written out by macros with their directions and normals as literals
 // (lavapipe's compiler does not unroll loops this large), so each face costs one 4-wide dot
 // per channel plus two multiply-adds (a cosine lobe along an axis has two non-zero terms).
@@ -32,8 +35,8 @@ layout(set = 0, binding = 5, rgba32f) uniform readonly image3D faces;
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_offset; uint iteration; } push;
 
-// The faces' blocking potentials apply (from the second iteration on, when the frame has a
-// geometry volume), and with them the light the blockers reflect (bounces: 2).
+// The faces' blocking potentials apply (when the frame has a geometry volume; from the second
+// iteration on), and with them the light the blockers reflect (bounces: 2).
 layout(constant_id = 0) const bool OCCLUDED = false;
 layout(constant_id = 1) const bool BOUNCES = false;
 
@@ -97,7 +100,7 @@ float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gath
       vec3 albedo = vec3(0.0);                                                                      \
       if (OCCLUDED) {                                                                               \
         ivec3 lower = min(cell, neighbour);                                                         \
-        blocking = imageLoad(faces, ivec3(6 * lower.x + AXIS_INDEX, lower.yz));                     \
+        blocking = imageLoad(faces, ivec3(6 * lower.x + AXIS_INDEX, lower.yz)) * blocking_on;       \
         if (BOUNCES) albedo = imageLoad(faces, ivec3(6 * lower.x + 3 + AXIS_INDEX, lower.yz)).rgb;   \
       }                                                                                             \
       FACE(W_FAR, LPV_FAR_FACE_SOLID_ANGLE, FAR)                                                    \
@@ -116,6 +119,7 @@ void main() {
   uint depth = g.dims.z;
   uint source = (push.iteration + 1u) & 1u;  // iteration 1 reads grid 0 and writes grid 1
   uint target = push.iteration & 1u;
+  float blocking_on = push.iteration >= 2u ? 1.0 : 0.0;
 
   vec4 gathered[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
   NEIGHBOUR(ivec3(1, 0, 0), 0, PX, vec3(1, 0, 0), PY, vec3(T5, S5, 0), NY, vec3(T5, -S5, 0), PZ, vec3(T5, 0, S5),

@@ -43,22 +43,13 @@ const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& par
 
 void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
                               std::uint32_t lpv_flags, const vkx::Buffer& params, const LpvVolumes& volumes) const {
-  // Occlusion starts with the second iteration: in the first, the surfaces that injected
-  // the light would block it.
-  const Variant later = (lpv_flags & gpu::LPV_FLAG_BOUNCES)     ? kOccludedBounces
-                        : (lpv_flags & gpu::LPV_FLAG_OCCLUSION) ? kOccluded
-                                                                : kOpen;
-  const std::uint32_t last = first + count - 1;
-  // Descriptor sets are written before the first bind: writing a bound set would invalidate
-  // the command buffer.
-  const vkx::Pipeline* opening = first < 2 ? &variant(kOpen, params, volumes) : nullptr;
-  const vkx::Pipeline* occluding = last >= 2 ? &variant(later, params, volumes) : nullptr;
+  const Variant v = (lpv_flags & gpu::LPV_FLAG_BOUNCES)     ? kOccludedBounces
+                    : (lpv_flags & gpu::LPV_FLAG_OCCLUSION) ? kOccluded
+                                                            : kOpen;
+  const vkx::Pipeline& pipeline = variant(v, params, volumes);
+  pipeline.bind(cmd);
   const glm::uvec3 d = volumes.dims;
-  const vkx::Pipeline* bound = nullptr;
-  for (std::uint32_t k = first; k <= last; ++k) {
-    const vkx::Pipeline& pipeline = k < 2 ? *opening : *occluding;
-    if (&pipeline != bound) pipeline.bind(cmd);
-    bound = &pipeline;
+  for (std::uint32_t k = first; k < first + count; ++k) {
     pipeline.push(cmd, IterationConstants{cascade, volumes.grid_flux_offset(cascade, k), k});
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
                   vkx::group_count(d.z, gpu::LPV_GROUP));

@@ -178,13 +178,13 @@ TEST_F(Lpv, OcclusionActsFromTheSecondIterationAndBouncesReturnBlockedLight) {
     request.lpv.occlusion = occlusion;
     request.lpv.bounces = bounces;
     const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
-    return std::make_pair(result.stats.lpv->cascades.at(0).propagated_flux.back()[0],
-                          result.lpv.cascades.at(0).accumulated);
+    return std::make_pair(result.stats.lpv->cascades.at(0).propagated_flux.back()[0], result.lpv.cascades.at(0));
   };
+  // The same up to float rounding (the occluded shader may fuse its multiply-adds differently).
   const auto [open1, open1_grid] = propagated(1, false, 1);
   const auto [occluded1, occluded1_grid] = propagated(1, true, 2);
-  EXPECT_EQ(open1, occluded1);
-  EXPECT_EQ(open1_grid, occluded1_grid);
+  EXPECT_NEAR(occluded1, open1, 1e-6 * open1);
+  EXPECT_LT(grid_difference(grid_of(open1_grid), grid_of(occluded1_grid)), 1e-6);
 
   const double open = propagated(8, false, 1).first;
   const double occluded = propagated(8, true, 1).first;
