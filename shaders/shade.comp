@@ -4,7 +4,6 @@
 // (radiance * 2^exposure for the lit views, the raw quantity for the data views).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
-#include "shared/lights.glsl"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 
@@ -15,6 +14,14 @@ layout(local_size_x = SHADE_GROUP_X, local_size_y = SHADE_GROUP_Y) in;
 // cost every pixel.
 layout(constant_id = 0) const bool WITH_INDIRECT = true;
 layout(constant_id = 1) const uint VIEW = VIEW_FINAL;  // VIEW_*
+layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits of this frame's lights
+const bool ANY_DIRECTIONAL = (LIGHT_KINDS & LIGHTS_DIRECTIONAL) != 0u;
+const bool ANY_POSITIONAL = (LIGHT_KINDS & LIGHTS_POSITIONAL) != 0u;
+const bool ANY_SHADOWED = (LIGHT_KINDS & LIGHTS_SHADOWED) != 0u;
+const bool ANY_CUBE_SHADOWED = (LIGHT_KINDS & LIGHTS_CUBE_SHADOWED) != 0u;
+#define LIGHTS_MAY_HAVE_CONE ((LIGHT_KINDS & LIGHTS_SPOT_CONE) != 0u)
+#define LIGHTS_MAY_HAVE_RANGE ((LIGHT_KINDS & LIGHTS_RANGE) != 0u)
+#include "shared/lights.glsl"
 
 layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2D g_position;
@@ -45,11 +52,11 @@ uint cube_face(vec3 d) {
 // Fraction of the light reaching p (1 = lit), with 2x2 hardware PCF. The lookup point is
 // pushed along the normal by about a shadow texel to keep surfaces from shadowing themselves.
 float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
-  if (light.info.z == 0u) return 1.0;
+  if (!ANY_SHADOWED || light.info.z == 0u) return 1.0;
   float offset = light.params.z * (light.info.x == LIGHT_DIRECTIONAL ? 1.0 : distance_to_light);
   vec3 q = p + n * offset;
   uint layer = light.info.y;
-  if (light.info.z == 6u) layer += cube_face(q - light.position.xyz);  // a cube of six maps
+  if (ANY_CUBE_SHADOWED && light.info.z == 6u) layer += cube_face(q - light.position.xyz);  // a cube of six maps
   vec4 clip = shadow_view_proj[layer] * vec4(q, 1.0);
   if (clip.w <= 0.0) return 1.0;
   vec3 ndc = clip.xyz / clip.w;
@@ -60,7 +67,7 @@ float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
 
 // Irradiance (W/m^2) at p with unit normal n from one light, shadows included.
 vec3 irradiance(GpuLight light, vec3 p, vec3 n) {
-  if (light.info.x == LIGHT_DIRECTIONAL) {
+  if (ANY_DIRECTIONAL && (!ANY_POSITIONAL || light.info.x == LIGHT_DIRECTIONAL)) {
     vec3 to_light = -light.direction.xyz;
     float cos_theta = dot(n, to_light);
     if (cos_theta <= 0.0) return vec3(0.0);

@@ -13,14 +13,25 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   layout_ = vkx::compute_layout(
       {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, image, image, image});
-  variant(gpu::VIEW_FINAL, true);
-  variant(gpu::VIEW_FINAL, false);
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
 }
 
-const vkx::Pipeline& ShadePass::variant(std::uint32_t view, bool indirect) const {
-  std::unique_ptr<vkx::Pipeline>& p = variants_.at(view * 2 + (indirect ? 1 : 0));
-  const std::uint32_t constants[] = {indirect ? VK_TRUE : VK_FALSE, view};
+std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights) {
+  std::uint32_t kinds = 0;
+  for (const gpu::GpuLight& l : lights) {
+    kinds |= l.info.x == gpu::LIGHT_DIRECTIONAL ? gpu::LIGHTS_DIRECTIONAL : gpu::LIGHTS_POSITIONAL;
+    if (l.info.x == gpu::LIGHT_SPOT) kinds |= gpu::LIGHTS_SPOT_CONE;
+    if (l.direction.w > 0.0f) kinds |= gpu::LIGHTS_RANGE;
+    if (l.info.z > 0) kinds |= gpu::LIGHTS_SHADOWED;
+    if (l.info.z == 6) kinds |= gpu::LIGHTS_CUBE_SHADOWED;
+  }
+  return kinds;
+}
+
+const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
+  const std::uint32_t key = (in.light_kinds << 4) | (in.view << 1) | (in.indirect ? 1u : 0u);
+  std::unique_ptr<vkx::Pipeline>& p = variants_[key];
+  const std::uint32_t constants[] = {in.indirect ? VK_TRUE : VK_FALSE, in.view, in.light_kinds};
   if (!p) p = std::make_unique<vkx::Pipeline>(device_, layout_, spirv_shade_comp, constants);
   return *p;
 }
@@ -30,7 +41,7 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
   const VkImageLayout read = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  const vkx::Pipeline& pipeline = variant(in.view, in.indirect);
+  const vkx::Pipeline& pipeline = variant(in);
   vkx::DescriptorWriter(pipeline.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.frame.handle())
       .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.position.view(), VK_IMAGE_LAYOUT_GENERAL)

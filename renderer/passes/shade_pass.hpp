@@ -8,8 +8,10 @@
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
-#include <array>
+#include <cstdint>
+#include <map>
 #include <memory>
+#include <span>
 
 namespace renderer {
 
@@ -22,7 +24,11 @@ struct ShadeInputs {
   const LpvVolumes& volumes;       // the cascades' accumulated SH (not read without indirect light)
   bool indirect;                   // the LPV ran: shade its indirect light
   std::uint32_t view;              // gpu::VIEW_*
+  std::uint32_t light_kinds;       // gpu::LIGHTS_* bits (light_kinds())
 };
+
+// The gpu::LIGHTS_* bits that describe what `lights` need of the shading.
+std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights);
 
 class ShadePass {
  public:
@@ -32,12 +38,13 @@ class ShadePass {
   void record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets, const ShadeInputs& in) const;
 
  private:
-  // One shader specialised by what the frame shows (lavapipe runs both sides of a branch):
-  // index view * 2 + indirect; made on first use, the two final frames at start.
-  const vkx::Pipeline& variant(std::uint32_t view, bool indirect) const;
+  // One shader specialised by what the frame shows and the kinds of light it has (lavapipe
+  // runs both sides of a branch, so code that cannot apply would cost every pixel); made on
+  // first use.
+  const vkx::Pipeline& variant(const ShadeInputs& in) const;
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;
-  mutable std::array<std::unique_ptr<vkx::Pipeline>, 2 * gpu::VIEW_COUNT> variants_;
+  mutable std::map<std::uint32_t, std::unique_ptr<vkx::Pipeline>> variants_;
   vkx::Sampler shadow_sampler_;  // depth compare with bilinear 2x2 PCF
 };
 

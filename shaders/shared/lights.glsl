@@ -3,6 +3,15 @@
 #ifndef LPV_LIGHTS_GLSL
 #define LPV_LIGHTS_GLSL
 
+// An includer that knows no light has a spot cone or a range window may define these false
+// (lavapipe runs both sides of a branch, so code that cannot apply still costs).
+#ifndef LIGHTS_MAY_HAVE_CONE
+#define LIGHTS_MAY_HAVE_CONE true
+#endif
+#ifndef LIGHTS_MAY_HAVE_RANGE
+#define LIGHTS_MAY_HAVE_RANGE true
+#endif
+
 // Radiant intensity (W/sr) a point or spot light sends toward p, with the spot's smooth cone
 // and the glTF range window; `to_light` (unit) and `dist2` describe the path from p.
 vec3 light_intensity_toward(GpuLight light, vec3 p, out vec3 to_light, out float dist2) {
@@ -11,11 +20,11 @@ vec3 light_intensity_toward(GpuLight light, vec3 p, out vec3 to_light, out float
   to_light = dist2 > 0.0 ? d * inversesqrt(dist2) : vec3(0.0);
   float attenuation = 1.0;
   float range = light.direction.w;
-  if (range > 0.0) {
+  if (LIGHTS_MAY_HAVE_RANGE && range > 0.0) {
     float r = sqrt(dist2) / range;  // glTF KHR_lights_punctual recommended window
     attenuation = clamp(1.0 - r * r * r * r, 0.0, 1.0);
   }
-  if (light.info.x == LIGHT_SPOT) {
+  if (LIGHTS_MAY_HAVE_CONE && light.info.x == LIGHT_SPOT) {
     float cd = dot(light.direction.xyz, -to_light);
     float a = clamp(cd * light.params.x + light.params.y, 0.0, 1.0);
     attenuation *= a * a;

@@ -1,7 +1,9 @@
 // Direct light against closed forms: Lambertian radiance L = albedo / pi * E.
 #include "gpu_test.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace {
 
@@ -114,6 +116,51 @@ TEST_F(Radiometry, RangeWindowsThePointLightAndZeroesItBeyondRange) {
                         glm::vec3(want), 1.0f);
   light.range = 0.9f;
   EXPECT_EQ(centre_radiance(quad_scene({0, 0, 1}, light), camera_facing_origin_from({0, 0.4f, 3.0f})), glm::vec3(0.0f));
+}
+
+// Direct light is linear in the lights: a frame with a sun, a ranged point light and a spot
+// is the sum of three frames with one each. The shading is compiled for the kinds of light a
+// frame has, so the mixed frame and the single ones run different shaders: this holds each
+// kind's code to the others'.
+TEST_F(Radiometry, LightsOfEveryKindAddUp) {
+  api::Light sun;
+  sun.type = api::LightType::directional;
+  sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
+  sun.intensity = 2.0f;
+  api::Light lamp;
+  lamp.type = api::LightType::point;
+  lamp.position = {-0.5f, 1.2f, 0.3f};
+  lamp.intensity = 1.5f;
+  lamp.color = {1.0f, 0.6f, 0.3f};
+  lamp.range = 3.0f;
+  api::Light spot;
+  spot.type = api::LightType::spot;
+  spot.position = {0.4f, 1.5f, -0.2f};
+  spot.direction = glm::normalize(glm::vec3(-0.2f, -1.0f, 0.1f));
+  spot.intensity = 4.0f;
+  spot.inner_cone_deg = 10.0f;
+  spot.outer_cone_deg = 30.0f;
+
+  auto render = [](const std::vector<api::Light>& lights) {
+    api::RenderRequest request;
+    request.scene = "cornell-box";
+    request.output.width = request.output.height = 64;
+    request.output.format = api::ImageFormat::exr;
+    request.output.view = api::View::direct;
+    request.lights = lights;
+    return gpu_test::renderer().render(request, renderer::kReadbackLinear).linear;
+  };
+  const image::RgbaF32Image all = render({sun, lamp, spot});
+  const image::RgbaF32Image sum[] = {render({sun}), render({lamp}), render({spot})};
+  double largest = 0.0, worst = 0.0;
+  for (std::size_t i = 0; i < all.pixels.size(); ++i) {
+    if (i % 4 == 3) continue;  // alpha
+    const double expected = double(sum[0].pixels[i]) + sum[1].pixels[i] + sum[2].pixels[i];
+    largest = std::max(largest, expected);
+    worst = std::max(worst, std::abs(all.pixels[i] - expected));
+  }
+  for (const image::RgbaF32Image& one : sum) EXPECT_GT(gpu_test::total(one), 0.0) << "every light reaches the view";
+  EXPECT_LT(worst, 1e-5 * largest);
 }
 
 TEST_F(Radiometry, ExposureScalesLinearRadianceByPowersOfTwo) {
