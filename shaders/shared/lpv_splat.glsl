@@ -10,11 +10,11 @@
 //   (neighbouring texels of a reflective shadow map or of the G-buffer), are summed first:
 //   each invocation takes a lattice point of the box around the subgroup's points and
 //   gathers every point's share of it in float, in the fixed order of the invocations (so the
-//   sum is deterministic too), then adds it with one atomic per value. lavapipe pays ~20
-//   cycles for each atomic however uncontended, so on the Cornell box this is 2.5 times
-//   faster than splat_point for the injection and twice for the geometry volume. A
-//   subgroup whose box has more than 4 lattice points per invocation falls back to
-//   splat_point.
+//   sum is deterministic too), then adds it with one atomic per non-zero value. lavapipe
+//   pays ~20 cycles for each atomic however uncontended: on the Cornell box at 32^3 the
+//   injection takes 7.5 ms this way, 12.6 with splat_point alone (20 with an atomic for
+//   every value, zeros included). A subgroup whose box has more than 4 lattice points per
+//   invocation falls back to splat_point.
 //
 // The includer defines before the include:
 //   SPLAT_VALUES              the number of values per lattice point,
