@@ -56,8 +56,11 @@ bool surfel_splat(vec3 p, vec3 n, float area, vec3 albedo, out ivec3 low, out ve
   float potential = min(area / (s * s), MAX_POTENTIAL);
   vec4 lobe = sh_cosine_lobe(n);
   for (uint k = 0u; k < 4u; ++k) values[k] = lobe[k] * potential;
-  for (uint c = 0u; c < 3u; ++c) values[4u + c] = albedo[c] * potential;
-  values[7] = potential;
+  // The blockers' albedo only serves bounces; left at zero without them, its sums cost no
+  // atomics (the splat skips zeros), which halves the pass's atomics.
+  float albedo_weight = (lpv.info.z & LPV_FLAG_BOUNCES) != 0u ? potential : 0.0;
+  for (uint c = 0u; c < 3u; ++c) values[4u + c] = albedo[c] * albedo_weight;
+  values[7] = albedo_weight;
   low = TRILINEAR_INJECTION ? ivec3(floor(q)) : ivec3(round(q));
   f = TRILINEAR_INJECTION ? q - vec3(low) : vec3(0.0);
   return all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(g.dims.xyz))) && potential > 0.0;
