@@ -52,7 +52,9 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, const Frame
   const std::array<const vkx::Image*, 3> colors{&targets.position, &targets.normal, &targets.albedo};
   vkx::prepare_attachments(cmd, colors, &targets.depth);
   const std::array<VkImageView, 3> views{targets.position.view(), targets.normal.view(), targets.albedo.view()};
-  vkx::begin_cleared_rendering(device_, cmd, views, targets.depth.view(), {targets.width, targets.height}, false);
+  // Position's w = 0 marks pixels with no surface; normal and albedo are read only elsewhere.
+  vkx::begin_cleared_rendering(device_, cmd, views, targets.depth.view(), {targets.width, targets.height}, false,
+                               vkx::ClearColors::first);
   if (scene.index_count > 0) {
     scene.bind_geometry(cmd);
     const vkx::Pipeline* bound = nullptr;

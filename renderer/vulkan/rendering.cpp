@@ -24,14 +24,14 @@ void colors_to_compute(VkCommandBuffer cmd, std::span<const Image* const> colors
 }
 
 void begin_cleared_rendering(const Device& device, VkCommandBuffer cmd, std::span<const VkImageView> colors,
-                             VkImageView depth, VkExtent2D extent, bool store_depth) {
+                             VkImageView depth, VkExtent2D extent, bool store_depth, ClearColors clear) {
   std::vector<VkRenderingAttachmentInfoKHR> color_attachments(colors.size());
   for (std::size_t i = 0; i < colors.size(); ++i) {
     VkRenderingAttachmentInfoKHR& a = color_attachments[i];
     a.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR;
     a.imageView = colors[i];
     a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // w = 0 in the position targets marks "nothing there"
+    a.loadOp = i == 0 || clear == ClearColors::all ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
   }

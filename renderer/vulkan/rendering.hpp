@@ -16,9 +16,16 @@ void prepare_attachments(VkCommandBuffer cmd, std::span<const Image* const> colo
 // After rendering: colour images to GENERAL for compute passes to read.
 void colors_to_compute(VkCommandBuffer cmd, std::span<const Image* const> colors);
 
-// Begins rendering over `extent` into `colors` (cleared to 0) and `depth` (cleared to 1;
-// stored only if `store_depth`), and sets the viewport and scissor to the whole extent.
+// Which colour attachments begin_cleared_rendering clears: all, or only the first, when its
+// w = 0 marks "nothing drawn here" and the others are read only where it is set (clearing
+// them would be memory traffic nobody reads: half a millisecond of the G-buffer at 512^2).
+enum class ClearColors { all, first };
+
+// Begins rendering over `extent` into `colors` (cleared to 0 as `clear` says, the others'
+// contents undefined) and `depth` (cleared to 1; stored only if `store_depth`), and sets
+// the viewport and scissor to the whole extent.
 void begin_cleared_rendering(const Device& device, VkCommandBuffer cmd, std::span<const VkImageView> colors,
-                             VkImageView depth, VkExtent2D extent, bool store_depth);
+                             VkImageView depth, VkExtent2D extent, bool store_depth,
+                             ClearColors clear = ClearColors::all);
 
 }  // namespace vkx
