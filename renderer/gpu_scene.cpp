@@ -17,11 +17,13 @@ vkx::VertexInputDesc scene_vertex_input() {
 
 GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, const TextureSetLayout& texture_layout) {
   std::vector<gpu::GpuMaterial> materials;
-  for (const scene::Material& m : scene.materials)
+  GpuScene g;
+  for (const scene::Material& m : scene.materials) {
     materials.push_back({glm::vec4(m.base_color, 1.0f), glm::vec4(m.emissive, 0.0f),
                          glm::uvec4(m.double_sided ? 1u : 0u, 0u, 0u, 0u)});
+    g.emissive = g.emissive || m.emissive != glm::vec3(0.0f);
+  }
 
-  GpuScene g;
   g.vertices = vkx::upload_buffer(device, std::as_bytes(std::span(scene.vertices)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   g.indices = vkx::upload_buffer(device, std::as_bytes(std::span(scene.indices)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   g.materials = vkx::upload_buffer(device, std::as_bytes(std::span(materials)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);

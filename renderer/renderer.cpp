@@ -568,7 +568,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
     case kShade:
       shade.record(cmd, frame.gpu, *targets,
                    {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes, frame.plan.run[kInject],
-                    gpu_view(frame.request.output.view), light_kinds(frame.lights.lights)});
+                    gpu_view(frame.request.output.view), light_kinds(frame.lights.lights, frame.gpu.emissive)});
       break;
     case kTonemap:
       tonemap.record(cmd, *targets, frame.request.output.tonemap,

@@ -19,6 +19,7 @@ const bool ANY_DIRECTIONAL = (LIGHT_KINDS & LIGHTS_DIRECTIONAL) != 0u;
 const bool ANY_POSITIONAL = (LIGHT_KINDS & LIGHTS_POSITIONAL) != 0u;
 const bool ANY_SHADOWED = (LIGHT_KINDS & LIGHTS_SHADOWED) != 0u;
 const bool ANY_CUBE_SHADOWED = (LIGHT_KINDS & LIGHTS_CUBE_SHADOWED) != 0u;
+const bool ANY_EMISSIVE = (LIGHT_KINDS & LIGHTS_EMISSIVE) != 0u;
 #define LIGHTS_MAY_HAVE_CONE ((LIGHT_KINDS & LIGHTS_SPOT_CONE) != 0u)
 #define LIGHTS_MAY_HAVE_RANGE ((LIGHT_KINDS & LIGHTS_RANGE) != 0u)
 #include "shared/lights.glsl"
@@ -170,7 +171,7 @@ void main() {
     if (view != VIEW_INDIRECT)
       for (uint i = 0u; i < frame.size_view.w; ++i) e += irradiance(lights[i], p, n);
     if (WITH_INDIRECT && view != VIEW_DIRECT) e += lpv.scales.z * indirect_irradiance(p, n);
-    vec3 emitted = view == VIEW_INDIRECT ? vec3(0.0) : materials[material].emissive.rgb;
+    vec3 emitted = ANY_EMISSIVE && view != VIEW_INDIRECT ? materials[material].emissive.rgb : vec3(0.0);
     value = (albedo / PI * e + emitted) * frame.exposure.x;
   }
   pixels[index] = vec4(value, 1.0);

@@ -16,8 +16,8 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
 }
 
-std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights) {
-  std::uint32_t kinds = 0;
+std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights, bool emissive_materials) {
+  std::uint32_t kinds = emissive_materials ? gpu::LIGHTS_EMISSIVE : 0u;
   for (const gpu::GpuLight& l : lights) {
     kinds |= l.info.x == gpu::LIGHT_DIRECTIONAL ? gpu::LIGHTS_DIRECTIONAL : gpu::LIGHTS_POSITIONAL;
     if (l.info.x == gpu::LIGHT_SPOT) kinds |= gpu::LIGHTS_SPOT_CONE;

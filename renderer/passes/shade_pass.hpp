@@ -27,8 +27,9 @@ struct ShadeInputs {
   std::uint32_t light_kinds;       // gpu::LIGHTS_* bits (light_kinds())
 };
 
-// The gpu::LIGHTS_* bits that describe what `lights` need of the shading.
-std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights);
+// The gpu::LIGHTS_* bits that describe what `lights`, and emissive materials if the scene
+// has any, need of the shading.
+std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights, bool emissive_materials);
 
 class ShadePass {
  public:

@@ -31,15 +31,16 @@ LPV_CONST VIEW_NORMAL = 5u;
 LPV_CONST VIEW_DEPTH = 6u;
 LPV_CONST VIEW_COUNT = 7u;
 
-// What the lights of a frame need of the shading (a bit mask the shade pass is specialised
-// on, so that code no light of the frame uses is compiled out).
+// What the light sources of a frame need of the shading (a bit mask the shade pass is
+// specialised on, so that code no source of the frame uses is compiled out).
 LPV_CONST LIGHTS_DIRECTIONAL = 1u;    // a directional light
 LPV_CONST LIGHTS_POSITIONAL = 2u;     // a point or spot light
 LPV_CONST LIGHTS_SPOT_CONE = 4u;      // a spot light
 LPV_CONST LIGHTS_RANGE = 8u;          // a light with a range window
 LPV_CONST LIGHTS_SHADOWED = 16u;      // a light with a shadow map
 LPV_CONST LIGHTS_CUBE_SHADOWED = 32u; // a light with a cube of six
-LPV_CONST LIGHTS_ALL = 63u;
+LPV_CONST LIGHTS_EMISSIVE = 64u;      // a material that emits
+LPV_CONST LIGHTS_ALL = 127u;
 
 LPV_CONST TONEMAP_NONE = 0u;
 LPV_CONST TONEMAP_REINHARD = 1u;

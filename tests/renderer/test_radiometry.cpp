@@ -163,6 +163,22 @@ TEST_F(Radiometry, LightsOfEveryKindAddUp) {
   EXPECT_LT(worst, 1e-5 * largest);
 }
 
+// An emissive surface shows its emitted radiance, lights or none (the shading adds emission
+// only in frames whose scene has an emissive material).
+TEST_F(Radiometry, EmissiveSurfaceShowsItsEmittedRadiance) {
+  scene::SceneBuilder b("glowing-quad");
+  const glm::vec3 emitted{2.0f, 1.0f, 0.5f};
+  const auto m = b.add_material({"glow", glm::vec3(0.0f), emitted});
+  b.add_facing_quad({0, 0, 0}, {0, 0, 1}, 1.0f, m);
+  const scene::Scene scene = b.build();
+  for (const api::View view : {api::View::final_, api::View::direct}) {
+    api::RenderRequest request = gpu_test::linear_request(kSize, kSize, camera_facing_origin_from({0.3f, 0.2f, 3.0f}));
+    request.output.view = view;
+    const auto result = gpu_test::renderer().render(scene, request, renderer::kReadbackLinear);
+    expect_within_percent(gpu_test::pixel(result.linear, kSize / 2, kSize / 2), emitted, 0.01f);
+  }
+}
+
 TEST_F(Radiometry, ExposureScalesLinearRadianceByPowersOfTwo) {
   api::Light light;
   light.type = api::LightType::point;
