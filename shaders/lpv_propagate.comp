@@ -13,8 +13,8 @@
 // flags: lavapipe runs both sides of a branch under a lane mask, so a run-time flag would make
 // every face pay for the blocking and reflection code (a third of the pass) even when off.
 // The first iteration of an occluded frame runs the occluded shader with no blockers (the
-// same result bit for bit: flux * 1), so a frame compiles one variant, not two (lavapipe
-// compiles at first use; this shader takes a sixth of a second).
+// same result up to float rounding: flux * 1), so a frame compiles one variant, not two
+// (lavapipe compiles at first use; this shader takes a sixth of a second).
 // The 30 faces are written out by macros with their directions and normals as literals
 // (lavapipe's compiler does not unroll loops this large), so each face costs one 4-wide dot
 // per channel plus two multiply-adds (a cosine lobe along an axis has two non-zero terms).
