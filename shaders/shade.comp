@@ -50,7 +50,9 @@ uint cube_face(vec3 d) {
   return d.z < 0.0 ? 5u : 4u;
 }
 
-// Fraction of the light reaching p (1 = lit), with 2x2 hardware PCF. The lookup point is
+// Fraction of the light reaching p (1 = lit), with 2x2 PCF: the four depth comparisons of
+// a compare gather, weighted bilinearly here. The same result as a filtered compare lookup
+// (to 3e-8), which lavapipe runs at a millisecond more per 512^2 frame. The lookup point is
 // pushed along the normal by about a shadow texel to keep surfaces from shadowing themselves.
 float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
   if (!ANY_SHADOWED || light.info.z == 0u) return 1.0;
@@ -63,7 +65,11 @@ float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
   vec3 ndc = clip.xyz / clip.w;
   // Outside the map: nothing was rendered there that could occlude.
   if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0 || ndc.z < 0.0) return 1.0;
-  return texture(shadow_maps, vec4(ndc.xy * 0.5 + 0.5, float(layer), ndc.z));
+  vec2 uv = ndc.xy * 0.5 + 0.5;
+  vec2 t = uv * vec2(textureSize(shadow_maps, 0).xy) - 0.5;
+  vec2 f = fract(t);
+  vec4 lit = textureGather(shadow_maps, vec3(uv, float(layer)), ndc.z);  // texels (0,1), (1,1), (1,0), (0,0)
+  return mix(mix(lit.w, lit.z, f.x), mix(lit.x, lit.y, f.x), f.y);
 }
 
 // Irradiance (W/m^2) at p with unit normal n from one light, shadows included.
