@@ -46,7 +46,7 @@ class ShadePass {
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;
   mutable std::map<std::uint32_t, std::unique_ptr<vkx::Pipeline>> variants_;
-  vkx::Sampler shadow_sampler_;  // depth compare with bilinear 2x2 PCF
+  vkx::Sampler shadow_sampler_;  // depth compare: the shading gathers 2x2 comparisons for its PCF
 };
 
 }  // namespace renderer
