@@ -10,8 +10,8 @@
 layout(local_size_x = SHADE_GROUP_X, local_size_y = SHADE_GROUP_Y) in;
 
 // Specialised per frame: lavapipe runs both sides of a branch under a lane mask, so code for
-// what the frame does not show (the indirect light without a grid, the other views) would
-// cost every pixel.
+// what the frame does not have (the indirect light without a grid, the other views, the
+// kinds of light source it lacks) would cost every pixel.
 layout(constant_id = 0) const bool WITH_INDIRECT = true;
 layout(constant_id = 1) const uint VIEW = VIEW_FINAL;  // VIEW_*
 layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits of this frame's lights
@@ -34,8 +34,8 @@ layout(std430, set = 0, binding = 6) readonly buffer ShadowViews { mat4 shadow_v
 layout(std430, set = 0, binding = 7) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, set = 0, binding = 8) writeonly buffer Image { vec4 pixels[]; };
 layout(std140, set = 0, binding = 9) uniform Lpv { GpuLpv lpv; };
-// Read with imageLoad, filtered here: on lavapipe a trilinear sampler lookup costs about four
-// times the eight loads and weights written out.
+// Read with imageLoad and filtered here: lavapipe's trilinear sampler lookups cost more than
+// the eight loads and weights written out (the pass took 19 ms at 512^2 with them, 17 without).
 layout(set = 0, binding = 10, rgba32f) uniform readonly image3D accumulated_r;
 layout(set = 0, binding = 11, rgba32f) uniform readonly image3D accumulated_g;
 layout(set = 0, binding = 12, rgba32f) uniform readonly image3D accumulated_b;
