@@ -14,7 +14,10 @@
 //   pays ~20 cycles for each atomic however uncontended: on the Cornell box at 32^3 the
 //   injection takes 7.5 ms this way, 12.6 with splat_point alone (20 with an atomic for
 //   every value, zeros included). A subgroup whose box has more than 4 lattice points per
-//   invocation falls back to splat_point.
+//   invocation falls back to splat_point. It needs full subgroups (a shuffle from a lane
+//   with no invocation is undefined): the callers' 8x8 work groups give them on lavapipe
+//   (whose 4x4x4 groups do not) and on GPUs with subgroups of 8 to 64, and the flux
+//   conservation tests would see a lost or invented share.
 //
 // The includer defines before the include:
 //   SPLAT_VALUES              the number of values per lattice point,
