@@ -16,8 +16,9 @@
 //   every value, zeros included). A subgroup whose box has more than 4 lattice points per
 //   invocation falls back to splat_point. It needs full subgroups (a shuffle from a lane
 //   with no invocation is undefined): the callers' 8x8 work groups give them on lavapipe
-//   (whose 4x4x4 groups do not) and on GPUs with subgroups of 8 to 64, and the flux
-//   conservation tests would see a lost or invented share.
+//   and on GPUs with subgroups of 8 to 64 (lavapipe's 4x4x4 groups number their subgroups
+//   past gl_NumSubgroups, so do not count on those), and the flux conservation tests would
+//   see a lost or invented share.
 //
 // The includer defines before the include:
 //   SPLAT_VALUES              the number of values per lattice point,
