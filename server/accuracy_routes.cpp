@@ -153,7 +153,7 @@ void handle_compare(const httplib::Request& request, httplib::Response& response
   }
   auto job = std::make_shared<CompareJob>(std::move(compare), request_arrival() + deadline);
   if (!run_job(job, deadline, request, response, service)) return;
-  send_json(response, comparison_json(*job->result, job->queue_wait_ms));
+  send_json(response, comparison_json(*job->result, job->queue_wait_ms), 200, kImageJson);
 }
 
 void handle_sweep(const httplib::Request& request, httplib::Response& response, const httplib::ContentReader& content,

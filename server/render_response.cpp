@@ -4,6 +4,7 @@
 #include "renderer/output.hpp"
 #include "server/base64.hpp"
 #include "server/request_log.hpp"
+#include "server/route_support.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -73,7 +74,7 @@ void send_render_result(httplib::Response& response, renderer::RenderResult& res
           {"width", result.stats.width},
           {"height", result.stats.height},
           {"base64", base64_encode(bytes)}}}};
-    response.set_content(ascii_json(body), "application/json");
+    response.set_content(ascii_json(body), kImageJson);
   } else {
     std::string omitted;
     response.set_header("X-Render-Stats", stats_header_value(stats, omitted));

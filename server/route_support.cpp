@@ -19,10 +19,9 @@ constexpr const char* kRetryAfterSeconds = "1";
 
 }  // namespace
 
-void send_json(httplib::Response& response, const nlohmann::json& body, int status) {
+void send_json(httplib::Response& response, const nlohmann::json& body, int status, const char* content_type) {
   response.status = status;
-  response.set_content(body.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace) + "\n",
-                       "application/json");
+  response.set_content(body.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace) + "\n", content_type);
 }
 
 void send_unavailable(httplib::Response& response, const std::string& code, const std::string& message) {

@@ -25,7 +25,16 @@ struct Service {
   SceneStore& scenes;
 };
 
-void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200);
+// httplib compresses an answer whose content type is exactly "application/json" when the
+// client accepts brotli or gzip, as every browser does. An answer that carries base64
+// images gains about a third of its size for 40 ms (one 512^2 frame) to 140 ms (a compare)
+// of brotli, so those are sent as kImageJson: the same media type with a charset parameter,
+// which httplib leaves as it is.
+inline constexpr const char* kJson = "application/json";
+inline constexpr const char* kImageJson = "application/json; charset=utf-8";
+
+void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200,
+               const char* content_type = kJson);
 // 503 with Retry-After.
 void send_unavailable(httplib::Response& response, const std::string& code, const std::string& message);
 

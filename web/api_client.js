@@ -64,9 +64,8 @@ export async function uploadScene(file) {
 }
 
 // The frame as PNG with its stats from the X-Render-Stats header, rather than the JSON
-// answer: httplib compresses JSON with brotli for browsers (Accept-Encoding: br), which
-// costs 90 to 140 ms a frame on an incompressible base64 PNG; a PNG is sent as it is. The
-// header leaves out the LPV flux statistics when they are long; the page shows none of them.
+// answer: a third fewer bytes than base64, and a blob the page shows as it is. The header
+// leaves out the LPV flux statistics when they are long; the page shows none of them.
 export async function render(request, signal) {
   const response = await call('/v1/render', { method: 'POST', body: request, accept: 'image/png', signal });
   const queue = /(?:^|,)\s*queue;dur=([\d.]+)/.exec(response.headers.get('Server-Timing') ?? '');

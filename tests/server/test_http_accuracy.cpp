@@ -30,9 +30,11 @@ TEST(HttpAccuracy, CompareAnswersBothImagesTheHeatMapAndTheMetrics) {
   auto http = shared_server().client();
   const nlohmann::json request = {{"base", {{"output", {{"width", 40}, {"height", 32}}}}},
                                   {"reference", {{"samples", 4}, {"seed", 7}}}};
-  const auto r = http->Post("/v1/compare", request.dump(), "application/json");
+  const auto r = http->Post("/v1/compare", {{"Accept-Encoding", "br, gzip"}}, request.dump(), "application/json");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/json; charset=utf-8");
+  EXPECT_EQ(r->get_header_value("Content-Encoding"), "") << "base64 images are sent uncompressed";
   const auto body = nlohmann::json::parse(r->body);
   for (const auto& image : {body["base"]["image"], body["other"]["image"], body["difference"]["image"]}) {
     const auto size = png_size(base64_decode(image.get<std::string>()));
