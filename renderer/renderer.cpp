@@ -559,7 +559,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
     case kGeometryVolume:
       geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, *targets,
                       {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.z,
-                       lpv.injection},
+                       lpv.injection, (frame.lpv.gpu.info.z & gpu::LPV_FLAG_BOUNCES) != 0},
                       *volumes);
       break;
     case kPropagate:

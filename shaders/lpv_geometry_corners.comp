@@ -12,6 +12,8 @@ layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 layout(std430, set = 0, binding = 1) readonly buffer CornerSums { int64_t corner_sums[]; };
 layout(set = 0, binding = 2, rgba32f) uniform writeonly image3D corners;
 layout(push_constant) uniform Push { uint cascade; } push;
+// The blockers' albedo serves bounces only: without them its corners are neither read nor written.
+layout(constant_id = 0) const bool BOUNCES = true;
 
 void main() {
   uvec3 corner_dims = lpv.cascades[push.cascade].dims.xyz + 1u;
@@ -27,9 +29,9 @@ void main() {
     if (potential <= sh.x) continue;
     for (uint k = 0u; k < 4u; ++k) {
       sh[k] = from_fixed(corner_sums[base + k], one_per_unit);
-      albedo[k] = from_fixed(corner_sums[base + 4u + k], one_per_unit);
+      if (BOUNCES) albedo[k] = from_fixed(corner_sums[base + 4u + k], one_per_unit);
     }
   }
   imageStore(corners, ivec3(2u * corner.x, corner.yz), sh);
-  imageStore(corners, ivec3(2u * corner.x + 1u, corner.yz), albedo);
+  if (BOUNCES) imageStore(corners, ivec3(2u * corner.x + 1u, corner.yz), albedo);
 }

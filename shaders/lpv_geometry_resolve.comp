@@ -12,6 +12,8 @@ layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image3D corners;
 layout(set = 0, binding = 2, rgba32f) uniform writeonly image3D faces;
 layout(push_constant) uniform Push { uint cascade; } push;
+// The blockers' albedo serves bounces only: without them its faces are not written.
+layout(constant_id = 0) const bool BOUNCES = true;
 
 void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
@@ -28,9 +30,10 @@ void main() {
       corner[u] += k & 1;
       corner[v] += k >> 1;
       sh += 0.25 * imageLoad(corners, ivec3(2 * corner.x, corner.yz));
-      albedo += imageLoad(corners, ivec3(2 * corner.x + 1, corner.yz));
+      if (BOUNCES) albedo += imageLoad(corners, ivec3(2 * corner.x + 1, corner.yz));
     }
     imageStore(faces, ivec3(6 * cell.x + axis, cell.yz), sh);
-    imageStore(faces, ivec3(6 * cell.x + 3 + axis, cell.yz), vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
+    if (BOUNCES)
+      imageStore(faces, ivec3(6 * cell.x + 3 + axis, cell.yz), vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
   }
 }

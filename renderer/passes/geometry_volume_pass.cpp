@@ -25,10 +25,13 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
         device, vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants)),
         spirv_lpv_geometry_inject_comp, trilinear);
   }
-  corners_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image}, sizeof(std::uint32_t)),
-                           spirv_lpv_geometry_corners_comp);
-  resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, image, image}, sizeof(std::uint32_t)),
-                           spirv_lpv_geometry_resolve_comp);
+  for (const bool bounces : {false, true}) {
+    const std::array<std::uint32_t, 1> with_albedo{bounces ? 1u : 0u};
+    corners_[bounces] = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image}, sizeof(std::uint32_t)),
+                                      spirv_lpv_geometry_corners_comp, with_albedo);
+    resolve_[bounces] = vkx::Pipeline(device, vkx::compute_layout({uniform, image, image}, sizeof(std::uint32_t)),
+                                      spirv_lpv_geometry_resolve_comp, with_albedo);
+  }
 }
 
 void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
@@ -47,12 +50,14 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .image(6, image, camera.albedo.view(), general)
       .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.handle())
       .apply(device_.handle());
-  vkx::DescriptorWriter(corners_.descriptor_set())
+  const vkx::Pipeline& corners = corners_[sources.bounces];
+  const vkx::Pipeline& resolve = resolve_[sources.bounces];
+  vkx::DescriptorWriter(corners.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.handle())
       .image(2, image, volumes.corners.view(), general)
       .apply(device_.handle());
-  vkx::DescriptorWriter(resolve_.descriptor_set())
+  vkx::DescriptorWriter(resolve.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .image(1, image, volumes.corners.view(), general)
       .image(2, image, volumes.faces.view(), general)
@@ -75,12 +80,12 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
   }
   vkx::compute_barrier(cmd);
   const glm::uvec3 d = volumes.dims;
-  corners_.bind(cmd);
-  corners_.push(cmd, cascade);
+  corners.bind(cmd);
+  corners.push(cmd, cascade);
   vkCmdDispatch(cmd, vkx::group_count(d.x + 1, gpu::LPV_GROUP), vkx::group_count(d.y + 1, gpu::LPV_GROUP), vkx::group_count(d.z + 1, gpu::LPV_GROUP));
   vkx::compute_barrier(cmd);
-  resolve_.bind(cmd);
-  resolve_.push(cmd, cascade);
+  resolve.bind(cmd);
+  resolve.push(cmd, cascade);
   vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), vkx::group_count(d.z, gpu::LPV_GROUP));
   vkx::compute_barrier(cmd);
 }

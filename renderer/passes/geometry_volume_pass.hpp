@@ -18,6 +18,7 @@ struct GeometrySources {
   bool camera = true;  // surfels of every camera_stride-th G-buffer pixel (each way)
   std::uint32_t camera_stride = 1;
   api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
+  bool bounces = false;  // the blockers' albedo is resolved too (it serves bounces only)
 };
 
 class GeometryVolumePass {
@@ -30,8 +31,8 @@ class GeometryVolumePass {
  private:
   const vkx::Device& device_;
   std::array<vkx::Pipeline, 2> inject_;  // by api::Injection
-  vkx::Pipeline corners_;
-  vkx::Pipeline resolve_;
+  std::array<vkx::Pipeline, 2> corners_;  // by GeometrySources::bounces
+  std::array<vkx::Pipeline, 2> resolve_;
 };
 
 }  // namespace renderer
