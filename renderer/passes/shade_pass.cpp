@@ -29,6 +29,7 @@ std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights, bool emissive_m
 }
 
 const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
+  // Bit 0: indirect; bits 1-3: the view (VIEW_* < 8); above: the light kinds.
   const std::uint32_t key = (in.light_kinds << 4) | (in.view << 1) | (in.indirect ? 1u : 0u);
   std::unique_ptr<vkx::Pipeline>& p = variants_[key];
   const std::uint32_t constants[] = {in.indirect ? VK_TRUE : VK_FALSE, in.view, in.light_kinds};

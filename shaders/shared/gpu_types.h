@@ -29,7 +29,6 @@ LPV_CONST VIEW_LPV = 3u;
 LPV_CONST VIEW_ALBEDO = 4u;
 LPV_CONST VIEW_NORMAL = 5u;
 LPV_CONST VIEW_DEPTH = 6u;
-LPV_CONST VIEW_COUNT = 7u;
 
 // What the light sources of a frame need of the shading (a bit mask the shade pass is
 // specialised on, so that code no source of the frame uses is compiled out).

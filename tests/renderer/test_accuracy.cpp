@@ -33,6 +33,16 @@ bool finite(const api::ErrorMetrics& m) {
          std::isfinite(m.mean_abs_error) && std::isfinite(m.max_abs_error) && std::isfinite(m.mean_signed_error);
 }
 
+// A 64x64 compare of the box seen from far enough back to have black background around it.
+api::CompareRequest box_in_background_request() {
+  api::CompareRequest request;
+  request.base.output.width = 64;
+  request.base.output.height = 64;
+  request.base.camera = api::Camera{};
+  request.base.camera->position = {0.0f, 1.0f, 6.0f};
+  return request;
+}
+
 class Accuracy : public GpuTest {};
 
 TEST_F(Accuracy, LpvIsCloserToTheOneBounceReferenceThanDirectLightAlone) {
@@ -114,11 +124,7 @@ TEST_F(Accuracy, ASettingAgainstItselfHasNoError) {
 
 TEST_F(Accuracy, AgainstTheReferenceMasksCountOnlySurfaces) {
   accuracy::Workbench bench(gpu_test::renderer());
-  api::CompareRequest request;
-  request.base.output.width = 64;
-  request.base.output.height = 64;
-  request.base.camera = api::Camera{};
-  request.base.camera->position = {0.0f, 1.0f, 6.0f};  // the box with black background around it
+  api::CompareRequest request = box_in_background_request();
   request.reference = api::ReferenceSettings{16, 1, 1};
   request.mask = api::MetricMask::surfaces;
   const accuracy::Comparison surfaces = accuracy::compare(bench, request);
@@ -138,11 +144,7 @@ TEST_F(Accuracy, AgainstTheReferenceMasksCountOnlySurfaces) {
 
 TEST_F(Accuracy, BetweenTwoSettingsMasksComeFromWhatTheCameraSees) {
   accuracy::Workbench bench(gpu_test::renderer());
-  api::CompareRequest request;
-  request.base.output.width = 64;
-  request.base.output.height = 64;
-  request.base.camera = api::Camera{};
-  request.base.camera->position = {0.0f, 1.0f, 6.0f};  // the box with black background around it
+  api::CompareRequest request = box_in_background_request();
   request.other = request.base;
   request.other->lpv.grid = glm::uvec3(16);
   request.mask = api::MetricMask::surfaces;
