@@ -35,7 +35,8 @@ layout(std430, set = 0, binding = 7) readonly buffer Materials { GpuMaterial mat
 layout(std430, set = 0, binding = 8) writeonly buffer Image { vec4 pixels[]; };
 layout(std140, set = 0, binding = 9) uniform Lpv { GpuLpv lpv; };
 // Read with imageLoad and filtered here: lavapipe's trilinear sampler lookups cost more than
-// the eight loads and weights written out (the pass took 19 ms at 512^2 with them, 17 without).
+// the eight loads and weights written out (the pass took 19 ms at 512^2 with them, 17 without,
+// when this was changed).
 layout(set = 0, binding = 10, rgba32f) uniform readonly image3D accumulated_r;
 layout(set = 0, binding = 11, rgba32f) uniform readonly image3D accumulated_g;
 layout(set = 0, binding = 12, rgba32f) uniform readonly image3D accumulated_b;
@@ -52,8 +53,9 @@ uint cube_face(vec3 d) {
 
 // Fraction of the light reaching p (1 = lit), with 2x2 PCF: the four depth comparisons of
 // a compare gather, weighted bilinearly here. The same result as a filtered compare lookup
-// (to 3e-8), which lavapipe runs at a millisecond more per 512^2 frame. The lookup point is
-// pushed along the normal by about a shadow texel to keep surfaces from shadowing themselves.
+// (3e-8 apart on cornell-box when this was changed), which lavapipe runs a millisecond slower
+// per 512^2 frame. The lookup point is pushed along the normal by about a shadow texel to
+// keep surfaces from shadowing themselves.
 float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
   if (!ANY_SHADOWED || light.info.z == 0u) return 1.0;
   float offset = light.params.z * (light.info.x == LIGHT_DIRECTIONAL ? 1.0 : distance_to_light);

@@ -12,13 +12,13 @@
 //   gathers every point's share of it in float, in the fixed order of the invocations (so the
 //   sum is deterministic too), then adds it with one atomic per non-zero value. lavapipe
 //   pays ~20 cycles for each atomic however uncontended: on the Cornell box at 32^3 the
-//   injection takes 7.5 ms this way, 12.6 with splat_point alone (20 with an atomic for
-//   every value, zeros included). A subgroup whose box has more than 4 lattice points per
-//   invocation falls back to splat_point. It needs full subgroups (a shuffle from a lane
-//   with no invocation is undefined): the callers' 8x8 work groups give them on lavapipe
-//   and on GPUs with subgroups of 8 to 64 (lavapipe's 4x4x4 groups number their subgroups
-//   past gl_NumSubgroups, so do not count on those), and the flux conservation tests would
-//   see a lost or invented share.
+//   injection took 7.5 ms this way, 12.6 with splat_point alone and 20 with an atomic for
+//   every value, zeros included (measured once, when this was written). A subgroup whose
+//   box has more than 4 lattice points per invocation falls back to splat_point. It needs
+//   full subgroups (a shuffle from a lane with no invocation is undefined): the callers'
+//   8x8 work groups give them on lavapipe and on GPUs with subgroups of 8 to 64 (lavapipe's
+//   4x4x4 groups number their subgroups past gl_NumSubgroups, so do not count on those),
+//   and the flux conservation tests would see a lost or invented share.
 //
 // The includer defines before the include:
 //   SPLAT_VALUES              the number of values per lattice point,
