@@ -88,14 +88,18 @@ float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gath
 }
 
 // The light of the neighbour at cell - STEP, travelling along +STEP: its far face (normal
-// along the travel) and its four side faces (normals across it).
+// along the travel) and its four side faces (normals across it). A neighbour past the grid's
+// edge sends nothing: it is read at the nearest cell and weighted by zero, which lavapipe runs
+// faster than a branch around the whole neighbour (both sides of a branch run under a mask).
 #define NEIGHBOUR(STEP, AXIS_INDEX, FAR, W_FAR, S1, W1, S2, W2, S3, W3, S4, W4)                    \
   {                                                                                                 \
     ivec3 neighbour = cell - STEP;                                                                  \
-    if (in_grid && all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, dims))) { \
-      vec4 sh_r = imageLoad(grids, lpv_grid_texel(neighbour, 0, source, depth));                 \
-      vec4 sh_g = imageLoad(grids, lpv_grid_texel(neighbour, 1, source, depth));                 \
-      vec4 sh_b = imageLoad(grids, lpv_grid_texel(neighbour, 2, source, depth));                 \
+    {                                                                                               \
+      float inside = all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, dims)) ? 1.0 : 0.0; \
+      neighbour = clamp(neighbour, ivec3(0), dims - 1);                                             \
+      vec4 sh_r = imageLoad(grids, lpv_grid_texel(neighbour, 0, source, depth)) * inside;          \
+      vec4 sh_g = imageLoad(grids, lpv_grid_texel(neighbour, 1, source, depth)) * inside;          \
+      vec4 sh_b = imageLoad(grids, lpv_grid_texel(neighbour, 2, source, depth)) * inside;          \
       vec4 blocking = vec4(0.0);                                                                    \
       vec3 albedo = vec3(0.0);                                                                      \
       if (OCCLUDED) {                                                                               \
@@ -114,8 +118,10 @@ float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gath
 void main() {
   GpuLpvCascade g = lpv.cascades[push.cascade];
   ivec3 dims = ivec3(g.dims.xyz);
-  ivec3 cell = ivec3(gl_GlobalInvocationID);
-  bool in_grid = all(lessThan(cell, dims));
+  // Invocations past the grid (dims not a multiple of the group) work on its last cell and
+  // store nothing.
+  bool in_grid = all(lessThan(gl_GlobalInvocationID, uvec3(dims)));
+  ivec3 cell = min(ivec3(gl_GlobalInvocationID), dims - 1);
   uint depth = g.dims.z;
   uint source = (push.iteration + 1u) & 1u;  // iteration 1 reads grid 0 and writes grid 1
   uint target = push.iteration & 1u;
