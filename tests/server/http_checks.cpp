@@ -1,5 +1,7 @@
 #include "http_checks.hpp"
 
+#include "server/base64.hpp"
+
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
 #include <stb/stb_image.h>
@@ -42,22 +44,8 @@ std::optional<ImageSize> png_size(const std::string& bytes) {
 }
 
 std::string base64_decode(const std::string& text) {
-  static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  std::uint32_t bits = 0;
-  int count = 0;
-  for (char c : text) {
-    if (c == '=') break;
-    const auto v = alphabet.find(c);
-    if (v == std::string::npos) continue;
-    bits = (bits << 6) | std::uint32_t(v);
-    count += 6;
-    if (count >= 8) {
-      count -= 8;
-      out += char((bits >> count) & 0xff);
-    }
-  }
-  return out;
+  const auto bytes = server::base64_decode(text);
+  return bytes ? std::string(bytes->begin(), bytes->end()) : std::string();
 }
 
 std::map<std::string, double> parse_server_timing(const std::string& header) {

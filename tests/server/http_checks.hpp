@@ -19,6 +19,7 @@ struct ImageSize {
 // Decodes a PNG with stb_image; empty when the bytes are not a PNG.
 std::optional<ImageSize> png_size(const std::string& bytes);
 
+// The bytes of strict base64 text (server::base64_decode); empty when it is not base64.
 std::string base64_decode(const std::string& text);
 
 // Server-Timing "name;dur=1.5;desc=..., ..." as name -> dur.

@@ -53,5 +53,15 @@ TEST(Base64, MatchesRfc4648TestVectors) {
   EXPECT_EQ(base64_encode(high), "//79");
 }
 
+TEST(Base64, DecodeInvertsEncodeAndRejectsWhatIsNotStrictBase64) {
+  for (std::string_view s : {"", "f", "fo", "foo", "foob", "fooba", "foobar"}) {
+    const std::vector<std::uint8_t> bytes(s.begin(), s.end());
+    EXPECT_EQ(base64_decode(base64_encode(bytes)), bytes) << s;
+  }
+  EXPECT_EQ(base64_decode("//79"), (std::vector<std::uint8_t>{0xff, 0xfe, 0xfd}));
+  for (std::string_view bad : {"Zg=", "Zg", "Z===", "Zm9v\n", "Zm*v", "=Zm9", "Zg==Zg=="})
+    EXPECT_FALSE(base64_decode(bad).has_value()) << bad;
+}
+
 }  // namespace
 }  // namespace server
