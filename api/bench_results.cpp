@@ -24,7 +24,6 @@ constexpr std::size_t kMaxSamples = 1u << 20;
 constexpr std::size_t kMaxMetrics = 256;
 constexpr double kMaxMs = 1.0e9;
 constexpr std::array statuses{BenchCaseStatus::ok, BenchCaseStatus::skipped, BenchCaseStatus::failed};
-constexpr std::array case_kinds{BenchCaseKind::render, BenchCaseKind::server_round_trip};
 
 // ---- reading: a member of an object, unknown members ignored ----------------------------
 
@@ -68,7 +67,7 @@ BenchImage read_image(const Field& f) {
 BenchCaseResult read_case(const Field& f) {
   BenchCaseResult c;
   c.name = as_string(member(f, "name"), limits::max_bench_name_bytes);
-  c.kind = as_enum(member(f, "kind"), case_kinds);
+  c.kind = as_enum(member(f, "kind"), kBenchCaseKinds);
   c.status = as_enum(member(f, "status"), statuses);
   if (auto v = optional_member(f, "reason")) c.reason = as_string(*v, kMaxText);
   const Field request = member(f, "request");

@@ -19,22 +19,10 @@ using namespace reader;
 constexpr std::array<std::string_view, 6> suite_keys{"suite", "version", "description", "repetitions", "warmup",
                                                      "cases"};
 constexpr std::array<std::string_view, 4> case_keys{"name", "kind", "request", "scene_file"};
-constexpr std::array case_kinds{BenchCaseKind::render, BenchCaseKind::server_round_trip};
 constexpr std::uint32_t max_suite_version = 1000000;
 
-// Suite names go into file names and report titles: the scene-name alphabet.
-std::string read_suite_name(const Field& f) {
-  const std::string expectation = "a string of 1 to " + std::to_string(limits::max_bench_name_bytes) +
-                                  " characters from [A-Za-z0-9._-]";
-  if (!f.value->is_string()) f.reject(expectation);
-  const std::string& name = f.value->get_ref<const std::string&>();
-  const bool valid = std::ranges::all_of(name, [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '_' ||
-           c == '-';
-  });
-  if (name.empty() || name.size() > limits::max_bench_name_bytes || !valid) f.reject(expectation);
-  return name;
-}
+// Suite names are shown in report titles and tables: the scene-name alphabet.
+std::string read_suite_name(const Field& f) { return as_name(f, limits::max_bench_name_bytes, true); }
 
 // Case names are shown in tables and reports: printable ASCII, no '|' (a Markdown cell).
 std::string read_case_name(const Field& f) {
@@ -51,7 +39,7 @@ BenchCase read_case(const Field& f) {
   const Object obj(f, case_keys);
   BenchCase c;
   c.name = read_case_name(obj.require("name", "the case's name, unique in the suite"));
-  if (auto v = obj.get("kind")) c.kind = as_enum(*v, case_kinds);
+  if (auto v = obj.get("kind")) c.kind = as_enum(*v, kBenchCaseKinds);
   const Field request = obj.require("request", "the render request to time; {} for the defaults");
   c.request = read_render_request(request);
   if (c.request.dry_run)

@@ -5,6 +5,7 @@
 
 #include "api/render_request.hpp"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -18,6 +19,7 @@ namespace api {
 // server_round_trip: a client's POST /v1/render to a server, image in the body, timed from
 // sending the request to the last byte of the answer.
 enum class BenchCaseKind { render, server_round_trip };
+inline constexpr std::array kBenchCaseKinds{BenchCaseKind::render, BenchCaseKind::server_round_trip};
 
 struct BenchCase {
   std::string name;  // unique within the suite; how results and comparisons name the case

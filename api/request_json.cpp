@@ -66,19 +66,8 @@ glm::vec3 as_direction(const Field& f) {
 
 glm::vec3 as_color(const Field& f) { return as_vec3(f, 0.0f, max_color); }
 
-std::string as_scene_name(const Field& f) {
-  const std::string expectation = "a string of 1 to " + std::to_string(max_scene_name) +
-                                  " characters from [A-Za-z0-9._-], not starting with '.'";
-  if (!f.value->is_string()) f.reject(expectation);
-  const std::string& name = f.value->get_ref<const std::string&>();
-  const bool valid_chars = std::ranges::all_of(name, [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '_' ||
-           c == '-';
-  });
-  // A leading '.' would allow "." and "..", which name directories, not scenes.
-  if (name.empty() || name.size() > max_scene_name || name.front() == '.' || !valid_chars) f.reject(expectation);
-  return name;
-}
+// Scene names name files of the scene store: no leading '.'.
+std::string as_scene_name(const Field& f) { return as_name(f, max_scene_name, false); }
 
 // ---- the schema --------------------------------------------------------------------
 

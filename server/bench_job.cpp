@@ -1,13 +1,9 @@
 #include "server/bench_job.hpp"
 
+#include "renderer/bench/build_info.hpp"
 #include "renderer/bench/renderer_case_runner.hpp"
 
 namespace server {
-namespace {
-
-constexpr std::size_t kShortCommit = 12;
-
-}  // namespace
 
 void BenchJob::run(accuracy::Workbench& bench) {
   // No scene files (what the server renders is uploaded), and no round trips: measuring the
@@ -20,7 +16,7 @@ void BenchJob::run(accuracy::Workbench& bench) {
                                                 "lpv-bench run --url"},
                             {suite.repetitions, suite.warmup}, observer);
   result->mode = "server";
-  result->label = result->build.commit.substr(0, kShortCommit);
+  result->label = bench::default_label(result->build);
 }
 
 }  // namespace server

@@ -58,4 +58,6 @@ api::BenchBuild this_build() {
   return build;
 }
 
+std::string default_label(const api::BenchBuild& build) { return build.commit.substr(0, 12); }
+
 }  // namespace bench

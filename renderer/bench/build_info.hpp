@@ -3,6 +3,8 @@
 
 #include "api/bench_results.hpp"
 
+#include <string>
+
 namespace bench {
 
 // Host name, CPU model (/proc/cpuinfo), logical cores, OS (/etc/os-release) and kernel
@@ -13,5 +15,8 @@ api::BenchMachine this_machine();
 // made from (written at build time; $LPV_BENCH_COMMIT overrides it, e.g. for a build from a
 // source archive).
 api::BenchBuild this_build();
+
+// The label results carry when their run names none: the commit's first 12 characters.
+std::string default_label(const api::BenchBuild& build);
 
 }  // namespace bench

@@ -1,6 +1,6 @@
 #include "renderer/bench/statistics.hpp"
 
-#include "api/bench_results.hpp"
+#include "api/render_stats.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -54,7 +54,9 @@ double normal_two_sided(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0
 
 }  // namespace
 
-double median(std::span<const double> samples) { return api::summarize(samples).median; }
+double median(std::span<const double> samples) {
+  return api::TimeSummary::of({samples.begin(), samples.end()}).median;
+}
 
 double mann_whitney_p(std::span<const double> a, std::span<const double> b) {
   if (a.empty() || b.empty()) return 1.0;

@@ -5,6 +5,7 @@
 #include "input_files.hpp"
 #include "local_runners.hpp"
 #include "results_report.hpp"
+#include "renderer/bench/build_info.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -15,7 +16,6 @@ namespace bench {
 namespace {
 
 constexpr int kExitFailure = 1;
-constexpr std::size_t kShortCommit = 12;
 
 api::BenchResults run_suite_here(const Options& options, const api::BenchSuite& suite, const RunOptions& run,
                                  const RunObserver& observer) {
@@ -61,7 +61,7 @@ int run_command(const Options& options) {
     results.build.commit = *options.commit;
     results.build.dirty = false;
   }
-  results.label = options.label.value_or(results.build.commit.substr(0, kShortCommit));
+  results.label = options.label.value_or(default_label(results.build));
   write_text_file(options.out.value_or("results.json"), to_json(results).dump(1) + "\n");
   if (options.report) write_text_file(*options.report, results_markdown(results));
   if (!options.quiet) std::fputs(results_text(results).c_str(), stdout);
