@@ -50,7 +50,6 @@ bool EventChannel::closed() const {
 }
 
 void SweepJob::run(accuracy::Workbench& bench) {
-  const auto should_stop = [this] { return stop.load() || Clock::now() >= deadline; };
   accuracy::SweepObserver observer;
   // A progress line at most every kProgressInterval, and the last one: enough for a bar.
   Clock::time_point last_progress{};
@@ -67,7 +66,7 @@ void SweepJob::run(accuracy::Workbench& bench) {
   observer.row_done = [&](std::size_t index, std::size_t total, const api::SweepRow& row) {
     events.push({{"event", "row"}, {"index", index}, {"total", total}, {"row", api::to_json(row)}});
   };
-  observer.stop_requested = should_stop;
+  observer.stop_requested = [this] { return should_stop(); };
   try {
     result = accuracy::sweep(bench, request, observer);
   } catch (...) {

@@ -58,7 +58,6 @@ class SweepJob : public Job {
   // {"event": "reference_progress", "fraction"}, {"event": "reference", "reference": {...}},
   // {"event": "row", "index", "total", "row": {...}}; closed when the sweep ends.
   EventChannel events;
-  std::atomic<bool> stop{false};  // the client left: end at the next row
 
  protected:
   void run(accuracy::Workbench& bench) override;

@@ -108,7 +108,7 @@ void stream_sweep(const std::shared_ptr<SweepJob>& job, httplib::Response& respo
           outcome = service.queue.wait_until(*job, client_gone, Clock::now() + kStreamPoll);
         }
         if (!outcome || *outcome == RenderQueue::Outcome::client_gone || !write_pending()) {
-          job->stop = true;
+          job->abandoned = true;
           service.metrics.count_render("client_gone");
           return false;
         }
@@ -182,10 +182,7 @@ void handle_sweep(const httplib::Request& request, httplib::Response& response, 
     if (admit_job(job, response, service)) stream_sweep(job, response, service);
     return;
   }
-  if (!run_job(job, deadline, request, response, service)) {
-    job->stop = true;  // nobody reads it any more: end it at the next row
-    return;
-  }
+  if (!run_job(job, deadline, request, response, service)) return;
   send_sweep(response, *job, format);
 }
 

@@ -10,7 +10,7 @@ void BenchJob::run(accuracy::Workbench& bench) {
   // server's HTTP from inside the server would measure nothing a client sees.
   bench::RendererCaseRunner renders(bench.renderer, device, false);
   bench::RunObserver observer;
-  observer.stop_requested = [this] { return stop.load() || Clock::now() >= deadline; };
+  observer.stop_requested = [this] { return should_stop(); };
   result = bench::run_suite(suite,
                             {&renders, nullptr, "POST /v1/bench runs in the server; time round trips with "
                                                 "lpv-bench run --url"},

@@ -7,7 +7,6 @@
 #include "api/bench_suite.hpp"
 #include "server/render_queue.hpp"
 
-#include <atomic>
 #include <optional>
 
 namespace server {
@@ -21,7 +20,6 @@ class BenchJob : public Job {
   const api::BenchSuite suite;
   const api::BenchDevice device;
   std::optional<api::BenchResults> result;
-  std::atomic<bool> stop{false};  // nobody waits for it any more: end at the next render
 
  protected:
   void run(accuracy::Workbench& bench) override;

@@ -60,10 +60,7 @@ void handle_bench(const httplib::Request& request, httplib::Response& response, 
   auto job = std::make_shared<BenchJob>(std::move(suite),
                                         api::BenchDevice{device->value("name", ""), device->value("driver", "")},
                                         request_arrival() + deadline);
-  if (!run_job(job, deadline, request, response, service)) {
-    job->stop = true;  // nobody reads it any more: end it at the next render
-    return;
-  }
+  if (!run_job(job, deadline, request, response, service)) return;
   send_json(response, api::to_json(*job->result));
 }
 

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -48,6 +49,12 @@ class Job {
   // Valid once RenderQueue::wait returned Outcome::done: error is set or the job's result is.
   std::exception_ptr error;
   double queue_wait_ms = 0.0;  // from submission to a worker taking it (or dropping it)
+
+  // Nobody waits for the result any more (the client left, or was answered without it).
+  std::atomic<bool> abandoned{false};
+  // For long jobs (a sweep, a benchmark suite) to ask between steps: abandoned, or past the
+  // deadline.
+  bool should_stop() const { return abandoned.load() || Clock::now() >= deadline; }
 
  protected:
   friend class RenderQueue;

@@ -120,6 +120,8 @@ bool run_job(const std::shared_ptr<Job>& job, std::chrono::milliseconds deadline
   if (!admit_job(job, response, service)) return false;
   const ClientConnection client(request);
   const RenderQueue::Outcome outcome = service.queue.wait(*job, [&] { return client.closed(); });
+  // Answered without its result: a long job still running ends at its next step.
+  if (outcome != RenderQueue::Outcome::done) job->abandoned = true;
   note_queue_wait_ms(job->queue_wait_ms);
   service.metrics.observe_queue_wait(job->queue_wait_ms / 1000.0);
   if (outcome == RenderQueue::Outcome::client_gone) {
