@@ -310,7 +310,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   frame.camera_forward = glm::vec4(camera.forward, 0.0f);
   frame.depth_range = glm::vec4(camera.near, camera.far, 0.0f, 0.0f);
   frame.exposure = glm::vec4(std::exp2(out.exposure), 0.0f, 0.0f, 0.0f);
-  frame.size_view = glm::uvec4(out.width, out.height, gpu_view(out.view), std::uint32_t(light_setup.lights.size()));
+  frame.size_view = glm::uvec4(out.width, out.height, 0u, std::uint32_t(light_setup.lights.size()));
   const gpu::GpuLpv lpv_params = plan.run[kInject] ? lpv_setup.gpu : no_lpv();
   const auto light_bytes = light_setup.lights.size() * sizeof(gpu::GpuLight);
   const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);

@@ -33,12 +33,14 @@ vec3 decode_albedo(float code) {
   return vec3(q & 255u, (q >> 8) & 255u, (q >> 16) & 255u) / 255.0;
 }
 
-// lpv.injection "nearest": each surfel to its nearest corner only (cheaper, not continuous).
-layout(constant_id = 0) const bool TRILINEAR_INJECTION = true;
+// The blockers' albedo serves bounces only: without them it is neither summed nor splatted.
+layout(constant_id = 1) const bool BOUNCES = true;
 
 // The lattice is the cell corners; each holds LPV_GV_WORDS sums per source: the blocking
 // potential's SH (4), the blockers' albedo (3) and the potential (1), each weighted by it.
+// Without bounces only the blocking potential's 4 are splatted.
 #define SPLAT_VALUES LPV_GV_WORDS
+#define SPLAT_ACTIVE_VALUES (BOUNCES ? LPV_GV_WORDS : 4u)
 #define SPLAT_SUMS corner_sums
 uint splat_index(ivec3 corner) {
   uvec3 corner_dims = lpv.cascades[push.cascade].dims.xyz + 1u;
@@ -56,14 +58,12 @@ bool surfel_splat(vec3 p, vec3 n, float area, vec3 albedo, out ivec3 low, out ve
   float potential = min(area / (s * s), MAX_POTENTIAL);
   vec4 lobe = sh_cosine_lobe(n);
   for (uint k = 0u; k < 4u; ++k) values[k] = lobe[k] * potential;
-  // The blockers' albedo only serves bounces; left at zero without them, its sums cost no
-  // atomics (the splat skips zeros), which halves the pass's atomics.
-  float albedo_weight = (lpv.info.z & LPV_FLAG_BOUNCES) != 0u ? potential : 0.0;
-  for (uint c = 0u; c < 3u; ++c) values[4u + c] = albedo[c] * albedo_weight;
-  values[7] = albedo_weight;
-  low = TRILINEAR_INJECTION ? ivec3(floor(q)) : ivec3(round(q));
-  f = TRILINEAR_INJECTION ? q - vec3(low) : vec3(0.0);
-  return all(greaterThanEqual(q, vec3(0.0))) && all(lessThanEqual(q, vec3(g.dims.xyz))) && potential > 0.0;
+  if (BOUNCES) {
+    for (uint c = 0u; c < 3u; ++c) values[4u + c] = albedo[c] * potential;
+    values[7] = potential;
+  }
+  splat_lattice(q, low, f);  // lattice: cell corners
+  return lpv_inside_distance(g, q) >= 0.0 && potential > 0.0;
 }
 
 void main() {

@@ -94,25 +94,23 @@ float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gath
 #define NEIGHBOUR(STEP, AXIS_INDEX, FAR, W_FAR, S1, W1, S2, W2, S3, W3, S4, W4)                    \
   {                                                                                                 \
     ivec3 neighbour = cell - STEP;                                                                  \
-    {                                                                                               \
-      float inside = all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, dims)) ? 1.0 : 0.0; \
-      neighbour = clamp(neighbour, ivec3(0), dims - 1);                                             \
-      vec4 sh_r = imageLoad(grids, lpv_grid_texel(neighbour, 0, source, depth)) * inside;          \
-      vec4 sh_g = imageLoad(grids, lpv_grid_texel(neighbour, 1, source, depth)) * inside;          \
-      vec4 sh_b = imageLoad(grids, lpv_grid_texel(neighbour, 2, source, depth)) * inside;          \
-      vec4 blocking = vec4(0.0);                                                                    \
-      vec3 albedo = vec3(0.0);                                                                      \
-      if (OCCLUDED) {                                                                               \
-        ivec3 lower = min(cell, neighbour);                                                         \
-        blocking = imageLoad(faces, ivec3(6 * lower.x + AXIS_INDEX, lower.yz)) * blocking_on;       \
-        if (BOUNCES) albedo = imageLoad(faces, ivec3(6 * lower.x + 3 + AXIS_INDEX, lower.yz)).rgb;   \
-      }                                                                                             \
-      FACE(W_FAR, LPV_FAR_FACE_SOLID_ANGLE, FAR)                                                    \
-      FACE(W1, LPV_SIDE_FACE_SOLID_ANGLE, S1)                                                       \
-      FACE(W2, LPV_SIDE_FACE_SOLID_ANGLE, S2)                                                       \
-      FACE(W3, LPV_SIDE_FACE_SOLID_ANGLE, S3)                                                       \
-      FACE(W4, LPV_SIDE_FACE_SOLID_ANGLE, S4)                                                       \
+    float inside = all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, dims)) ? 1.0 : 0.0; \
+    neighbour = clamp(neighbour, ivec3(0), dims - 1);                                               \
+    vec4 sh_r = imageLoad(grids, lpv_grid_texel(neighbour, 0, source, depth)) * inside;             \
+    vec4 sh_g = imageLoad(grids, lpv_grid_texel(neighbour, 1, source, depth)) * inside;             \
+    vec4 sh_b = imageLoad(grids, lpv_grid_texel(neighbour, 2, source, depth)) * inside;             \
+    vec4 blocking = vec4(0.0);                                                                      \
+    vec3 albedo = vec3(0.0);                                                                        \
+    if (OCCLUDED) {                                                                                 \
+      ivec3 lower = min(cell, neighbour);                                                           \
+      blocking = imageLoad(faces, ivec3(6 * lower.x + AXIS_INDEX, lower.yz)) * blocking_on;         \
+      if (BOUNCES) albedo = imageLoad(faces, ivec3(6 * lower.x + 3 + AXIS_INDEX, lower.yz)).rgb;    \
     }                                                                                               \
+    FACE(W_FAR, LPV_FAR_FACE_SOLID_ANGLE, FAR)                                                      \
+    FACE(W1, LPV_SIDE_FACE_SOLID_ANGLE, S1)                                                         \
+    FACE(W2, LPV_SIDE_FACE_SOLID_ANGLE, S2)                                                         \
+    FACE(W3, LPV_SIDE_FACE_SOLID_ANGLE, S3)                                                         \
+    FACE(W4, LPV_SIDE_FACE_SOLID_ANGLE, S4)                                                         \
   }
 
 void main() {

@@ -99,7 +99,7 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   GpuLpvCascade g = lpv.cascades[c];
   ivec3 last = ivec3(g.dims.xyz) - 1;
   vec3 t = clamp(q - 0.5, vec3(0.0), vec3(last));  // in units of cell centres
-  ivec3 low = min(ivec3(t), last);
+  ivec3 low = ivec3(t);
   vec3 f = t - vec3(low);
   ivec3 high = min(low + 1, last);
   vec4 lobe = sh_cosine_lobe(-n);

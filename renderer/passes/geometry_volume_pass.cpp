@@ -19,13 +19,14 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  for (const api::Injection injection : {api::Injection::trilinear, api::Injection::nearest}) {
-    const std::array<std::uint32_t, 1> trilinear{injection == api::Injection::trilinear ? 1u : 0u};
-    inject_[std::size_t(injection)] = vkx::Pipeline(
-        device, vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants)),
-        spirv_lpv_geometry_inject_comp, trilinear);
-  }
   for (const bool bounces : {false, true}) {
+    for (const api::Injection injection : {api::Injection::trilinear, api::Injection::nearest}) {
+      const std::array<std::uint32_t, 2> constants{injection == api::Injection::trilinear ? 1u : 0u, bounces ? 1u : 0u};
+      inject_[bounces][std::size_t(injection)] = vkx::Pipeline(
+          device,
+          vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants)),
+          spirv_lpv_geometry_inject_comp, constants);
+    }
     const std::array<std::uint32_t, 1> with_albedo{bounces ? 1u : 0u};
     corners_[bounces] = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image}, sizeof(std::uint32_t)),
                                       spirv_lpv_geometry_corners_comp, with_albedo);
@@ -39,7 +40,7 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
                                 const LpvVolumes& volumes) const {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
-  const vkx::Pipeline& inject = inject_[std::size_t(sources.injection)];
+  const vkx::Pipeline& inject = inject_[sources.bounces][std::size_t(sources.injection)];
   vkx::DescriptorWriter(inject.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .image(1, image, maps.position.view(), general)

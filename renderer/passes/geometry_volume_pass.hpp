@@ -18,7 +18,7 @@ struct GeometrySources {
   bool camera = true;  // surfels of every camera_stride-th G-buffer pixel (each way)
   std::uint32_t camera_stride = 1;
   api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
-  bool bounces = false;  // the blockers' albedo is resolved too (it serves bounces only)
+  bool bounces = false;  // the blockers' albedo is splatted and resolved too (it serves bounces only)
 };
 
 class GeometryVolumePass {
@@ -30,7 +30,7 @@ class GeometryVolumePass {
 
  private:
   const vkx::Device& device_;
-  std::array<vkx::Pipeline, 2> inject_;  // by api::Injection
+  std::array<std::array<vkx::Pipeline, 2>, 2> inject_;  // by GeometrySources::bounces, then api::Injection
   std::array<vkx::Pipeline, 2> corners_;  // by GeometrySources::bounces
   std::array<vkx::Pipeline, 2> resolve_;
 };

@@ -77,7 +77,7 @@ struct GpuFrame {
   vec4 camera_forward;    // xyz: unit view direction
   vec4 depth_range;       // x: near, y: far (metres along camera_forward)
   vec4 exposure;          // x: 2^exposure
-  uvec4 size_view;        // x: width, y: height, z: VIEW_*, w: light count
+  uvec4 size_view;        // x: width, y: height, z: unused (the view specialises the shading), w: light count
 };
 
 // ---- Light Propagation Volumes ----

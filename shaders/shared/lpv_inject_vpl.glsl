@@ -9,13 +9,11 @@
 #ifndef LPV_INJECT_VPL_GLSL
 #define LPV_INJECT_VPL_GLSL
 
-// lpv.injection "nearest": each VPL into the one cell it lands in (the paper's way; cheaper,
-// but not continuous). A specialization constant, so each pipeline runs one of the two.
-layout(constant_id = 0) const bool TRILINEAR_INJECTION = true;
-
 #define SPLAT_VALUES 12u
 #define SPLAT_SUMS injected
-uint splat_index(ivec3 cell) { return lpv_cell_index(uvec3(cell), lpv.cascades[push.cascade].dims.xyz) * 12u; }
+uint splat_index(ivec3 cell) {
+  return lpv_cell_index(uvec3(cell), lpv.cascades[push.cascade].dims.xyz) * SPLAT_VALUES;
+}
 #include "lpv_splat.glsl"
 
 ivec3 vpl_last_cell() { return ivec3(lpv.cascades[push.cascade].dims.xyz) - 1; }
@@ -24,12 +22,11 @@ ivec3 vpl_last_cell() { return ivec3(lpv.cascades[push.cascade].dims.xyz) - 1; }
 bool vpl_splat(vec3 position, vec3 normal, vec3 flux, out ivec3 low, out vec3 f, out float values[SPLAT_VALUES]) {
   GpuLpvCascade g = lpv.cascades[push.cascade];
   vec3 q = lpv_grid_position(g, position + normal * (lpv.scales.w * g.origin.w));
-  vec4 lobe = sh_cosine_lobe(normal) / LPV_PI;
-  for (uint c = 0u; c < 3u; ++c)
-    for (uint k = 0u; k < 4u; ++k) values[c * 4u + k] = lobe[k] * flux[c];
-  vec3 t = q - 0.5;  // in units of cell centres
-  low = TRILINEAR_INJECTION ? ivec3(floor(t)) : min(ivec3(q), vpl_last_cell());
-  f = TRILINEAR_INJECTION ? t - vec3(low) : vec3(0.0);
+  for (uint c = 0u; c < 3u; ++c) {
+    vec4 sh = sh_diffuse_emitter(normal, flux[c]);
+    for (uint k = 0u; k < 4u; ++k) values[c * 4u + k] = sh[k];
+  }
+  splat_lattice(q - 0.5, low, f);  // lattice: cell centres
   return lpv_inside_distance(g, q) >= 0.0;
 }
 

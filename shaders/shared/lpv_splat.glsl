@@ -20,16 +20,35 @@
 //   4x4x4 groups number their subgroups past gl_NumSubgroups, so do not count on those),
 //   and the flux conservation tests would see a lost or invented share.
 //
+// lpv.injection "nearest" (TRILINEAR_INJECTION false) puts each point at its nearest lattice
+// point only (the paper's way: cheaper, but a point moved by a hair can jump a whole cell).
+//
 // The includer defines before the include:
 //   SPLAT_VALUES              the number of values per lattice point,
+//   SPLAT_ACTIVE_VALUES       (optional) how many of them, from the first, a pipeline splats
+//                             (a specialization constant; the rest are left alone),
 //   SPLAT_SUMS                its int64_t buffer array of the sums,
 //   uint splat_index(ivec3)   the index in SPLAT_SUMS of a lattice point's first value.
 #ifndef LPV_SPLAT_GLSL
 #define LPV_SPLAT_GLSL
 
+#ifndef SPLAT_ACTIVE_VALUES
+#define SPLAT_ACTIVE_VALUES SPLAT_VALUES
+#endif
+
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_shuffle : require
+
+// A specialization constant, so each pipeline runs one of the two ways.
+layout(constant_id = 0) const bool TRILINEAR_INJECTION = true;
+
+// The splat of a point at lattice position t: trilinear, the lattice point below and the
+// fraction past it; nearest, the nearest lattice point with no fraction.
+void splat_lattice(vec3 t, out ivec3 low, out vec3 f) {
+  low = ivec3(floor(TRILINEAR_INJECTION ? t : t + 0.5));
+  f = TRILINEAR_INJECTION ? t - vec3(low) : vec3(0.0);
+}
 
 // The weight the point (low, f) gives lattice point `cell`, with the clamping to [0, last]:
 // separable, the product over the axes of the weights of the (one or two) steps o landing on it.
@@ -47,7 +66,7 @@ void splat_point(ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, floa
     float w = w3.x * w3.y * w3.z;
     if (w == 0.0) continue;
     uint base = splat_index(clamp(low + o, ivec3(0), last));
-    for (uint i = 0u; i < SPLAT_VALUES; ++i) {
+    for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) {
       if (values[i] != 0.0) atomicAdd(SPLAT_SUMS[base + i], to_fixed(values[i] * w, units));
     }
   }
@@ -63,10 +82,10 @@ void splat_subgroup(bool valid, ivec3 low, vec3 f, float values[SPLAT_VALUES], i
   if (!valid) {  // no share anywhere: weight 0 where the lattice is, values 0
     low = ivec3(0);
     f = vec3(0.0);
-    for (uint i = 0u; i < SPLAT_VALUES; ++i) values[i] = 0.0;
+    for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) values[i] = 0.0;
   }
   ivec3 lo = subgroupMin(valid ? clamp(low, ivec3(0), last) : ivec3(NONE));
-  ivec3 hi = subgroupMax(valid ? clamp(low + 1, ivec3(0), last) : ivec3(-NONE));
+  ivec3 hi = subgroupMax(valid ? clamp(low + ivec3(TRILINEAR_INJECTION), ivec3(0), last) : ivec3(-NONE));
   if (lo.x > hi.x) return;  // no point in the subgroup
   ivec3 box = hi - lo + 1;
   uint lattice = uint(box.x * box.y * box.z);
@@ -78,14 +97,14 @@ void splat_subgroup(bool valid, ivec3 low, vec3 f, float values[SPLAT_VALUES], i
     uint index = first + gl_SubgroupInvocationID;
     ivec3 cell = lo + ivec3(index % uint(box.x), (index / uint(box.x)) % uint(box.y), index / uint(box.x * box.y));
     float sums[SPLAT_VALUES];
-    for (uint i = 0u; i < SPLAT_VALUES; ++i) sums[i] = 0.0;
+    for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) sums[i] = 0.0;
     for (uint p = 0u; p < gl_SubgroupSize; ++p) {
       float w = splat_weight(cell, subgroupShuffle(low, p), subgroupShuffle(f, p), last);
-      for (uint i = 0u; i < SPLAT_VALUES; ++i) sums[i] += w * subgroupShuffle(values[i], p);
+      for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) sums[i] += w * subgroupShuffle(values[i], p);
     }
     if (index >= lattice) continue;
     uint base = splat_index(cell);
-    for (uint i = 0u; i < SPLAT_VALUES; ++i) {
+    for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) {
       if (sums[i] != 0.0) atomicAdd(SPLAT_SUMS[base + i], to_fixed(sums[i], units));
     }
   }
