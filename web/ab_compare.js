@@ -57,10 +57,8 @@ export class AbCompare extends EventTarget {
     await this.#run.start(options, async (signal) => {
       const answer = await compare(body, signal);
       await Promise.all([
-        showPng(elements.imageA, answer.base.image),
-        showPng(elements.imageB, answer.other.image),
-        showPng(elements.overlayA, answer.base.image),
-        showPng(elements.overlayB, answer.other.image),
+        showPng([elements.imageA, elements.overlayA], answer.base.image),
+        showPng([elements.imageB, elements.overlayB], answer.other.image),
         showPng(elements.difference, answer.difference.image),
       ]);
       elements.differenceCaption.textContent = `|A − B| of luminance, 0 to ${answer.difference.scale.toPrecision(3)} (black to pale yellow)`;

@@ -122,10 +122,12 @@ settings.addEventListener('submit', (event) => event.preventDefault());  // Ente
 let scheduled = '';
 function renderIfChanged() {
   const request = state.request;
+  const json = JSON.stringify(request);
+  if (json !== scheduled) {
+    scheduled = json;
+    loop.schedule(request);
+  }
   writeUrlState({ request, a: ab.pinned });
-  if (JSON.stringify(request) === scheduled) return;
-  scheduled = JSON.stringify(request);
-  loop.schedule(request);
 }
 state.addEventListener('change', renderIfChanged);
 function retryRender() {

@@ -10,8 +10,10 @@ function pngBlob(base64) {
   return new Blob([bytes], { type: 'image/png' });
 }
 
-export function showPng(img, base64) {
-  return showImage(img, pngBlob(base64));
+// One image (base64 PNG) into one <img> or several: decoded from base64 once.
+export function showPng(imgs, base64) {
+  const blob = pngBlob(base64);
+  return Promise.all([imgs].flat().map((img) => showImage(img, blob)));
 }
 
 // Resolves once the image is decoded, so the caller knows it is ready to be painted.

@@ -1,8 +1,7 @@
 // Turns changes of the request into frames: a change aborts the request in flight at once
 // (its answer, should it still arrive, is dropped) and sends the new one after a short
 // debounce, so a dragged slider sends one request, not fifty. The frame on screen is thus
-// never replaced by one older than the newest change, and `shownRequest` says which request
-// it answers.
+// never replaced by one older than the newest change.
 //
 // Performance marks (read by the browser test): "lpv:change" at each change, "lpv:request"
 // when its request is sent, "lpv:answer" when the answer is in, "lpv:frame" once its image
@@ -19,7 +18,6 @@ export class RenderLoop {
   // render(request, signal) -> answer; show(answer, request) -> promise, resolves when shown
   constructor({ debounceMs, render, show, onBusy, onError }) {
     Object.assign(this, { debounceMs, render, show, onBusy, onError });
-    this.shownRequest = null;
   }
 
   schedule(request) {
@@ -42,7 +40,6 @@ export class RenderLoop {
       performance.mark('lpv:answer');
       await this.show(answer, request);
       if (!current()) return;
-      this.shownRequest = request;
       await nextPaint();
       performance.mark('lpv:frame');
       performance.measure('lpv:change-to-frame', 'lpv:change', 'lpv:frame');

@@ -1,8 +1,8 @@
 // The render request the page explores: exactly the JSON body of POST /v1/render. It holds
-// only what differs from the API's defaults, so links and curl commands stay short and the
-// server stays the one place that knows a default. Controls read values through `get`,
-// which falls back to the defaults below (docs/rendering.md, docs/lpv.md) and to the
-// scene's own camera and lights (GET /v1/scenes).
+// only what differs from the API's defaults, so links and curl commands stay short. Controls
+// read values through `get`, which falls back to the defaults below and to the scene's own
+// camera and lights (GET /v1/scenes). DEFAULTS copies the defaults of api/openapi.yaml (the
+// server's); a value equal to its copy is left out of the request, so the two must agree.
 
 const DEFAULTS = {
   scene: 'cornell-box',

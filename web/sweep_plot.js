@@ -58,7 +58,7 @@ export function sweepPlot(rows, axis, onPick) {
       (row.pareto ? ', on the Pareto front' : '') + '. Load these settings.';
     const point = svgElement('circle', {
       cx: x(row.gpu_ms), cy: y(errorOf(row)), r: 6, tabindex: 0, role: 'button', 'aria-label': label,
-      class: row.pareto ? 'point pareto' : 'point', 'data-row': rows.indexOf(row),
+      class: row.pareto ? 'point pareto' : 'point',
     });
     point.append(svgElement('title', {}, label));
     point.addEventListener('click', () => onPick(row));

@@ -151,8 +151,7 @@ test('moving a slider renders a new frame whose request carried the new value', 
   assert.equal(await page.locator('#busy').isVisible(), true, 'busy while the new frame is on its way');
   assert.equal(await page.locator('#frame').getAttribute('aria-busy'), 'true');
   assert.equal((await sent).headers().accept, 'image/png');
-  const shown = await frameShown(page, (request) => request.lpv?.iterations === 12);
-  assert.equal(shown.lpv.iterations, 12);
+  await frameShown(page, (request) => request.lpv?.iterations === 12);
   assert.notEqual(await page.locator('#frame-image').getAttribute('src'), firstSrc, 'a new image is on screen');
   assert.equal(await page.locator('#lpv-iterations').inputValue(), '12', 'the number box follows the slider');
   assert.match(page.url(), /request=.*iterations/, 'the URL holds the new value');
