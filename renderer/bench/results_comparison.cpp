@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <functional>
 #include <optional>
 #include <set>
 
@@ -14,7 +13,6 @@ namespace bench {
 namespace {
 
 // The verdict on one metric of one case, or nothing when a side lacks it.
-using Judge = std::function<std::optional<MetricVerdict>(const std::string& case_name, const std::string& metric)>;
 
 RunInfo run_info(const api::BenchResults& r) {
   return {r.label, r.suite, r.suite_version, r.build.commit, r.machine.hostname, r.device.name, r.repetitions};
@@ -45,8 +43,19 @@ std::string reason_of(const char* side, const api::BenchCaseResult& c) {
   return std::string(side) + " " + api::to_string(c.status) + (c.reason.empty() ? "" : ": " + c.reason);
 }
 
-Comparison compare_with(const api::BenchResults& base, const api::BenchResults& cand, const Judge& judge,
-                        const CompareOptions& options, bool paired) {
+// One metric of a case both runs have: paired, sample i of each from the same turn; else two
+// independent samples. Nothing when the candidate lacks it or either has no samples, or,
+// paired, when their counts differ (a pass the planner ran in one render only has no pairs).
+std::optional<MetricVerdict> judge(const api::BenchMetric& b, const api::BenchMetric* k, bool paired,
+                                   const Thresholds& thresholds) {
+  if (!k || b.samples.empty() || k->samples.empty()) return std::nullopt;
+  if (!paired) return compare_unpaired(b.name, b.samples, k->samples, thresholds);
+  if (b.samples.size() != k->samples.size()) return std::nullopt;
+  return compare_paired(b.name, b.samples, k->samples, thresholds);
+}
+
+Comparison compare_with(const api::BenchResults& base, const api::BenchResults& cand, const CompareOptions& options,
+                        bool paired) {
   Comparison comparison;
   comparison.paired = paired;
   comparison.options = options;
@@ -71,7 +80,8 @@ Comparison compare_with(const api::BenchResults& base, const api::BenchResults& 
       cc.detail = k->status == api::BenchCaseStatus::skipped ? reason_of("candidate", *k) : reason_of("baseline", b);
     } else {
       for (const api::BenchMetric& metric : b.metrics) {
-        const std::optional<MetricVerdict> verdict = judge(b.name, metric.name);
+        const std::optional<MetricVerdict> verdict =
+            judge(metric, k->metric(metric.name), paired, options.thresholds);
         if (!verdict) continue;
         const double smallest = paired ? wilcoxon_smallest_p(verdict->n_baseline)
                                        : mann_whitney_smallest_p(verdict->n_baseline, verdict->n_candidate);
@@ -153,26 +163,12 @@ bool Comparison::regression() const {
 
 Comparison compare_runs(const api::BenchResults& baseline, const api::BenchResults& candidate,
                         const CompareOptions& options) {
-  const Judge judge = [&](const std::string& case_name, const std::string& metric_name) -> std::optional<MetricVerdict> {
-    const api::BenchMetric* b = baseline.find(case_name)->metric(metric_name);
-    const api::BenchMetric* k = candidate.find(case_name)->metric(metric_name);
-    if (!b || !k || b->samples.empty() || k->samples.empty()) return std::nullopt;
-    return compare_unpaired(metric_name, b->samples, k->samples, options.thresholds);
-  };
-  return compare_with(baseline, candidate, judge, options, false);
+  return compare_with(baseline, candidate, options, false);
 }
 
 Comparison compare_pairs(const api::BenchResults& baseline, const api::BenchResults& candidate,
                          const CompareOptions& options) {
-  const Judge judge = [&](const std::string& case_name, const std::string& metric_name) -> std::optional<MetricVerdict> {
-    const api::BenchMetric* b = baseline.find(case_name)->metric(metric_name);
-    const api::BenchMetric* k = candidate.find(case_name)->metric(metric_name);
-    if (!b || !k) return std::nullopt;
-    // A pass the planner ran in one render only has no pairs to compare.
-    if (b->samples.size() != k->samples.size() || b->samples.empty()) return std::nullopt;
-    return compare_paired(metric_name, b->samples, k->samples, options.thresholds);
-  };
-  return compare_with(baseline, candidate, judge, options, true);
+  return compare_with(baseline, candidate, options, true);
 }
 
 nlohmann::json to_json(const Comparison& comparison) {

@@ -2,7 +2,6 @@
 // every time is the same, rounding is not, and failures and missing cases are reported.
 #include "renderer/bench/image_fingerprint.hpp"
 #include "renderer/bench/results_comparison.hpp"
-#include "renderer/image/pfm.hpp"
 
 #include <gtest/gtest.h>
 
@@ -171,21 +170,6 @@ TEST(BenchFingerprint, ThumbnailIsABoxFilterToAtMost64Pixels) {
   EXPECT_EQ(f.sha256.size(), 64u);
   EXPECT_EQ(f.thumbnail_width, 44u);
   EXPECT_NE(f.sha256, bench::fingerprint(gradient(1.0f)).sha256);
-}
-
-TEST(BenchFingerprint, PfmDecodesWhatItEncodes) {
-  const image::RgbaF32Image img = gradient(3.0f);
-  const std::vector<std::uint8_t> pfm = image::encode_pfm(img);
-  const image::RgbaF32Image back = image::decode_pfm(pfm);
-  EXPECT_EQ(back.width, img.width);
-  EXPECT_EQ(back.height, img.height);
-  for (std::size_t i = 0; i < img.pixels.size(); ++i)
-    EXPECT_EQ(back.pixels[i], i % 4 == 3 ? 1.0f : img.pixels[i]) << i;
-  const std::vector<std::uint8_t> truncated(pfm.begin(), pfm.end() - 4);
-  EXPECT_THROW(image::decode_pfm(truncated), std::invalid_argument);
-  const std::string grey = "Pf\n1 1\n-1.0\n0000";
-  EXPECT_THROW(image::decode_pfm(std::span(reinterpret_cast<const std::uint8_t*>(grey.data()), grey.size())),
-               std::invalid_argument);
 }
 
 }  // namespace

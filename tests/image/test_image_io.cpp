@@ -327,6 +327,21 @@ float read_f32_le(const uint8_t* p) {
   return std::bit_cast<float>(bits);
 }
 
+TEST(Pfm, DecodesWhatItEncodesAndRejectsWhatItDoesNotWrite) {
+  const RgbaF32Image img = float_test_image(5, 3, 7);
+  const std::vector<uint8_t> pfm = image::encode_pfm(img);
+  const RgbaF32Image back = image::decode_pfm(pfm);
+  EXPECT_EQ(back.width, img.width);
+  EXPECT_EQ(back.height, img.height);
+  for (size_t i = 0; i < img.pixels.size(); ++i)
+    EXPECT_EQ(back.pixels[i], i % 4 == 3 ? 1.0f : img.pixels[i]) << i;  // PFM has no alpha
+  const std::vector<uint8_t> truncated(pfm.begin(), pfm.end() - 4);
+  EXPECT_THROW(image::decode_pfm(truncated), std::invalid_argument);
+  const std::string grey = "Pf\n1 1\n-1.0\n0000";
+  EXPECT_THROW(image::decode_pfm(std::span(reinterpret_cast<const uint8_t*>(grey.data()), grey.size())),
+               std::invalid_argument);
+}
+
 TEST(Pfm, HeaderAndBottomToTopRows) {
   for (const Size s : {Size{1, 1}, Size{2, 3}, Size{3, 517}, Size{517, 3}}) {
     SCOPED_TRACE(std::to_string(s.w) + "x" + std::to_string(s.h));
