@@ -3,17 +3,10 @@
 #include "api/accuracy_report.hpp"
 #include "api/sweep_table.hpp"
 
-#include <stdexcept>
-
 namespace server {
 namespace {
 
 constexpr auto kProgressInterval = std::chrono::milliseconds(200);
-
-// Thrown from the reference's progress callback to abandon a sweep nobody waits for.
-struct SweepAbandoned : std::runtime_error {
-  SweepAbandoned() : std::runtime_error("the sweep was stopped before its reference was done") {}
-};
 
 }  // namespace
 
@@ -54,7 +47,7 @@ void SweepJob::run(accuracy::Workbench& bench) {
   // A progress line at most every kProgressInterval, and the last one: enough for a bar.
   Clock::time_point last_progress{};
   observer.reference_progress = [&](double fraction) {
-    if (should_stop()) throw SweepAbandoned();
+    if (should_stop()) throw JobStopped();  // no row without the reference
     const auto now = Clock::now();
     if (fraction < 1.0 && now - last_progress < kProgressInterval) return;
     last_progress = now;

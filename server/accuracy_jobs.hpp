@@ -59,6 +59,8 @@ class SweepJob : public Job {
   // {"event": "row", "index", "total", "row": {...}}; closed when the sweep ends.
   EventChannel events;
 
+  bool answers_partially() const override { return true; }  // the rows done, complete: false
+
  protected:
   void run(accuracy::Workbench& bench) override;
 };

@@ -21,6 +21,8 @@ class BenchJob : public Job {
   const api::BenchDevice device;
   std::optional<api::BenchResults> result;
 
+  bool answers_partially() const override { return true; }  // the cases done, complete: false
+
  protected:
   void run(accuracy::Workbench& bench) override;
 };

@@ -60,7 +60,8 @@ std::optional<RenderQueue::Outcome> RenderQueue::wait_until(Job& job, const std:
     if (job.state_ == Job::State::done) return Outcome::done;
     if (job.state_ == Job::State::expired) return Outcome::deadline_exceeded;
     const auto now = Clock::now();
-    if (now >= job.deadline) {
+    const bool past_deadline = now >= job.deadline;
+    if (past_deadline && !(job.state_ == Job::State::running && job.answers_partially())) {
       withdraw(job);
       return Outcome::deadline_exceeded;
     }
@@ -72,7 +73,9 @@ std::optional<RenderQueue::Outcome> RenderQueue::wait_until(Job& job, const std:
       withdraw(job);
       return Outcome::client_gone;
     }
-    job_finished_.wait_until(lock, std::min({job.deadline, now + kClientPollInterval, until}));
+    Clock::time_point wake = std::min(now + kClientPollInterval, until);
+    if (!past_deadline) wake = std::min(wake, job.deadline);
+    job_finished_.wait_until(lock, wake);
   }
 }
 

@@ -24,6 +24,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -55,6 +56,9 @@ class Job {
   // For long jobs (a sweep, a benchmark suite) to ask between steps: abandoned, or past the
   // deadline.
   bool should_stop() const { return abandoned.load() || Clock::now() >= deadline; }
+  // A long job that, running at its deadline, stops at its next step and is answered with
+  // what it has (its result says it is incomplete) rather than with 504.
+  virtual bool answers_partially() const { return false; }
 
  protected:
   friend class RenderQueue;
@@ -65,6 +69,11 @@ class Job {
   enum class State { queued, running, done, expired, withdrawn };
   State state_ = State::queued;
   Clock::time_point submitted_;
+};
+
+// Thrown by a long job that stopped (should_stop) before it had anything to answer with.
+struct JobStopped : std::runtime_error {
+  JobStopped() : std::runtime_error("stopped before any result: the deadline passed") {}
 };
 
 class RenderJob : public Job {
@@ -102,7 +111,8 @@ class RenderQueue {
   enum class Outcome { done, deadline_exceeded, client_gone };
   // Blocks until the job is done, its deadline passes or `client_gone` (polled every
   // 50 ms) says nobody waits for it. In the last two cases a queued job is removed; a
-  // running one finishes on its worker and its result is dropped.
+  // running one finishes on its worker and its result is dropped. A running job that
+  // answers_partially() is waited for past its deadline: it stops at its next step.
   Outcome wait(Job& job, const std::function<bool()>& client_gone);
   // The same, giving up at `until`: empty then, the job still queued or running.
   std::optional<Outcome> wait_until(Job& job, const std::function<bool()>& client_gone, Clock::time_point until);

@@ -101,6 +101,9 @@ bool answer_job_error(const Job& job, httplib::Response& response, Service& serv
   if (!job.error) return false;
   try {
     std::rethrow_exception(job.error);
+  } catch (const JobStopped& e) {
+    service.metrics.count_render("deadline_exceeded");
+    send_error(response, {504, "deadline_exceeded", e.what(), ""});
   } catch (const api::RequestError& e) {
     service.metrics.count_render("rejected");
     send_error(response, render_error(e));

@@ -156,6 +156,22 @@ TEST(HttpAccuracy, AClientLeavingASweepStopsItAtTheNextRow) {
   EXPECT_LT(timing.at("queue"), 2500.0) << "the render waited for the abandoned sweep";
 }
 
+// The 65-row sweep of the test above, with a deadline a third of the way in: answered 200
+// with the rows done and complete false, not 504.
+TEST(HttpAccuracy, ASweepPastItsDeadlineAnswersTheRowsDone) {
+  nlohmann::json long_sweep = kSmallSweep;
+  long_sweep["parameters"]["grid"] = {8, 16, 24, 32};
+  long_sweep["parameters"]["iterations"] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  const auto r = shared_server().client()->Post("/v1/sweep", {{"X-Deadline-Ms", "2500"}}, long_sweep.dump(),
+                                                "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const auto body = nlohmann::json::parse(r->body);
+  EXPECT_FALSE(body["complete"].get<bool>());
+  EXPECT_GE(body["table"]["rows"].size(), 1u);
+  EXPECT_LT(body["table"]["rows"].size(), 65u);
+}
+
 TEST(HttpAccuracy, ErrorsNameTheFieldUnderTheEmbeddedRequest) {
   auto http = shared_server().client();
   EXPECT_TRUE(is_json_error(http->Post("/v1/compare", R"({"base": {"scene": "atlantis"}, "reference": {}})",
