@@ -46,12 +46,6 @@ nlohmann::json sweep_json(const accuracy::SweepResult& result) {
   return {{"complete", result.complete}, {"reference", api::to_json(result.reference)}, {"table", api::to_json(result.table)}};
 }
 
-HttpError unknown_base_scene(const std::string& name) {
-  HttpError error = unknown_scene(name);
-  error.field = "base.scene";
-  return error;
-}
-
 enum class SweepFormat { json, csv, svg, ndjson };
 
 SweepFormat sweep_format(const httplib::Request& request) {
@@ -134,55 +128,33 @@ void stream_sweep(const std::shared_ptr<SweepJob>& job, httplib::Response& respo
 
 void handle_compare(const httplib::Request& request, httplib::Response& response,
                     const httplib::ContentReader& content, Service& service) {
-  const std::optional<std::string> body =
-      read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
-  if (!body) return;
-  api::CompareRequest compare;
-  std::chrono::milliseconds deadline{};
-  try {
-    compare = api::parse_compare_request(*body);
-    deadline = deadline_for(request, service.options.accuracy_deadline);
-  } catch (const api::RequestError& e) {
-    return send_error(response, parse_error(e));
-  }
-  if (!scene_exists(compare.base.scene, service)) return send_error(response, unknown_base_scene(compare.base.scene));
-  try {
-    check_limits(compare, service.options.limits);
-  } catch (const LimitExceeded& e) {
-    return send_error(response, limit_error(e));
-  }
-  auto job = std::make_shared<CompareJob>(std::move(compare), request_arrival() + deadline);
-  if (!run_job(job, deadline, request, response, service)) return;
+  auto accepted = accept_request<api::CompareRequest>(
+      request, response, content, service, api::parse_compare_request, service.options.accuracy_deadline,
+      [&](const api::CompareRequest& c) { return missing_scene(c.base.scene, "base.scene", service); });
+  if (!accepted) return;
+  auto job = std::make_shared<CompareJob>(std::move(accepted->request), request_arrival() + accepted->deadline);
+  if (!run_job(job, accepted->deadline, request, response, service)) return;
   send_json(response, comparison_json(*job->result, job->queue_wait_ms), 200, kImageJson);
 }
 
 void handle_sweep(const httplib::Request& request, httplib::Response& response, const httplib::ContentReader& content,
                   Service& service) {
-  const std::optional<std::string> body =
-      read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
-  if (!body) return;
-  api::SweepRequest sweep;
-  std::chrono::milliseconds deadline{};
   SweepFormat format{};
   try {
     format = sweep_format(request);
-    sweep = api::parse_sweep_request(*body);
-    deadline = deadline_for(request, service.options.accuracy_deadline);
   } catch (const api::RequestError& e) {
     return send_error(response, parse_error(e));
   }
-  if (!scene_exists(sweep.base.scene, service)) return send_error(response, unknown_base_scene(sweep.base.scene));
-  try {
-    check_limits(sweep, service.options.limits);
-  } catch (const LimitExceeded& e) {
-    return send_error(response, limit_error(e));
-  }
-  auto job = std::make_shared<SweepJob>(std::move(sweep), request_arrival() + deadline);
+  auto accepted = accept_request<api::SweepRequest>(
+      request, response, content, service, api::parse_sweep_request, service.options.accuracy_deadline,
+      [&](const api::SweepRequest& s) { return missing_scene(s.base.scene, "base.scene", service); });
+  if (!accepted) return;
+  auto job = std::make_shared<SweepJob>(std::move(accepted->request), request_arrival() + accepted->deadline);
   if (format == SweepFormat::ndjson) {
     if (admit_job(job, response, service)) stream_sweep(job, response, service);
     return;
   }
-  if (!run_job(job, deadline, request, response, service)) return;
+  if (!run_job(job, accepted->deadline, request, response, service)) return;
   send_sweep(response, *job, format);
 }
 

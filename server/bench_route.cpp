@@ -25,11 +25,8 @@ std::optional<HttpError> unservable(const api::BenchSuite& suite, const Service&
                        "not available in POST /v1/bench: upload the scene (POST /v1/scenes) and name its id in "
                        "request.scene",
                        case_path(i, "scene_file")};
-    if (!scene_exists(c.request.scene, service)) {
-      HttpError error = unknown_scene(c.request.scene);
-      error.field = case_path(i, "request.scene");
+    if (std::optional<HttpError> error = missing_scene(c.request.scene, case_path(i, "request.scene"), service))
       return error;
-    }
   }
   return std::nullopt;
 }
@@ -38,29 +35,16 @@ std::optional<HttpError> unservable(const api::BenchSuite& suite, const Service&
 
 void handle_bench(const httplib::Request& request, httplib::Response& response, const httplib::ContentReader& content,
                   Service& service) {
-  const std::optional<std::string> body =
-      read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
-  if (!body) return;
-  api::BenchSuite suite;
-  std::chrono::milliseconds deadline{};
-  try {
-    suite = api::parse_bench_suite(*body);
-    deadline = deadline_for(request, service.options.accuracy_deadline);
-  } catch (const api::RequestError& e) {
-    return send_error(response, parse_error(e));
-  }
-  if (const std::optional<HttpError> error = unservable(suite, service)) return send_error(response, *error);
-  try {
-    check_limits(suite, service.options.limits);
-  } catch (const LimitExceeded& e) {
-    return send_error(response, limit_error(e));
-  }
+  auto accepted = accept_request<api::BenchSuite>(
+      request, response, content, service, api::parse_bench_suite, service.options.accuracy_deadline,
+      [&](const api::BenchSuite& suite) { return unservable(suite, service); });
+  if (!accepted) return;
   const std::optional<nlohmann::json> device = service.queue.device_report();
   if (!device) return send_unavailable(response, "not_ready", "the render device is still starting");
-  auto job = std::make_shared<BenchJob>(std::move(suite),
+  auto job = std::make_shared<BenchJob>(std::move(accepted->request),
                                         api::BenchDevice{device->value("name", ""), device->value("driver", "")},
-                                        request_arrival() + deadline);
-  if (!run_job(job, deadline, request, response, service)) return;
+                                        request_arrival() + accepted->deadline);
+  if (!run_job(job, accepted->deadline, request, response, service)) return;
   send_json(response, api::to_json(*job->result));
 }
 

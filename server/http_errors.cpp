@@ -45,11 +45,11 @@ HttpError render_error(const api::RequestError& error) {
   return {422, "does_not_fit", message_of(error), error.field()};
 }
 
-HttpError unknown_scene(const std::string& name) {
+HttpError unknown_scene(const std::string& name, const std::string& field) {
   return {404, "scene_not_found",
           "unknown scene '" + name + "'; built-in scenes: " + builtin_scene_names() +
               ", or the id of an uploaded scene (GET /v1/scenes lists them)",
-          "scene"};
+          field};
 }
 
 HttpError load_error(const scene::LoadError& error) {

@@ -77,10 +77,11 @@ Clock::time_point request_arrival() {
                             std::chrono::duration<double, std::milli>(request_elapsed_ms().value_or(0.0)));
 }
 
-bool scene_exists(const std::string& name, const Service& service) {
+std::optional<HttpError> missing_scene(const std::string& name, const std::string& field, const Service& service) {
   for (const auto& info : scene::builtin_scenes())
-    if (info.name == name) return true;
-  return service.scenes.contains(name);
+    if (info.name == name) return std::nullopt;
+  if (service.scenes.contains(name)) return std::nullopt;
+  return unknown_scene(name, field);
 }
 
 bool admit_job(const std::shared_ptr<Job>& job, httplib::Response& response, Service& service) {

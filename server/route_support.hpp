@@ -1,7 +1,11 @@
-// What the HTTP handlers of renders, compares and sweeps share: reading bodies within their
-// limit, deadlines, and running a job through the render queue with every outcome answered.
+// What the HTTP handlers of renders, compares, sweeps and benchmark suites share: reading
+// and checking their requests, deadlines, and running a job through the render queue with
+// every outcome answered.
 #pragma once
 
+#include "api/request_error.hpp"
+#include "server/http_errors.hpp"
+#include "server/limits.hpp"
 #include "server/metrics.hpp"
 #include "server/render_queue.hpp"
 #include "server/scene_store.hpp"
@@ -15,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace server {
 
@@ -51,8 +56,49 @@ std::chrono::milliseconds deadline_for(const httplib::Request& request, std::chr
 Clock::time_point request_arrival();
 
 bool wants_json(const httplib::Request& request);
-// Built in or uploaded: checked before queueing, so an unknown scene never takes a queue slot.
-bool scene_exists(const std::string& name, const Service& service);
+// 404 naming `field` unless the scene is built in or uploaded: checked before queueing, so an
+// unknown scene never takes a queue slot.
+std::optional<HttpError> missing_scene(const std::string& name, const std::string& field, const Service& service);
+
+template <class Request>
+struct AcceptedRequest {
+  Request request;
+  std::chrono::milliseconds deadline{};
+};
+
+// A POST body read within --max-body-bytes and parsed by `parse` (400), with its deadline
+// (X-Deadline-Ms within `server_deadline`), what `unservable` finds (an unknown scene: 404)
+// and the server's limits (422) checked, in that order. Answers every failure itself and
+// returns empty then.
+template <class Request, class Unservable>
+std::optional<AcceptedRequest<Request>> accept_request(const httplib::Request& request, httplib::Response& response,
+                                                       const httplib::ContentReader& content, const Service& service,
+                                                       Request (*parse)(std::string_view),
+                                                       std::chrono::milliseconds server_deadline,
+                                                       Unservable unservable) {
+  const std::optional<std::string> body =
+      read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
+  if (!body) return std::nullopt;
+  AcceptedRequest<Request> accepted;
+  try {
+    accepted.request = parse(*body);
+    accepted.deadline = deadline_for(request, server_deadline);
+  } catch (const api::RequestError& e) {
+    send_error(response, parse_error(e));
+    return std::nullopt;
+  }
+  if (const std::optional<HttpError> error = unservable(accepted.request)) {
+    send_error(response, *error);
+    return std::nullopt;
+  }
+  try {
+    check_limits(accepted.request, service.options.limits);
+  } catch (const LimitExceeded& e) {
+    send_error(response, limit_error(e));
+    return std::nullopt;
+  }
+  return accepted;
+}
 
 // Submits `job`; answers 503 itself (queue full, shutting down) and returns false then.
 bool admit_job(const std::shared_ptr<Job>& job, httplib::Response& response, Service& service);

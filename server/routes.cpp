@@ -75,28 +75,13 @@ std::string known_method(const std::string& method) {
 
 void handle_render(const httplib::Request& request, httplib::Response& response,
                    const httplib::ContentReader& content, Service& service) {
-  const std::optional<std::string> body =
-      read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
-  if (!body) return;
-
-  api::RenderRequest render_request;
-  std::chrono::milliseconds deadline{};
-  try {
-    render_request = api::parse_render_request(*body);
-    deadline = deadline_for(request, service.options.deadline);
-  } catch (const api::RequestError& e) {
-    return send_error(response, parse_error(e));
-  }
-  if (!scene_exists(render_request.scene, service)) return send_error(response, unknown_scene(render_request.scene));
-  try {
-    check_limits(render_request, service.options.limits);
-  } catch (const LimitExceeded& e) {
-    return send_error(response, limit_error(e));
-  }
-
-  const api::ImageFormat format = render_request.output.format;
-  auto job = std::make_shared<RenderJob>(std::move(render_request), request_arrival() + deadline);
-  if (!run_job(job, deadline, request, response, service)) return;
+  auto accepted = accept_request<api::RenderRequest>(
+      request, response, content, service, api::parse_render_request, service.options.deadline,
+      [&](const api::RenderRequest& r) { return missing_scene(r.scene, "scene", service); });
+  if (!accepted) return;
+  const api::ImageFormat format = accepted->request.output.format;
+  auto job = std::make_shared<RenderJob>(std::move(accepted->request), request_arrival() + accepted->deadline);
+  if (!run_job(job, accepted->deadline, request, response, service)) return;
   if (job->request.dry_run)  // the plan alone: what would run, nothing rendered (nor timed)
     return send_json(response, {{"stats", api::to_json(job->result->stats)}, {"queue_ms", job->queue_wait_ms}});
   for (const auto& pass : job->result->stats.passes)
@@ -164,24 +149,17 @@ class SceneCatalog {
   const SceneStore& store_;
 };
 
-// The scene is named by the path, not by a request field.
-HttpError unknown_scene_in_path(const std::string& id) {
-  HttpError error = unknown_scene(id);
-  error.field = "";
-  return error;
-}
-
 void handle_get_scene(const std::string& id, httplib::Response& response, const SceneCatalog& catalog,
                       const SceneStore& store) {
   if (const nlohmann::json* builtin = catalog.builtin(id)) return send_json(response, *builtin);
   if (const std::optional<nlohmann::json> uploaded = store.report(id)) return send_json(response, *uploaded);
-  send_error(response, unknown_scene_in_path(id));
+  send_error(response, unknown_scene(id, ""));
 }
 
 void handle_delete_scene(const std::string& id, httplib::Response& response, const SceneCatalog& catalog,
                          SceneStore& store) {
   if (catalog.builtin(id)) return send_error(response, builtin_scene_conflict(id));
-  if (!store.remove(id)) return send_error(response, unknown_scene_in_path(id));
+  if (!store.remove(id)) return send_error(response, unknown_scene(id, ""));
   response.status = 204;
 }
 
