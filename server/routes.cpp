@@ -30,11 +30,13 @@ struct Route {
   const char* regex;    // what httplib matches
   const char* pattern;  // how docs and metrics name it
   const char* methods;  // the methods it answers, as Allow lists them; others get 405
+  bool open = false;    // answered without the token: probes, and the web page, which holds no
+                        // data (the API calls it makes carry the token; it asks for it on a 401)
 };
 
 constexpr std::array kRoutes = {
-    Route{"/healthz", "/healthz", "GET"},
-    Route{"/readyz", "/readyz", "GET"},
+    Route{"/healthz", "/healthz", "GET", true},
+    Route{"/readyz", "/readyz", "GET", true},
     Route{"/metrics", "/metrics", "GET"},
     Route{"/v1/scenes", "/v1/scenes", "GET, POST"},
     Route{"/v1/scenes/([^/]+)", "/v1/scenes/{id}", "GET, DELETE"},
@@ -43,9 +45,21 @@ constexpr std::array kRoutes = {
     Route{"/v1/compare", "/v1/compare", "POST"},
     Route{"/v1/sweep", "/v1/sweep", "POST"},
     Route{"/v1/bench", "/v1/bench", "POST"},
-    Route{kWebPageRoute, "/", "GET"},  // the web page (docs/web.md) and its assets
-    Route{kWebAssetRoute, "/{asset}", "GET"},
+    Route{kWebPageRoute, "/", "GET", true},  // the web page (docs/web.md) and its assets
+    Route{kWebAssetRoute, "/{asset}", "GET", true},
 };
+
+// The route `path` matches, or null.
+const Route* route_of(const std::string& path) {
+  static const std::vector<std::regex> compiled = [] {
+    std::vector<std::regex> regexes;
+    for (const Route& route : kRoutes) regexes.emplace_back(route.regex);
+    return regexes;
+  }();
+  for (std::size_t i = 0; i < kRoutes.size(); ++i)
+    if (std::regex_match(path, compiled[i])) return &kRoutes[i];
+  return nullptr;
+}
 
 // The longest a scene's name may be; it is only ever shown.
 constexpr std::size_t kMaxSceneNameBytes = 200;
@@ -200,22 +214,15 @@ void install_method_not_allowed(httplib::Server& http, const Route& route) {
 }  // namespace
 
 std::string route_pattern(const std::string& path) {
-  static const std::vector<std::regex> compiled = [] {
-    std::vector<std::regex> regexes;
-    for (const Route& route : kRoutes) regexes.emplace_back(route.regex);
-    return regexes;
-  }();
-  for (std::size_t i = 0; i < kRoutes.size(); ++i)
-    if (std::regex_match(path, compiled[i])) return kRoutes[i].pattern;
-  return "unmatched";
+  const Route* route = route_of(path);
+  return route ? route->pattern : "unmatched";
 }
 
 void install_routes(httplib::Server& http, Service& service) {
   http.set_pre_routing_handler([&service](const httplib::Request& request, httplib::Response& response) {
     start_request_clock();
-    if (service.options.token.empty() || request.path == "/healthz" || request.path == "/readyz" ||
-        is_web_page_path(request.path))
-      return httplib::Server::HandlerResponse::Unhandled;
+    const Route* route = route_of(request.path);
+    if (service.options.token.empty() || (route && route->open)) return httplib::Server::HandlerResponse::Unhandled;
     if (bearer_token_matches(request.get_header_value("Authorization"), service.options.token))
       return httplib::Server::HandlerResponse::Unhandled;
     send_error(response, {401, "unauthorized", "this server needs 'Authorization: Bearer <token>'", ""});

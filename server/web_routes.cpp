@@ -3,7 +3,6 @@
 #include "server/http_errors.hpp"
 #include "server/web_assets.hpp"
 
-#include <regex>
 #include <string_view>
 
 namespace server {
@@ -56,11 +55,6 @@ void serve_asset(const httplib::Request& request, httplib::Response& response) {
 }
 
 }  // namespace
-
-bool is_web_page_path(const std::string& path) {
-  static const std::regex asset(kWebAssetRoute);
-  return path == kWebPageRoute || std::regex_match(path, asset);
-}
 
 void install_web_routes(httplib::Server& http) {
   http.Get(kWebPageRoute, serve_asset);

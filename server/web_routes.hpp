@@ -12,10 +12,6 @@ namespace server {
 inline constexpr const char* kWebPageRoute = "/";
 inline constexpr const char* kWebAssetRoute = R"(/[A-Za-z0-9_-]+\.(?:html|css|js|svg))";
 
-// The page itself holds no data, so it is served without a token; the API calls it makes
-// carry one (the page asks for it when the server answers 401).
-bool is_web_page_path(const std::string& path);
-
 void install_web_routes(httplib::Server& http);
 
 }  // namespace server
