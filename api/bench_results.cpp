@@ -25,28 +25,14 @@ constexpr std::size_t kMaxMetrics = 256;
 constexpr double kMaxMs = 1.0e9;
 constexpr std::array statuses{BenchCaseStatus::ok, BenchCaseStatus::skipped, BenchCaseStatus::failed};
 
-// ---- reading: a member of an object, unknown members ignored ----------------------------
+// ---- reading: members of objects, unknown members ignored (Field::member) -----------------
 
-Field member(const Field& object, std::string_view key) {
-  if (!object.value->is_object()) object.reject("an object");
-  const auto it = object.value->find(std::string(key));
-  if (it == object.value->end()) throw RequestError(member_path(object.path, key), "required field missing");
-  return Field{&*it, member_path(object.path, key)};
-}
-
-std::optional<Field> optional_member(const Field& object, std::string_view key) {
-  if (!object.value->is_object()) object.reject("an object");
-  const auto it = object.value->find(std::string(key));
-  if (it == object.value->end()) return std::nullopt;
-  return Field{&*it, member_path(object.path, key)};
-}
-
-std::string text(const Field& object, std::string_view key) { return as_string(member(object, key), kMaxText); }
+std::string text(const Field& object, std::string_view key) { return as_string(object.member(key), kMaxText); }
 
 BenchMetric read_metric(const Field& f) {
   BenchMetric metric;
-  metric.name = as_string(member(f, "name"), limits::max_bench_name_bytes);
-  for (const Field& sample : as_array(member(f, "samples"), kMaxSamples))
+  metric.name = as_string(f.member("name"), limits::max_bench_name_bytes);
+  for (const Field& sample : as_array(f.member("samples"), kMaxSamples))
     metric.samples.push_back(as_double(sample, 0.0, kMaxMs));
   return metric;
 }
@@ -54,27 +40,27 @@ BenchMetric read_metric(const Field& f) {
 BenchImage read_image(const Field& f) {
   BenchImage image;
   image.sha256 = text(f, "sha256");
-  image.width = as_uint<std::uint32_t>(member(f, "width"), 1, limits::max_image_side);
-  image.height = as_uint<std::uint32_t>(member(f, "height"), 1, limits::max_image_side);
-  const Field thumbnail = member(f, "thumbnail");
-  if (as_string(member(thumbnail, "format"), 16) != "pfm") member(thumbnail, "format").reject("\"pfm\"");
-  image.thumbnail_width = as_uint<std::uint32_t>(member(thumbnail, "width"), 1, bench_thumbnail_side);
-  image.thumbnail_height = as_uint<std::uint32_t>(member(thumbnail, "height"), 1, bench_thumbnail_side);
-  image.thumbnail_pfm_base64 = as_string(member(thumbnail, "base64"), kMaxThumbnailBase64);
+  image.width = as_uint<std::uint32_t>(f.member("width"), 1, limits::max_image_side);
+  image.height = as_uint<std::uint32_t>(f.member("height"), 1, limits::max_image_side);
+  const Field thumbnail = f.member("thumbnail");
+  if (as_string(thumbnail.member("format"), 16) != "pfm") thumbnail.member("format").reject("\"pfm\"");
+  image.thumbnail_width = as_uint<std::uint32_t>(thumbnail.member("width"), 1, bench_thumbnail_side);
+  image.thumbnail_height = as_uint<std::uint32_t>(thumbnail.member("height"), 1, bench_thumbnail_side);
+  image.thumbnail_pfm_base64 = as_string(thumbnail.member("base64"), kMaxThumbnailBase64);
   return image;
 }
 
 BenchCaseResult read_case(const Field& f) {
   BenchCaseResult c;
-  c.name = as_string(member(f, "name"), limits::max_bench_name_bytes);
-  c.kind = as_enum(member(f, "kind"), kBenchCaseKinds);
-  c.status = as_enum(member(f, "status"), statuses);
-  if (auto v = optional_member(f, "reason")) c.reason = as_string(*v, kMaxText);
-  const Field request = member(f, "request");
+  c.name = as_string(f.member("name"), limits::max_bench_name_bytes);
+  c.kind = as_enum(f.member("kind"), kBenchCaseKinds);
+  c.status = as_enum(f.member("status"), statuses);
+  if (auto v = f.optional_member("reason")) c.reason = as_string(*v, kMaxText);
+  const Field request = f.member("request");
   if (!request.value->is_object()) request.reject("an object");
   c.request = *request.value;
-  for (const Field& metric : as_array(member(f, "metrics"), kMaxMetrics)) c.metrics.push_back(read_metric(metric));
-  if (auto v = optional_member(f, "image"); v && !v->value->is_null()) c.image = read_image(*v);
+  for (const Field& metric : as_array(f.member("metrics"), kMaxMetrics)) c.metrics.push_back(read_metric(metric));
+  if (auto v = f.optional_member("image"); v && !v->value->is_null()) c.image = read_image(*v);
   return c;
 }
 
@@ -180,33 +166,33 @@ BenchResults parse_bench_results(std::string_view json_text) {
   const Field root{&document, ""};
   if (!root.value->is_object() || root.value->value("format", "") != kFormat)
     throw RequestError("format", "must be \"lpv-bench-results\": this is not a results file of lpv-bench");
-  const Field version = member(root, "schema_version");
+  const Field version = root.member("schema_version");
   if (as_uint<std::uint32_t>(version, 0, std::numeric_limits<std::uint32_t>::max()) != bench_results_schema_version)
     version.fail("must be " + std::to_string(bench_results_schema_version) + " (the version this lpv-bench reads), got " +
                  describe(*version.value));
   BenchResults r;
-  const Field suite = member(root, "suite");
+  const Field suite = root.member("suite");
   r.suite = text(suite, "name");
-  r.suite_version = as_uint<std::uint32_t>(member(suite, "version"), 0, std::numeric_limits<std::uint32_t>::max());
+  r.suite_version = as_uint<std::uint32_t>(suite.member("version"), 0, std::numeric_limits<std::uint32_t>::max());
   r.label = text(root, "label");
   r.mode = text(root, "mode");
   r.url = text(root, "url");
   r.started_at = text(root, "started_at");
-  r.duration_s = as_double(member(root, "duration_s"), 0.0, kMaxMs);
-  r.repetitions = as_uint<std::uint32_t>(member(root, "repetitions"), 0, limits::max_bench_repetitions);
-  r.warmup = as_uint<std::uint32_t>(member(root, "warmup"), 0, limits::max_bench_warmup);
-  r.complete = as_bool(member(root, "complete"));
-  const Field machine = member(root, "machine");
+  r.duration_s = as_double(root.member("duration_s"), 0.0, kMaxMs);
+  r.repetitions = as_uint<std::uint32_t>(root.member("repetitions"), 0, limits::max_bench_repetitions);
+  r.warmup = as_uint<std::uint32_t>(root.member("warmup"), 0, limits::max_bench_warmup);
+  r.complete = as_bool(root.member("complete"));
+  const Field machine = root.member("machine");
   r.machine = {text(machine, "hostname"), text(machine, "cpu_model"),
-               as_uint<std::uint32_t>(member(machine, "cores"), 0, 1u << 20), text(machine, "os"),
+               as_uint<std::uint32_t>(machine.member("cores"), 0, 1u << 20), text(machine, "os"),
                text(machine, "kernel")};
-  const Field device = member(root, "device");
+  const Field device = root.member("device");
   r.device = {text(device, "name"), text(device, "driver")};
-  const Field build = member(root, "build");
+  const Field build = root.member("build");
   r.build = {text(build, "version"),       text(build, "compiler"), text(build, "build_type"),
-             text(build, "commit"),        as_bool(member(build, "dirty")),
-             as_bool(member(build, "sanitizers"))};
-  for (const Field& c : as_array(member(root, "cases"), limits::max_bench_cases)) r.cases.push_back(read_case(c));
+             text(build, "commit"),        as_bool(build.member("dirty")),
+             as_bool(build.member("sanitizers"))};
+  for (const Field& c : as_array(root.member("cases"), limits::max_bench_cases)) r.cases.push_back(read_case(c));
   return r;
 }
 

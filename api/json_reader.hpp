@@ -47,6 +47,19 @@ struct Field {
   }
 
   Field element(std::size_t index) const { return {&(*value)[index], element_path(path, index)}; }
+
+  // Members of an object, other members ignored: for documents this program wrote (results
+  // files), which a later version may extend. Requests are read through Object instead.
+  std::optional<Field> optional_member(std::string_view key) const {
+    if (!value->is_object()) reject("an object");
+    const auto it = value->find(std::string(key));
+    if (it == value->end()) return std::nullopt;
+    return Field{&*it, member_path(path, key)};
+  }
+  Field member(std::string_view key) const {
+    if (auto field = optional_member(key)) return *field;
+    throw RequestError(member_path(path, key), "required field missing");
+  }
 };
 
 // A JSON object whose keys have all been checked against the allowed ones.
@@ -67,11 +80,7 @@ class Object {
   std::string path_of(std::string_view key) const { return member_path(field_.path, key); }
   bool has(std::string_view key) const { return field_.value->contains(std::string(key)); }
 
-  std::optional<Field> get(std::string_view key) const {
-    const auto it = field_.value->find(std::string(key));
-    if (it == field_.value->end()) return std::nullopt;
-    return Field{&*it, path_of(key)};
-  }
+  std::optional<Field> get(std::string_view key) const { return field_.optional_member(key); }
 
   // `what` says what the field should hold: "required field missing (<what>)".
   Field require(std::string_view key, const std::string& what) const {
