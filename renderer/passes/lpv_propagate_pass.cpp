@@ -3,6 +3,8 @@
 #include "renderer/gpu_types.hpp"
 #include "shaders/lpv_propagate.comp.h"
 
+#include <array>
+
 namespace renderer {
 namespace {
 
@@ -22,14 +24,13 @@ LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) 
 }
 
 const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& params, const LpvVolumes& volumes) const {
-  std::unique_ptr<vkx::Pipeline>& p = variants_[v];
-  if (!p) {
+  const vkx::Pipeline& p = variants_.get(v, [&] {
     const std::array<std::uint32_t, 2> constants{v != kOpen ? 1u : 0u, v == kOccludedBounces ? 1u : 0u};
-    p = std::make_unique<vkx::Pipeline>(device_, layout_, spirv_lpv_propagate_comp, constants);
-  }
+    return vkx::Pipeline(device_, layout_, spirv_lpv_propagate_comp, constants);
+  });
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
-  vkx::DescriptorWriter(p->descriptor_set())
+  vkx::DescriptorWriter(p.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .image(1, image, volumes.grids.view(), general)
       .image(2, image, volumes.accumulated[0].view(), general)
@@ -38,7 +39,7 @@ const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& par
       .image(5, image, volumes.faces.view(), general)
       .buffer(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.flux_stats.handle())
       .apply(device_.handle());
-  return *p;
+  return p;
 }
 
 void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,

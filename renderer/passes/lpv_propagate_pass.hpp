@@ -2,9 +2,6 @@
 // result to the cascade's accumulated light.
 #pragma once
 
-#include <array>
-#include <memory>
-
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
@@ -22,14 +19,14 @@ class LpvPropagatePass {
               const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
  private:
-  enum Variant { kOpen, kOccluded, kOccludedBounces, kVariantCount };
+  enum Variant { kOpen, kOccluded, kOccludedBounces };
   // The pipeline specialised for one variant, its descriptor set written for this recording
   // (made on first use: a frame without occlusion never compiles the occluded shader).
   const vkx::Pipeline& variant(Variant v, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;
-  mutable std::array<std::unique_ptr<vkx::Pipeline>, kVariantCount> variants_;
+  vkx::PipelineVariants variants_;
 };
 
 }  // namespace renderer

@@ -6,9 +6,7 @@
 #include "renderer/gpu_scene.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
-#include <array>
 #include <functional>
-#include <memory>
 
 namespace renderer {
 
@@ -24,7 +22,7 @@ class MaterialPipelines {
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;
   Describe describe_;
-  mutable std::array<std::unique_ptr<vkx::Pipeline>, kMaterialVariants> pipelines_;
+  vkx::PipelineVariants pipelines_;  // by MaterialVariant::index()
 };
 
 }  // namespace renderer

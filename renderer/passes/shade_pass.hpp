@@ -9,8 +9,6 @@
 #include "renderer/vulkan/pipeline.hpp"
 
 #include <cstdint>
-#include <map>
-#include <memory>
 #include <span>
 
 namespace renderer {
@@ -45,7 +43,7 @@ class ShadePass {
   const vkx::Pipeline& variant(const ShadeInputs& in) const;
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;
-  mutable std::map<std::uint32_t, std::unique_ptr<vkx::Pipeline>> variants_;
+  vkx::PipelineVariants variants_;
   vkx::Sampler shadow_sampler_;  // depth compare: the shading gathers 2x2 comparisons for its PCF
 };
 

@@ -1,6 +1,6 @@
-// Pipelines with their layouts and one descriptor set each. Every pass owns one Pipeline:
-// created once per process (through the device's pipeline cache), its descriptor set
-// rewritten when the frame's resources change.
+// Pipelines with their layouts and one descriptor set each. Every pass owns its pipelines
+// (or PipelineVariants of one), created once per process (through the device's pipeline
+// cache), their descriptor sets rewritten when the frame's resources change.
 #pragma once
 
 #include "renderer/vulkan/device.hpp"
@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <map>
 #include <span>
 #include <utility>
 #include <vector>
@@ -75,6 +76,23 @@ class Pipeline {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   VkShaderStageFlags push_stages_ = 0;
   VkPipelineBindPoint bind_point_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+};
+
+// The specialised variants of one pass's pipeline, each made the first time it is asked for:
+// drivers compile at creation (lavapipe at the first dispatch), so a variant no frame needs
+// never costs its compile.
+class PipelineVariants {
+ public:
+  // The pipeline of `key`, made by `make()` (which returns a Pipeline) the first time.
+  template <class Make>
+  const Pipeline& get(std::uint32_t key, Make&& make) const {
+    auto it = pipelines_.find(key);
+    if (it == pipelines_.end()) it = pipelines_.emplace(key, make()).first;
+    return it->second;
+  }
+
+ private:
+  mutable std::map<std::uint32_t, Pipeline> pipelines_;  // map nodes stay put: references stay valid
 };
 
 // Collects descriptor writes for one set and applies them in one call.
