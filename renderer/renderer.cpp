@@ -567,7 +567,8 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       break;
     case kShade:
       shade.record(cmd, frame.gpu, *targets,
-                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes, frame.plan.run[kInject],
+                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes,
+                    frame.plan.run[kInject] ? frame.lpv.gpu.info.x : 0u,
                     gpu_view(frame.request.output.view), light_kinds(frame.lights.lights, frame.gpu.emissive)});
       break;
     case kTonemap:

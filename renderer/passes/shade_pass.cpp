@@ -29,10 +29,10 @@ std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights, bool emissive_m
 }
 
 const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
-  // Bit 0: indirect; bits 1-3: the view (VIEW_* < 8); above: the light kinds.
-  const std::uint32_t key = (in.light_kinds << 4) | (in.view << 1) | (in.indirect ? 1u : 0u);
+  // Bits 0-2: the view (VIEW_* < 8); 3-5: the cascades (at most 4); above: the light kinds.
+  const std::uint32_t key = (in.light_kinds << 6) | (in.cascades << 3) | in.view;
   return variants_.get(key, [&] {
-    const std::uint32_t constants[] = {in.indirect ? VK_TRUE : VK_FALSE, in.view, in.light_kinds};
+    const std::uint32_t constants[] = {in.cascades, in.view, in.light_kinds};
     return vkx::Pipeline(device_, layout_, spirv_shade_comp, constants);
   });
 }

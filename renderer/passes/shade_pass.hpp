@@ -18,9 +18,9 @@ struct ShadeInputs {
   const vkx::Buffer& lights;        // gpu::GpuLight[]
   const vkx::Buffer& shadow_views;  // mat4[] per atlas layer
   const ShadowAtlas& atlas;
-  const vkx::Buffer& lpv;          // gpu::GpuLpv (cascade count 0: no indirect light)
+  const vkx::Buffer& lpv;          // gpu::GpuLpv
   const LpvVolumes& volumes;       // the cascades' accumulated SH (not read without indirect light)
-  bool indirect;                   // the LPV ran: shade its indirect light
+  std::uint32_t cascades;          // of indirect light to shade (GpuLpv::info.x; 0: the LPV did not run)
   std::uint32_t view;              // gpu::VIEW_*
   std::uint32_t light_kinds;       // gpu::LIGHTS_* bits (light_kinds())
 };
