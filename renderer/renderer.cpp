@@ -569,7 +569,8 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       shade.record(cmd, frame.gpu, *targets,
                    {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes,
                     frame.plan.run[kInject] ? frame.lpv.gpu.info.x : 0u,
-                    gpu_view(frame.request.output.view), light_kinds(frame.lights.lights, frame.gpu.emissive)});
+                    gpu_view(frame.request.output.view), light_kinds(frame.lights.lights, frame.gpu.emissive),
+                    std::uint32_t(frame.lights.lights.size())});
       break;
     case kTonemap:
       tonemap.record(cmd, *targets, frame.request.output.tonemap,

@@ -18,6 +18,9 @@ layout(constant_id = 0) const uint CASCADES = 1u;  // of indirect light (GpuLpv:
 const bool WITH_INDIRECT = CASCADES > 0u;
 layout(constant_id = 1) const uint VIEW = VIEW_FINAL;  // VIEW_*
 layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits of this frame's lights
+// The number of lights, or SHADE_LIGHTS_FROM_FRAME: a loop of constant length is unrolled
+// and reads each light at a constant offset (direct shading 5.7 -> 4.3 ms at 512x512).
+layout(constant_id = 3) const uint LIGHT_COUNT = SHADE_LIGHTS_FROM_FRAME;
 const bool ANY_DIRECTIONAL = (LIGHT_KINDS & LIGHTS_DIRECTIONAL) != 0u;
 const bool ANY_POSITIONAL = (LIGHT_KINDS & LIGHTS_POSITIONAL) != 0u;
 const bool ANY_SHADOWED = (LIGHT_KINDS & LIGHTS_SHADOWED) != 0u;
@@ -181,7 +184,8 @@ void main() {
   } else {
     vec3 e = vec3(0.0);
     if (view != VIEW_INDIRECT)
-      for (uint i = 0u; i < frame.size_view.w; ++i) e += irradiance(lights[i], p, n);
+      for (uint i = 0u; i < (LIGHT_COUNT == SHADE_LIGHTS_FROM_FRAME ? frame.size_view.w : LIGHT_COUNT); ++i)
+        e += irradiance(lights[i], p, n);
     if (WITH_INDIRECT && view != VIEW_DIRECT) e += lpv.scales.z * indirect_irradiance(p, n);
     vec3 emitted = ANY_EMISSIVE && view != VIEW_INDIRECT ? materials[material].emissive.rgb : vec3(0.0);
     value = (albedo / PI * e + emitted) * frame.exposure.x;

@@ -4,6 +4,8 @@
 #include "renderer/vulkan/vk_check.hpp"
 #include "shaders/shade.comp.h"
 
+#include <algorithm>
+
 namespace renderer {
 
 ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
@@ -29,10 +31,12 @@ std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights, bool emissive_m
 }
 
 const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
-  // Bits 0-2: the view (VIEW_* < 8); 3-5: the cascades (at most 4); above: the light kinds.
-  const std::uint32_t key = (in.light_kinds << 6) | (in.cascades << 3) | in.view;
+  const std::uint32_t lights = std::min(in.light_count, gpu::SHADE_LIGHTS_FROM_FRAME);
+  // Bits 0-2: the view (VIEW_* < 8); 3-5: the cascades (at most 4); 6-9: the light count
+  // (at most 9); above: the light kinds.
+  const std::uint32_t key = (in.light_kinds << 10) | (lights << 6) | (in.cascades << 3) | in.view;
   return variants_.get(key, [&] {
-    const std::uint32_t constants[] = {in.cascades, in.view, in.light_kinds};
+    const std::uint32_t constants[] = {in.cascades, in.view, in.light_kinds, lights};
     return vkx::Pipeline(device_, layout_, spirv_shade_comp, constants);
   });
 }

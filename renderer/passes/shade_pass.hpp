@@ -23,6 +23,7 @@ struct ShadeInputs {
   std::uint32_t cascades;          // of indirect light to shade (GpuLpv::info.x; 0: the LPV did not run)
   std::uint32_t view;              // gpu::VIEW_*
   std::uint32_t light_kinds;       // gpu::LIGHTS_* bits (light_kinds())
+  std::uint32_t light_count;       // of the buffer `lights`
 };
 
 // The gpu::LIGHTS_* bits that describe what `lights`, and emissive materials if the scene

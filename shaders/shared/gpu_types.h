@@ -40,6 +40,10 @@ LPV_CONST LIGHTS_SHADOWED = 16u;      // a light with a shadow map
 LPV_CONST LIGHTS_CUBE_SHADOWED = 32u; // a light with a cube of six
 LPV_CONST LIGHTS_EMISSIVE = 64u;      // a material that emits
 LPV_CONST LIGHTS_ALL = 127u;
+// Light counts up to this one are a constant of the shading (its light loop unrolled);
+// above, the count is read from the frame (SHADE_LIGHTS_FROM_FRAME).
+LPV_CONST SHADE_MAX_UNROLLED_LIGHTS = 8u;
+LPV_CONST SHADE_LIGHTS_FROM_FRAME = SHADE_MAX_UNROLLED_LIGHTS + 1u;
 
 LPV_CONST TONEMAP_NONE = 0u;
 LPV_CONST TONEMAP_REINHARD = 1u;
