@@ -124,18 +124,23 @@ TEST(HttpAccuracy, SweepStreamsItsEventsInOrder) {
   EXPECT_EQ(events.back()["table"]["rows"].size(), 5u);
 }
 
-// The whole sweep below (65 rows) takes about 7.5 s on the project's 2-core lavapipe machine;
-// a client that leaves at its first row must free the worker at the next one, so the render sent right
-// after waits far less than the rest of the sweep would take.
+// 65 rows (LPV off, then 4 grids x 16 iteration counts): about 7.5 s on the project's 2-core
+// lavapipe machine.
+nlohmann::json long_sweep() {
+  nlohmann::json sweep = kSmallSweep;
+  sweep["parameters"]["grid"] = {8, 16, 24, 32};
+  sweep["parameters"]["iterations"] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  return sweep;
+}
+
+// A client that leaves the long sweep at its first row must free the worker at the next
+// one, so the render sent right after waits far less than the rest of the sweep would take.
 TEST(HttpAccuracy, AClientLeavingASweepStopsItAtTheNextRow) {
   {
-    nlohmann::json long_sweep = kSmallSweep;
-    long_sweep["parameters"]["grid"] = {8, 16, 24, 32};
-    long_sweep["parameters"]["iterations"] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
     httplib::Request request;
     request.method = "POST";
     request.path = "/v1/sweep?format=ndjson";
-    request.body = long_sweep.dump();
+    request.body = long_sweep().dump();
     request.set_header("Content-Type", "application/json");
     // Reads the stream until the sweep has rendered its first rows, then hangs up.
     request.content_receiver = [](const char* data, std::size_t length, std::uint64_t, std::uint64_t) {
@@ -156,13 +161,10 @@ TEST(HttpAccuracy, AClientLeavingASweepStopsItAtTheNextRow) {
   EXPECT_LT(timing.at("queue"), 2500.0) << "the render waited for the abandoned sweep";
 }
 
-// The 65-row sweep of the test above, with a deadline a third of the way in: answered 200
-// with the rows done and complete false, not 504.
+// The long sweep with a deadline a third of the way in: answered 200 with the rows done and
+// complete false, not 504.
 TEST(HttpAccuracy, ASweepPastItsDeadlineAnswersTheRowsDone) {
-  nlohmann::json long_sweep = kSmallSweep;
-  long_sweep["parameters"]["grid"] = {8, 16, 24, 32};
-  long_sweep["parameters"]["iterations"] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
-  const auto r = shared_server().client()->Post("/v1/sweep", {{"X-Deadline-Ms", "2500"}}, long_sweep.dump(),
+  const auto r = shared_server().client()->Post("/v1/sweep", {{"X-Deadline-Ms", "2500"}}, long_sweep().dump(),
                                                 "application/json");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
