@@ -110,7 +110,7 @@ void stream_sweep(const std::shared_ptr<SweepJob>& job, httplib::Response& respo
           service.metrics.count_render("deadline_exceeded");
           write({{"event", "error"},
                  {"status", 504},
-                 {"error", {{"code", "deadline_exceeded"}, {"message", "the sweep did not finish within its deadline"}}}});
+                 {"error", {{"code", "deadline_exceeded"}, {"message", "the sweep did not start within its deadline"}}}});
         } else if (job->error) {
           write(error_event(*job, service));
         } else {
@@ -139,16 +139,16 @@ void handle_compare(const httplib::Request& request, httplib::Response& response
 
 void handle_sweep(const httplib::Request& request, httplib::Response& response, const httplib::ContentReader& content,
                   Service& service) {
-  SweepFormat format{};
-  try {
-    format = sweep_format(request);
-  } catch (const api::RequestError& e) {
-    return send_error(response, parse_error(e));
-  }
   auto accepted = accept_request<api::SweepRequest>(
       request, response, content, service, api::parse_sweep_request, service.options.accuracy_deadline,
       [&](const api::SweepRequest& s) { return missing_scene(s.base.scene, "base.scene", service); });
   if (!accepted) return;
+  SweepFormat format{};
+  try {  // after the body is read, so that the connection stays usable after a 400
+    format = sweep_format(request);
+  } catch (const api::RequestError& e) {
+    return send_error(response, parse_error(e));
+  }
   auto job = std::make_shared<SweepJob>(std::move(accepted->request), request_arrival() + accepted->deadline);
   if (format == SweepFormat::ndjson) {
     if (admit_job(job, response, service)) stream_sweep(job, response, service);

@@ -34,7 +34,7 @@ HttpError render_error(const api::RequestError& error);
 HttpError payload_too_large(std::size_t limit_bytes, const std::string& flag);
 // Neither a built-in scene nor an uploaded one: 404, naming `field` (where the request
 // named it; "" when the path did).
-HttpError unknown_scene(const std::string& name, const std::string& field = "scene");
+HttpError unknown_scene(const std::string& name, const std::string& field);
 // A scene file that does not load: 422 invalid_scene, unsupported_scene or scene_too_complex.
 HttpError load_error(const scene::LoadError& error);
 // Built-in scenes are part of the server: deleting one is 409.

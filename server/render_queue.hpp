@@ -35,7 +35,7 @@ using Clock = std::chrono::steady_clock;
 
 class RenderQueue;
 
-// Work for a render worker: a render, a compare or a sweep. The HTTP thread that submitted it
+// Work for a render worker: a render, a compare, a sweep or a benchmark suite. The HTTP thread that submitted it
 // waits for it (RenderQueue::wait) and reads its result once it is done.
 class Job {
  public:
@@ -43,8 +43,8 @@ class Job {
   virtual ~Job() = default;
 
   const std::string scene;  // the scene it renders
-  // A job still queued at its deadline never runs; a running one finishes (or, a sweep, stops
-  // between rows).
+  // A job still queued at its deadline never runs; a running render or compare finishes and
+  // its result is dropped; a job that answers_partially() stops at its next step.
   const Clock::time_point deadline;
 
   // Valid once RenderQueue::wait returned Outcome::done: error is set or the job's result is.

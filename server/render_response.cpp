@@ -74,7 +74,7 @@ void send_render_result(httplib::Response& response, renderer::RenderResult& res
           {"width", result.stats.width},
           {"height", result.stats.height},
           {"base64", base64_encode(bytes)}}}};
-    response.set_content(ascii_json(body), kImageJson);
+    send_json(response, body, 200, kImageJson);
   } else {
     std::string omitted;
     response.set_header("X-Render-Stats", stats_header_value(stats, omitted));

@@ -106,7 +106,8 @@ bool admit_job(const std::shared_ptr<Job>& job, httplib::Response& response, Ser
 bool answer_job_error(const Job& job, httplib::Response& response, Service& service);
 
 // Submits `job` and waits for it on behalf of `request`. Answers itself when the queue is
-// full or stopping (503), the client left (499), the deadline passed (504) or the job failed
+// full or stopping (503), the client left (499), the deadline passed (504; for a job that
+// answers_partially, only while it is still queued) or the job failed
 // (its error's status); true when the job is done and the caller answers with its result.
 bool run_job(const std::shared_ptr<Job>& job, std::chrono::milliseconds deadline, const httplib::Request& request,
              httplib::Response& response, Service& service);

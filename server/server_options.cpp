@@ -114,8 +114,8 @@ options (each also read from the environment variable in brackets; a flag wins):
   --workers N            render workers, each with its own device (1) [LPV_SERVER_WORKERS]
   --queue N              renders that may wait for a worker; more get 503 (8) [LPV_SERVER_QUEUE]
   --deadline-ms N        time from arrival to image before 504 (30000) [LPV_SERVER_DEADLINE_MS]
-  --accuracy-deadline-ms N  time from arrival to the answer of a compare or a sweep
-                         before 504; a sweep past it ends early (600000)
+  --accuracy-deadline-ms N  time from arrival to the answer of a compare, sweep or bench
+                         before 504; a sweep or bench past it answers what it did (600000)
                          [LPV_SERVER_ACCURACY_DEADLINE_MS]
   --max-body-bytes N     request body size before 413, scene uploads aside (262144)
                          [LPV_SERVER_MAX_BODY_BYTES]

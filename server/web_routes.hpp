@@ -4,8 +4,6 @@
 
 #include <httplib.h>
 
-#include <string>
-
 namespace server {
 
 // What the routes table lists: "/" (the page) and its flat asset names.
