@@ -565,13 +565,17 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
     case kPropagate:
       propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.gpu.info.z, lpv_uniforms, *volumes);
       break;
-    case kShade:
+    case kShade: {
+      const bool lit = needs_direct_light(frame.request.output.view);
       shade.record(cmd, frame.gpu, *targets,
                    {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes,
                     frame.plan.run[kInject] ? frame.lpv.gpu.info.x : 0u,
-                    gpu_view(frame.request.output.view), light_kinds(frame.lights.lights, frame.gpu.emissive),
-                    std::uint32_t(frame.lights.lights.size())});
+                    gpu_view(frame.request.output.view),
+                    // Views without direct light never read the lights: one pipeline serves every light setup.
+                    lit ? light_kinds(frame.lights.lights, frame.gpu.emissive) : 0u,
+                    lit ? std::uint32_t(frame.lights.lights.size()) : 0u});
       break;
+    }
     case kTonemap:
       tonemap.record(cmd, *targets, frame.request.output.tonemap,
                      frame.request.output.view != api::View::normal && frame.request.output.view != api::View::depth);

@@ -12,8 +12,6 @@
 namespace bench {
 namespace {
 
-// The verdict on one metric of one case, or nothing when a side lacks it.
-
 RunInfo run_info(const api::BenchResults& r) {
   return {r.label, r.suite, r.suite_version, r.build.commit, r.machine.hostname, r.device.name, r.repetitions};
 }

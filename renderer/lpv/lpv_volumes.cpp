@@ -25,15 +25,14 @@ vkx::Image rsm_target(const vkx::Device& device, VkFormat format, std::uint32_t 
                              VK_IMAGE_ASPECT_COLOR_BIT, true});
 }
 
-vkx::Image volume(const vkx::Device& device, std::uint32_t w, std::uint32_t h, std::uint32_t d, bool sampled) {
+vkx::Image volume(const vkx::Device& device, std::uint32_t w, std::uint32_t h, std::uint32_t d) {
   vkx::ImageDesc desc;
   desc.format = LpvVolumes::kFormat;
   desc.width = w;
   desc.height = h;
   desc.depth = d;
   desc.volume = true;
-  desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-               (sampled ? VK_IMAGE_USAGE_SAMPLED_BIT : 0);
+  desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   return vkx::Image(device, desc);
 }
 
@@ -61,11 +60,11 @@ std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims) {
 LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
     : dims(d),
       cascades(c),
-      grids(volume(device, 3 * d.x, d.y, 2 * d.z, false)),
-      accumulated{volume(device, d.x, d.y, c * d.z, true), volume(device, d.x, d.y, c * d.z, true),
-                  volume(device, d.x, d.y, c * d.z, true)},
-      corners(volume(device, 2 * (d.x + 1), d.y + 1, d.z + 1, false)),
-      faces(volume(device, 6 * d.x, d.y, d.z, false)) {
+      grids(volume(device, 3 * d.x, d.y, 2 * d.z)),
+      accumulated{volume(device, d.x, d.y, c * d.z), volume(device, d.x, d.y, c * d.z),
+                  volume(device, d.x, d.y, c * d.z)},
+      corners(volume(device, 2 * (d.x + 1), d.y + 1, d.z + 1)),
+      faces(volume(device, 6 * d.x, d.y, d.z)) {
   const VkDeviceSize cells = cell_count(d);
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
   injected = vkx::Buffer(device, cells * kInjectedBytesPerCell, storage, vkx::MemoryUse::gpu_only);

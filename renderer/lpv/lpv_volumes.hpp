@@ -68,7 +68,7 @@ struct LpvVolumes {
   // Propagation's ping-pong: texel (3x + k, y, z + which * dims.z), the SH of channel k = R,
   // G, B that the cell sends, already times its outgoing scale (see lpv_outgoing_scale).
   vkx::Image grids;
-  // The light the shading reads, one image per colour channel so it can be filtered:
+  // The light the shading reads (and filters itself), one image per colour channel:
   // texel (x, y, z + cascade * dims.z).
   vkx::Image accumulated[3];
   // Geometry volume per cell corner, the stronger source: texel (2x + k, y, z), k = 0 blocking

@@ -79,7 +79,7 @@ const uint SPLAT_LATTICE_PER_INVOCATION = 4u;
 // whether this one has a point.
 void splat_subgroup(bool valid, ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, float units) {
   const int NONE = 0x7fffffff;
-  if (!valid) {  // no share anywhere: weight 0 where the lattice is, values 0
+  if (!valid) {  // adds nothing: zero values, at a finite point (no NaN into the sums)
     low = ivec3(0);
     f = vec3(0.0);
     for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) values[i] = 0.0;
