@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Prints the numbers the LPV is measured by, on the default device (lavapipe): per-pass
 # device ms of cornell-box at 512x512 (median of 10 frames) for grids of 16^3, 32^3 and 64^3
-# cells and 4, 8 and 16 iterations (one cascade, RSM 256^2, occlusion on), and propagation
+# cells and 4, 8 and 16 iterations (one cascade, RSM 256^2, occlusion on, plan exact), and propagation
 # throughput in cell-iterations per second. Builds first if needed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -14,7 +14,8 @@ cd "$work"
 printf '%-6s %-5s %s\n' grid iters "per-pass device ms (median of 10 frames) | propagation throughput"
 for grid in 16 32 64; do
   for iterations in 4 8 16; do
-    echo "{\"output\": {\"width\": 512, \"height\": 512}, \"repeat\": 10,
+    # Plan "exact": at 16^3 the planner would lower the RSM to 128 (docs/planner.md).
+    echo "{\"output\": {\"width\": 512, \"height\": 512}, \"repeat\": 10, \"plan\": \"exact\",
            \"lpv\": {\"grid\": $grid, \"iterations\": $iterations}}" >request.json
     # The summary's second line: "gpu T ms (median): shadow a rsm b ... propagate p ...".
     line=$("$bin" request.json -o frame.png 2>&1 | sed -n 2p)

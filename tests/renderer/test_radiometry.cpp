@@ -164,18 +164,27 @@ TEST_F(Radiometry, LightsOfEveryKindAddUp) {
 }
 
 // An emissive surface shows its emitted radiance, lights or none (the shading adds emission
-// only in frames whose scene has an emissive material).
+// only in frames whose scene has an emissive material, and is specialised on the light
+// kinds). Its albedo is 0, so a light adds nothing to it.
 TEST_F(Radiometry, EmissiveSurfaceShowsItsEmittedRadiance) {
   scene::SceneBuilder b("glowing-quad");
   const glm::vec3 emitted{2.0f, 1.0f, 0.5f};
   const auto m = b.add_material({"glow", glm::vec3(0.0f), emitted});
   b.add_facing_quad({0, 0, 0}, {0, 0, 1}, 1.0f, m);
   const scene::Scene scene = b.build();
-  for (const api::View view : {api::View::final_, api::View::direct}) {
-    api::RenderRequest request = gpu_test::linear_request(kSize, kSize, camera_facing_origin_from({0.3f, 0.2f, 3.0f}));
-    request.output.view = view;
-    const auto result = gpu_test::renderer().render(scene, request, renderer::kReadbackLinear);
-    expect_within_percent(gpu_test::pixel(result.linear, kSize / 2, kSize / 2), emitted, 0.01f);
+  api::Light point;
+  point.type = api::LightType::point;
+  point.position = {0, 0, 1.0f};
+  point.intensity = 3.0f;
+  for (const std::vector<api::Light>& lights : {std::vector<api::Light>{}, std::vector<api::Light>{point}}) {
+    for (const api::View view : {api::View::final_, api::View::direct}) {
+      SCOPED_TRACE(lights.size());
+      api::RenderRequest request = gpu_test::linear_request(kSize, kSize, camera_facing_origin_from({0.3f, 0.2f, 3.0f}));
+      request.output.view = view;
+      request.lights = lights;
+      const auto result = gpu_test::renderer().render(scene, request, renderer::kReadbackLinear);
+      expect_within_percent(gpu_test::pixel(result.linear, kSize / 2, kSize / 2), emitted, 0.01f);
+    }
   }
 }
 
