@@ -444,7 +444,7 @@ bool Renderer::Impl::converged(std::uint32_t cascade, std::uint32_t step, std::u
                                float convergence) const {
   volumes->flux_stats.invalidate();
   auto flux = [&](std::uint32_t k) {
-    const glm::dvec3 f = volumes->flux_at(volumes->grid_flux_offset(cascade, k), 1.0);
+    const glm::dvec3 f = volumes->flux_at(volumes->grid_flux_record(cascade, k), 1.0);
     return std::max({f.x, f.y, f.z});
   };
   double accumulated = 0.0;
@@ -467,7 +467,7 @@ api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup
   api::LpvStats stats;
   const std::uint64_t side = vpls_per_view_side(settings);
   stats.vpl_count = (rsm_ran ? side * side * lpv.rsm_views.size() : 0) + emitters;
-  stats.vpl_flux = rgb(volumes->flux_at(volumes->vpl_flux_offset(0), watts_per_unit));
+  stats.vpl_flux = rgb(volumes->flux_at(volumes->vpl_flux_record(0), watts_per_unit));
   stats.intensity = lpv.gpu.scales.z;
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
     const CascadePlacement& p = lpv.cascades[c];
@@ -475,10 +475,10 @@ api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup
     cs.origin = {p.origin.x, p.origin.y, p.origin.z};
     cs.cell_size = p.cell_size;
     cs.grid = {p.dims.x, p.dims.y, p.dims.z};
-    cs.injected_flux = rgb(volumes->flux_at(volumes->grid_flux_offset(c, 0), watts_per_unit));
+    cs.injected_flux = rgb(volumes->flux_at(volumes->grid_flux_record(c, 0), watts_per_unit));
     cs.iterations = iterations_run[c];
     for (std::uint32_t k = 1; k <= iterations_run[c]; ++k)
-      cs.propagated_flux.push_back(rgb(volumes->flux_at(volumes->grid_flux_offset(c, k), watts_per_unit)));
+      cs.propagated_flux.push_back(rgb(volumes->flux_at(volumes->grid_flux_record(c, k), watts_per_unit)));
     stats.cascades.push_back(std::move(cs));
   }
   return stats;

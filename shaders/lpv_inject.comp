@@ -15,7 +15,7 @@ layout(set = 0, binding = 2, rgba32f) uniform readonly image2DArray rsm_normal;
 layout(set = 0, binding = 3, rgba32f) uniform readonly image2DArray rsm_flux;
 layout(std430, set = 0, binding = 4) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
 layout(std430, set = 0, binding = 5) buffer FluxStats { int64_t flux_stats[]; };
-layout(push_constant) uniform Push { uint cascade; uint stats_offset; } push;
+layout(push_constant) uniform Push { uint cascade; uint stats_record; } push;
 
 #include "shared/lpv_grid_flux.glsl"
 #include "shared/lpv_inject_vpl.glsl"
@@ -44,7 +44,7 @@ void main() {
   float weight = flux.r + flux.g + flux.b;
 
   // The flux of all VPLs, for the statistics.
-  add_grid_flux(flux, push.stats_offset, lpv.scales.x);
+  add_grid_flux(flux, push.stats_record, lpv.scales.x);
 
   bool lit = weight > 0.0 && dot(normal, normal) > 0.0;
   ivec3 low;

@@ -13,7 +13,7 @@ layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 layout(std430, set = 0, binding = 1) readonly buffer Emitters { GpuEmitter emitters[]; };
 layout(std430, set = 0, binding = 2) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
 layout(std430, set = 0, binding = 3) buffer FluxStats { int64_t flux_stats[]; };
-layout(push_constant) uniform Push { uint cascade; uint stats_offset; uint count; } push;
+layout(push_constant) uniform Push { uint cascade; uint stats_record; uint count; } push;
 
 #include "shared/lpv_grid_flux.glsl"
 #include "shared/lpv_inject_vpl.glsl"
@@ -22,7 +22,7 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   bool in_range = i < push.count;
   vec3 flux = in_range ? emitters[i].flux.rgb : vec3(0.0);
-  add_grid_flux(flux, push.stats_offset, lpv.scales.x);  // every invocation: a subgroup sum
+  add_grid_flux(flux, push.stats_record, lpv.scales.x);  // every invocation: a subgroup sum
   ivec3 low;
   vec3 f;
   float values[SPLAT_VALUES];

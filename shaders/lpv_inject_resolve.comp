@@ -17,7 +17,7 @@ layout(set = 0, binding = 3, rgba32f) uniform writeonly image3D accumulated_r;
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image3D accumulated_g;
 layout(set = 0, binding = 5, rgba32f) uniform writeonly image3D accumulated_b;
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
-layout(push_constant) uniform Push { uint cascade; uint stats_offset; } push;
+layout(push_constant) uniform Push { uint cascade; uint stats_record; } push;
 
 #include "shared/lpv_grid_flux.glsl"
 
@@ -42,5 +42,5 @@ void main() {
     imageStore(accumulated_g, accumulated, sh[1]);
     imageStore(accumulated_b, accumulated, sh[2]);
   }
-  add_grid_flux(flux, push.stats_offset, lpv.scales.x);
+  add_grid_flux(flux, push.stats_record, lpv.scales.x);
 }

@@ -33,7 +33,7 @@ layout(set = 0, binding = 3, rgba32f) uniform image3D accumulated_g;
 layout(set = 0, binding = 4, rgba32f) uniform image3D accumulated_b;
 layout(set = 0, binding = 5, rgba32f) uniform readonly image3D faces;
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
-layout(push_constant) uniform Push { uint cascade; uint stats_offset; uint iteration; } push;
+layout(push_constant) uniform Push { uint cascade; uint stats_record; uint iteration; } push;
 
 // The faces' blocking potentials apply (when the frame has a geometry volume; from the second
 // iteration on), and with them the light the blockers reflect (bounces: 2).
@@ -152,5 +152,5 @@ void main() {
     imageStore(accumulated_g, texel, imageLoad(accumulated_g, texel) + gathered[1]);
     imageStore(accumulated_b, texel, imageLoad(accumulated_b, texel) + gathered[2]);
   }
-  add_grid_flux(flux, push.stats_offset, lpv.scales.x);
+  add_grid_flux(flux, push.stats_record, lpv.scales.x);
 }

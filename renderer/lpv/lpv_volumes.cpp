@@ -6,7 +6,6 @@
 
 #include <glm/vec3.hpp>
 
-#include <cstring>
 
 namespace renderer {
 namespace {
@@ -16,6 +15,7 @@ constexpr VkDeviceSize kGridBytesPerCell = 2 * 3 * 16;
 constexpr VkDeviceSize kAccumulatedBytesPerCell = 3 * 16;
 constexpr VkDeviceSize kCornerBytes = gpu::LPV_GV_SOURCES * gpu::LPV_GV_WORDS * 8 + 2 * 16;
 constexpr VkDeviceSize kFaceBytesPerCell = 6 * 16;
+constexpr std::size_t kRecordInt64s = gpu::LPV_FLUX_SLOTS * gpu::LPV_FLUX_SLOT_INT64S;  // one flux_stats record
 
 std::uint64_t cell_count(glm::uvec3 d) { return std::uint64_t(d.x) * d.y * d.z; }
 
@@ -85,16 +85,18 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
 
 void LpvVolumes::set_iterations(const vkx::Device& device, std::uint32_t n) {
   iterations = n;
-  stats_stride = 3 * (n + 2);
-  const VkDeviceSize bytes = VkDeviceSize(stats_stride) * cascades * 8;
+  records_per_cascade = n + 2;
+  const VkDeviceSize bytes = VkDeviceSize(records_per_cascade) * cascades * kRecordInt64s * 8;
   if (!flux_stats || flux_stats.size() < bytes)
     flux_stats = vkx::Buffer(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                              vkx::MemoryUse::readback);
 }
 
-glm::dvec3 LpvVolumes::flux_at(std::uint32_t offset, double watts_per_unit) const {
-  std::int64_t units[3];
-  std::memcpy(units, static_cast<const std::int64_t*>(flux_stats.mapped()) + offset, sizeof(units));
+glm::dvec3 LpvVolumes::flux_at(std::uint32_t record, double watts_per_unit) const {
+  const auto* slot = static_cast<const std::int64_t*>(flux_stats.mapped()) + std::size_t(record) * kRecordInt64s;
+  std::int64_t units[3] = {0, 0, 0};
+  for (std::uint32_t s = 0; s < gpu::LPV_FLUX_SLOTS; ++s, slot += gpu::LPV_FLUX_SLOT_INT64S)
+    for (int c = 0; c < 3; ++c) units[c] += slot[c];
   return glm::dvec3(double(units[0]), double(units[1]), double(units[2])) * watts_per_unit;
 }
 

@@ -49,22 +49,23 @@ struct LpvVolumes {
   // maxStorageBufferRange (128 MiB on lavapipe: up to 93^3 cells, the corner sums the largest).
   static std::uint64_t largest_buffer_bytes(glm::uvec3 dims);
 
-  // Offsets (in int64) into flux_stats: the VPL flux of a cascade, and its grid's flux after
-  // iteration k (k = 0: as injected); three channels each.
-  std::uint32_t vpl_flux_offset(std::uint32_t cascade) const { return cascade * stats_stride; }
-  std::uint32_t grid_flux_offset(std::uint32_t cascade, std::uint32_t k) const {
-    return cascade * stats_stride + 3 * (k + 1);
+  // Records of flux_stats (gpu::LPV_FLUX_SLOTS): the VPL flux of a cascade, and its grid's
+  // flux after iteration k (k = 0: as injected).
+  std::uint32_t vpl_flux_record(std::uint32_t cascade) const { return cascade * records_per_cascade; }
+  std::uint32_t grid_flux_record(std::uint32_t cascade, std::uint32_t k) const {
+    return cascade * records_per_cascade + k + 1;
   }
-  // A flux from flux_stats, in watts, per channel (the buffer must have been read back).
-  glm::dvec3 flux_at(std::uint32_t offset, double watts_per_unit) const;
+  // A flux from flux_stats, in watts, per channel: the sum of the record's slots (the buffer
+  // must have been read back).
+  glm::dvec3 flux_at(std::uint32_t record, double watts_per_unit) const;
 
   glm::uvec3 dims;
   std::uint32_t cascades;
   std::uint32_t iterations = 0;    // of the current frame (set_iterations)
-  std::uint32_t stats_stride = 0;  // int64 per cascade in flux_stats: 3 * (iterations + 2)
+  std::uint32_t records_per_cascade = 0;  // in flux_stats: iterations + 2
   vkx::Buffer injected;  // int64[12] per cell: fixed-point SH of the injected VPLs
   vkx::Buffer corner_sums;  // int64[LPV_GV_WORDS] per corner and source: geometry volume sums
-  vkx::Buffer flux_stats;  // int64 fixed-point fluxes, host-visible
+  vkx::Buffer flux_stats;  // records of int64 fixed-point fluxes, host-visible
   // Propagation's ping-pong: texel (3x + k, y, z + which * dims.z), the SH of channel k = R,
   // G, B that the cell sends, already times its outgoing scale (see lpv_outgoing_scale).
   vkx::Image grids;

@@ -10,12 +10,12 @@ namespace {
 
 struct CascadeConstants {
   std::uint32_t cascade;
-  std::uint32_t stats_offset;
+  std::uint32_t stats_record;
 };
 
 struct EmitterConstants {
   std::uint32_t cascade;
-  std::uint32_t stats_offset;
+  std::uint32_t stats_record;
   std::uint32_t count;
 };
 
@@ -78,19 +78,19 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
   }
   if (maps) {
     inject.bind(cmd);
-    inject.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_offset(cascade)});
+    inject.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_record(cascade)});
     const std::uint32_t groups = vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP);
     vkCmdDispatch(cmd, groups, groups, maps->layers);
   }
   if (scene.emitter_count) {  // after the RSM's VPLs: both add to the same integer sums
     if (maps) vkx::compute_barrier(cmd);
     emitters.bind(cmd);
-    emitters.push(cmd, EmitterConstants{cascade, volumes.vpl_flux_offset(cascade), scene.emitter_count});
+    emitters.push(cmd, EmitterConstants{cascade, volumes.vpl_flux_record(cascade), scene.emitter_count});
     vkCmdDispatch(cmd, vkx::group_count(scene.emitter_count, gpu::LPV_EMITTER_GROUP), 1, 1);
   }
   vkx::compute_barrier(cmd);
   resolve_.bind(cmd);
-  resolve_.push(cmd, CascadeConstants{cascade, volumes.grid_flux_offset(cascade, 0)});
+  resolve_.push(cmd, CascadeConstants{cascade, volumes.grid_flux_record(cascade, 0)});
   const glm::uvec3 d = volumes.dims;
   vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), vkx::group_count(d.z, gpu::LPV_GROUP));
   vkx::compute_barrier(cmd);

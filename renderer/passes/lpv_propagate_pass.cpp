@@ -10,7 +10,7 @@ namespace {
 
 struct IterationConstants {
   std::uint32_t cascade;
-  std::uint32_t stats_offset;
+  std::uint32_t stats_record;
   std::uint32_t iteration;  // 1-based
 };
 
@@ -51,7 +51,7 @@ void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::u
   pipeline.bind(cmd);
   const glm::uvec3 d = volumes.dims;
   for (std::uint32_t k = first; k < first + count; ++k) {
-    pipeline.push(cmd, IterationConstants{cascade, volumes.grid_flux_offset(cascade, k), k});
+    pipeline.push(cmd, IterationConstants{cascade, volumes.grid_flux_record(cascade, k), k});
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
                   vkx::group_count(d.z, gpu::LPV_GROUP));
     vkx::compute_barrier(cmd);

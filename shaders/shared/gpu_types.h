@@ -88,6 +88,13 @@ struct GpuFrame {
 
 LPV_CONST LPV_MAX_CASCADES = 4u;
 LPV_CONST LPV_GROUP = 4u;         // grid passes: work groups of 4 x 4 x 4 cells
+// Flux statistics: each sum (a cascade's VPL flux, or its grid's after a step) is a record of
+// LPV_FLUX_SLOTS slots of one 64-byte cache line each (int64 R, G, B, then padding). A work
+// group adds to slot (its index mod LPV_FLUX_SLOTS) and the host sums the slots: the two
+// lavapipe threads, which take consecutive work groups, then rarely add to the same line
+// (one line for every group made the atomics an eighth of propagation).
+LPV_CONST LPV_FLUX_SLOTS = 8u;
+LPV_CONST LPV_FLUX_SLOT_INT64S = 8u;
 LPV_CONST LPV_VPL_GROUP = 8u;     // injection: work groups of 8 x 8 VPLs
 LPV_CONST LPV_EMITTER_GROUP = 64u;  // injection of emissive surfels: work groups of 64
 LPV_CONST LPV_GV_SOURCES = 2u;    // geometry volume sources: RSM surfels, camera surfels
