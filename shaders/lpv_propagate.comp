@@ -17,7 +17,7 @@
 // (lavapipe compiles at first use; this shader takes a sixth of a second).
 // The 30 faces are written out by macros with their directions and normals as literals
 // (lavapipe's compiler does not unroll loops this large), so each face costs one 4-wide dot
-// per channel plus two multiply-adds (a cosine lobe along an axis has two non-zero terms).
+// per channel plus two additions (a cosine lobe along an axis has two non-zero terms).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
@@ -44,28 +44,31 @@ layout(constant_id = 1) const bool BOUNCES = false;
 
 const float S5 = 0.4472135955;  // 1 / sqrt(5)
 const float T5 = 0.8944271910;  // 2 / sqrt(5)
-const float LOBE_C0 = SH_COSINE_C0 / LPV_PI;  // flux/pi * cosine lobe: constant term per watt
-const float LOBE_C1 = SH_COSINE_C1 / LPV_PI;  // and linear term per watt
+// The cells gather in lobe weights, sum of flux * (1, -n.y, n.z, -n.x) over the faces' normals
+// n; times LOBE_SCALE that is the sum of the cosine lobes flux/pi * sh_cosine_lobe(n). Adding
+// weights costs one addition per face and channel where adding lobes cost a multiplication too.
+const vec4 LOBE_SCALE = vec4(SH_COSINE_C0, SH_COSINE_C1, SH_COSINE_C1, SH_COSINE_C1) / LPV_PI;
+vec4 lobe_weights(vec3 n) { return vec4(1.0, -n.y, n.z, -n.x); }
 
-// The SH coefficient a cosine lobe along each axis has besides the constant one, with its
-// sign: sh_cosine_lobe(n) = (c0, -c1 n.y, c1 n.z, -c1 n.x).
-#define LOBE_AXIS_PX(sh, flux) sh.w -= LOBE_C1 * (flux)
-#define LOBE_AXIS_NX(sh, flux) sh.w += LOBE_C1 * (flux)
-#define LOBE_AXIS_PY(sh, flux) sh.y -= LOBE_C1 * (flux)
-#define LOBE_AXIS_NY(sh, flux) sh.y += LOBE_C1 * (flux)
-#define LOBE_AXIS_PZ(sh, flux) sh.z += LOBE_C1 * (flux)
-#define LOBE_AXIS_NZ(sh, flux) sh.z -= LOBE_C1 * (flux)
+// The weight a lobe along each axis adds to its one non-constant term.
+#define LOBE_AXIS_PX(sh, flux) sh.w -= (flux)
+#define LOBE_AXIS_NX(sh, flux) sh.w += (flux)
+#define LOBE_AXIS_PY(sh, flux) sh.y -= (flux)
+#define LOBE_AXIS_NY(sh, flux) sh.y += (flux)
+#define LOBE_AXIS_PZ(sh, flux) sh.z += (flux)
+#define LOBE_AXIS_NZ(sh, flux) sh.z -= (flux)
 
 // One face: flux Omega * I(w) of each channel through it (less what the blockers stop), into
-// this cell as a cosine lobe along the face's normal axis.
+// this cell as a cosine lobe along the face's normal axis. Omega is folded into the basis,
+// a constant: Omega * max(0, x) = max(0, Omega * x).
 #define FACE(W, OMEGA, AXIS)                                                                        \
   {                                                                                                 \
-    const vec4 basis = sh_basis(W);                                                                 \
-    vec3 flux = (OMEGA) * max(vec3(dot(sh_r, basis), dot(sh_g, basis), dot(sh_b, basis)), vec3(0.0)); \
+    const vec4 basis = (OMEGA) * sh_basis(W);                                                       \
+    vec3 flux = max(vec3(dot(sh_r, basis), dot(sh_g, basis), dot(sh_b, basis)), vec3(0.0));          \
     if (OCCLUDED) flux *= transmitted(blocking, albedo, W, flux, gathered);                        \
-    gathered[0].x += LOBE_C0 * flux.r;                                                              \
-    gathered[1].x += LOBE_C0 * flux.g;                                                              \
-    gathered[2].x += LOBE_C0 * flux.b;                                                              \
+    gathered[0].x += flux.r;                                                                        \
+    gathered[1].x += flux.g;                                                                        \
+    gathered[2].x += flux.b;                                                                        \
     LOBE_AXIS_##AXIS(gathered[0], flux.r);                                                          \
     LOBE_AXIS_##AXIS(gathered[1], flux.g);                                                          \
     LOBE_AXIS_##AXIS(gathered[2], flux.b);                                                          \
@@ -77,12 +80,11 @@ float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gath
   float blocked = clamp(dot(blocking, sh_basis(-w)), 0.0, 1.0);
   if (BOUNCES && albedo != vec3(0.0) && blocked > 0.0) {
     vec3 mean_normal = vec3(-blocking.w, -blocking.y, blocking.z);
-    vec3 n = dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -w;
-    vec4 lobe = sh_cosine_lobe(n) / LPV_PI;
+    vec4 weights = lobe_weights(dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -w);
     vec3 reflected = flux * blocked * albedo;
-    gathered[0] += reflected.r * lobe;
-    gathered[1] += reflected.g * lobe;
-    gathered[2] += reflected.b * lobe;
+    gathered[0] += reflected.r * weights;
+    gathered[1] += reflected.g * weights;
+    gathered[2] += reflected.b * weights;
   }
   return 1.0 - blocked;
 }
@@ -138,6 +140,8 @@ void main() {
             NY, vec3(0, -S5, T5))
   NEIGHBOUR(ivec3(0, 0, -1), 2, NZ, vec3(0, 0, -1), PX, vec3(S5, 0, -T5), NX, vec3(-S5, 0, -T5), PY,
             vec3(0, S5, -T5), NY, vec3(0, -S5, -T5))
+
+  for (int c = 0; c < 3; ++c) gathered[c] *= LOBE_SCALE;
 
   vec3 flux = vec3(0.0);
   if (in_grid) {
