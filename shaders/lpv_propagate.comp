@@ -64,7 +64,7 @@ vec4 lobe_weights(vec3 n) { return vec4(1.0, -n.y, n.z, -n.x); }
 #define FACE(W, OMEGA, AXIS)                                                                        \
   {                                                                                                 \
     const vec4 basis = (OMEGA) * sh_basis(W);                                                       \
-    vec3 flux = max(vec3(dot(sh_r, basis), dot(sh_g, basis), dot(sh_b, basis)), vec3(0.0));          \
+    vec3 flux = max(vec3(fdot(sh_r, basis), fdot(sh_g, basis), fdot(sh_b, basis)), vec3(0.0));       \
     if (OCCLUDED) flux *= transmitted(blocking, albedo, W, flux, gathered);                        \
     gathered[0].x += flux.r;                                                                        \
     gathered[1].x += flux.g;                                                                        \
@@ -88,6 +88,11 @@ float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gath
   }
   return 1.0 - blocked;
 }
+
+// dot() as multiply-adds: with a constant basis, lavapipe then drops the terms that are zero
+// (a face's basis has one or two), which it keeps in dot(): 135 of the shader's 4400
+// instructions fewer.
+float fdot(vec4 a, vec4 b) { return fma(a.x, b.x, fma(a.y, b.y, fma(a.z, b.z, a.w * b.w))); }
 
 // The light of the neighbour at cell - STEP, travelling along +STEP: its far face (normal
 // along the travel) and its four side faces (normals across it). A neighbour past the grid's
