@@ -58,6 +58,11 @@ vec4 lobe_weights(vec3 n) { return vec4(1.0, -n.y, n.z, -n.x); }
 #define LOBE_AXIS_PZ(sh, flux) sh.z += (flux)
 #define LOBE_AXIS_NZ(sh, flux) sh.z -= (flux)
 
+// dot() as multiply-adds: with a constant basis (a face's, or its reverse for the blockers),
+// lavapipe then drops the terms that are zero, which it keeps in dot(): the JIT code of this
+// shader has 4350 instructions instead of 4480.
+float fdot(vec4 a, vec4 b) { return fma(a.x, b.x, fma(a.y, b.y, fma(a.z, b.z, a.w * b.w))); }
+
 // One face: flux Omega * I(w) of each channel through it (less what the blockers stop), into
 // this cell as a cosine lobe along the face's normal axis. Omega is folded into the basis,
 // a constant: Omega * max(0, x) = max(0, Omega * x).
@@ -77,7 +82,7 @@ vec4 lobe_weights(vec3 n) { return vec4(1.0, -n.y, n.z, -n.x); }
 // The fraction of `flux` (travelling along w) the blockers on the face let through. With
 // bounces, the light they stop is reflected back, diffusely around their mean normal.
 float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gathered[3]) {
-  float blocked = clamp(dot(blocking, sh_basis(-w)), 0.0, 1.0);
+  float blocked = clamp(fdot(blocking, sh_basis(-w)), 0.0, 1.0);
   if (BOUNCES && albedo != vec3(0.0) && blocked > 0.0) {
     vec3 mean_normal = vec3(-blocking.w, -blocking.y, blocking.z);
     vec4 weights = lobe_weights(dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -w);
@@ -88,11 +93,6 @@ float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gath
   }
   return 1.0 - blocked;
 }
-
-// dot() as multiply-adds: with a constant basis, lavapipe then drops the terms that are zero
-// (a face's basis has one or two), which it keeps in dot(): 135 of the shader's 4400
-// instructions fewer.
-float fdot(vec4 a, vec4 b) { return fma(a.x, b.x, fma(a.y, b.y, fma(a.z, b.z, a.w * b.w))); }
 
 // The light of the neighbour at cell - STEP, travelling along +STEP: its far face (normal
 // along the travel) and its four side faces (normals across it). A neighbour past the grid's
