@@ -264,7 +264,6 @@ LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scen
                                " cascades: cascade " + std::to_string(needed - 1) +
                                " holds the whole scene, the coarser ones add nothing");
       lpv.setup.cascades.resize(needed);
-      lpv.setup.gpu.info.x = needed;
     }
   }
 

@@ -10,7 +10,7 @@ static_assert(sizeof(GpuEmitter) == 48);
 static_assert(sizeof(GpuFrame) == 144);
 static_assert(sizeof(GpuTonemapParams) == 16);
 static_assert(sizeof(GpuLpvCascade) == 32);
-static_assert(sizeof(GpuLpv) == 192);
+static_assert(sizeof(GpuLpv) == 176);
 static_assert(sizeof(GpuRsmView) == 96);
 static_assert(sizeof(mat4) == 64);
 }  // namespace gpu

@@ -291,7 +291,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
         LpvSetup setup = setup_lpv(lpv, scene.bounds, grid_bounds, lights, light_setup.views, gpu.emitted_flux, camera,
                                    camera_request.fov_y_deg, out.height);
         // Without a geometry volume this frame (no occluders), propagation does not read one.
-        if (!plan.run[kGeometryVolume]) setup.gpu.info.z &= ~(gpu::LPV_FLAG_OCCLUSION | gpu::LPV_FLAG_BOUNCES);
+        if (!plan.run[kGeometryVolume]) setup.occlusion = setup.bounces = false;
         return setup;
       });
   plan_ms += ms_since(plan_start);
@@ -311,17 +311,16 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   frame.depth_range = glm::vec4(camera.near, camera.far, 0.0f, 0.0f);
   frame.exposure = glm::vec4(std::exp2(out.exposure), 0.0f, 0.0f, 0.0f);
   frame.size_view = glm::uvec4(out.width, out.height, 0u, std::uint32_t(light_setup.lights.size()));
-  const gpu::GpuLpv lpv_params = plan.run[kInject] ? lpv_setup.gpu : no_lpv();
   const auto light_bytes = light_setup.lights.size() * sizeof(gpu::GpuLight);
   const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);
   const auto rsm_view_bytes = lpv_setup.rsm_views.size() * sizeof(gpu::GpuRsmView);
   ensure_upload_capacity(device, frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   ensure_upload_capacity(device, light_buffer, light_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   ensure_upload_capacity(device, shadow_view_buffer, view_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  ensure_upload_capacity(device, lpv_uniforms, sizeof(lpv_params), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  ensure_upload_capacity(device, lpv_uniforms, sizeof(lpv_setup.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   ensure_upload_capacity(device, rsm_view_buffer, rsm_view_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   frame_uniforms.write(&frame, sizeof(frame));
-  lpv_uniforms.write(&lpv_params, sizeof(lpv_params));
+  lpv_uniforms.write(&lpv_setup.gpu, sizeof(lpv_setup.gpu));  // read only by frames with indirect light
   if (light_bytes) light_buffer.write(light_setup.lights.data(), light_bytes);
   if (view_bytes) shadow_view_buffer.write(light_setup.shadow_views.data(), view_bytes);
   if (rsm_view_bytes) rsm_view_buffer.write(lpv_setup.rsm_views.data(), rsm_view_bytes);
@@ -559,17 +558,18 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
     case kGeometryVolume:
       geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, *targets,
                       {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.z,
-                       lpv.injection, (frame.lpv.gpu.info.z & gpu::LPV_FLAG_BOUNCES) != 0},
+                       lpv.injection, frame.lpv.bounces},
                       *volumes);
       break;
     case kPropagate:
-      propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.gpu.info.z, lpv_uniforms, *volumes);
+      propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.occlusion, frame.lpv.bounces, lpv_uniforms,
+                       *volumes);
       break;
     case kShade: {
       const bool lit = needs_direct_light(frame.request.output.view);
       shade.record(cmd, frame.gpu, *targets,
                    {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes,
-                    frame.plan.run[kInject] ? frame.lpv.gpu.info.x : 0u,
+                    frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u,
                     gpu_view(frame.request.output.view),
                     // Views without direct light never read the lights: one pipeline serves every light setup.
                     lit ? light_kinds(frame.lights.lights, frame.gpu.emissive) : 0u,

@@ -21,7 +21,7 @@ layout(push_constant) uniform Push { uint cascade; uint stats_record; } push;
 #include "shared/lpv_inject_vpl.glsl"
 
 void main() {
-  uint block = lpv.info.w;
+  uint block = lpv.sizes.y;
   uint vpls_per_side = lpv.sizes.x / block;
   uvec3 id = gl_GlobalInvocationID;
   bool in_range = id.x < vpls_per_side && id.y < vpls_per_side;

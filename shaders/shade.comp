@@ -14,7 +14,7 @@ layout(local_size_x = SHADE_GROUP_X, local_size_y = SHADE_GROUP_Y) in;
 // kinds of light source it lacks) would cost every pixel. The cascade count makes the
 // cascade loops ones of constant length, which the compiler unrolls: with one cascade at
 // 512x512 the pass took 12.5 -> 9.0 ms (commit e70855a).
-layout(constant_id = 0) const uint CASCADES = 1u;  // of indirect light (GpuLpv::info.x); 0: none
+layout(constant_id = 0) const uint CASCADES = 1u;  // of indirect light; 0: none
 const bool WITH_INDIRECT = CASCADES > 0u;
 layout(constant_id = 1) const uint VIEW = VIEW_FINAL;  // VIEW_*
 layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits of this frame's lights

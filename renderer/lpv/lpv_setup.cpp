@@ -101,13 +101,10 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene
     g.cascades[c].origin = glm::vec4(p.origin, p.cell_size);
     g.cascades[c].dims = glm::uvec4(p.dims, p.dims.x * p.dims.y * p.dims.z);
   }
-  std::uint32_t flags = 0;
-  if (lpv.occlusion) flags |= gpu::LPV_FLAG_OCCLUSION;
-  if (lpv.occlusion && lpv.bounces > 1) flags |= gpu::LPV_FLAG_BOUNCES;
-  g.info = glm::uvec4(std::uint32_t(setup.cascades.size()), std::uint32_t(setup.cascades.size()), flags,
-                      lpv.vpl_downsample);
+  setup.occlusion = lpv.occlusion;
+  setup.bounces = lpv.occlusion && lpv.bounces > 1;
   const std::uint32_t stride = std::max(1u, (image_height + kCameraSurfelRows / 2) / kCameraSurfelRows);
-  g.sizes = glm::uvec4(lpv.rsm_resolution, 0u, stride, 0u);
+  g.sizes = glm::uvec4(lpv.rsm_resolution, lpv.vpl_downsample, stride, 0u);
   g.scales = glm::vec4(flux_units_per_watt(vpl_flux_bound(lights, bounds) + emitted_flux), kGeometryUnitsPerPotential,
                        lpv.intensity, lpv.injection_offset);
   const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);
@@ -121,12 +118,6 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene
     setup.rsm_views.push_back(v);
   }
   return setup;
-}
-
-gpu::GpuLpv no_lpv() {
-  gpu::GpuLpv g{};
-  g.scales.z = 1.0f;
-  return g;
 }
 
 }  // namespace renderer

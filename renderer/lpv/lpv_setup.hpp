@@ -38,6 +38,9 @@ inline constexpr float kGeometryUnitsPerPotential = 1048576.0f;  // 2^20
 
 struct LpvSetup {
   std::vector<CascadePlacement> cascades;
+  // What propagation runs with: blocking by the geometry volume, and the light it reflects.
+  bool occlusion = false;
+  bool bounces = false;
   gpu::GpuLpv gpu{};
   std::vector<gpu::GpuRsmView> rsm_views;
 };
@@ -52,8 +55,5 @@ inline std::uint32_t vpls_per_view_side(const api::Lpv& lpv) { return lpv.rsm_re
 LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene::Bounds& grid_bounds,
                    const std::vector<api::Light>& lights, const std::vector<LightView>& views, double emitted_flux,
                    const CameraSetup& camera, float camera_fov_y_deg, std::uint32_t image_height);
-
-// The GpuLpv of a frame without indirect light (the shading reads no grid).
-gpu::GpuLpv no_lpv();
 
 }  // namespace renderer

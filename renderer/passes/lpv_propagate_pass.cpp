@@ -43,10 +43,9 @@ const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& par
 }
 
 void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
-                              std::uint32_t lpv_flags, const vkx::Buffer& params, const LpvVolumes& volumes) const {
-  const Variant v = (lpv_flags & gpu::LPV_FLAG_BOUNCES)     ? kOccludedBounces
-                    : (lpv_flags & gpu::LPV_FLAG_OCCLUSION) ? kOccluded
-                                                            : kOpen;
+                              bool occlusion, bool bounces, const vkx::Buffer& params,
+                              const LpvVolumes& volumes) const {
+  const Variant v = !occlusion ? kOpen : bounces ? kOccludedBounces : kOccluded;
   const vkx::Pipeline& pipeline = variant(v, params, volumes);
   pipeline.bind(cmd);
   const glm::uvec3 d = volumes.dims;

@@ -12,11 +12,11 @@ class LpvPropagatePass {
   explicit LpvPropagatePass(const vkx::Device& device);
 
   // Expects the injected grid in the first half of volumes.grids, and the geometry volume's
-  // faces when `lpv_flags` (GpuLpv::info.z) has LPV_FLAG_OCCLUSION.
+  // faces when `occlusion` (they block light; with `bounces`, they reflect what they block).
   // Records iterations first .. first + count - 1 (1-based: the ping-pong halves and the
   // start of occlusion follow the iteration number, so a propagation may be cut in chunks).
-  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, std::uint32_t lpv_flags,
-              const vkx::Buffer& params, const LpvVolumes& volumes) const;
+  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, bool occlusion,
+              bool bounces, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
  private:
   enum Variant { kOpen, kOccluded, kOccludedBounces };

@@ -102,10 +102,6 @@ LPV_CONST LPV_GV_SOURCE_RSM = 0u;
 LPV_CONST LPV_GV_SOURCE_CAMERA = 1u;
 LPV_CONST LPV_GV_WORDS = 8u;      // int64 per corner and source: 4 SH, 3 albedo * weight, weight
 
-// Flags in GpuLpv.info.z
-LPV_CONST LPV_FLAG_OCCLUSION = 1u;
-LPV_CONST LPV_FLAG_BOUNCES = 2u;
-
 // Light views of the RSM pass (GpuRsmView.info.y).
 LPV_CONST RSM_VIEW_PERSPECTIVE = 0u;
 LPV_CONST RSM_VIEW_ORTHOGRAPHIC = 1u;
@@ -118,8 +114,7 @@ struct GpuLpvCascade {
 // Everything the LPV passes and the shading read about the volumes of one frame.
 struct GpuLpv {
   GpuLpvCascade cascades[LPV_MAX_CASCADES];
-  uvec4 info;     // x: cascade count (0 = no indirect light); y: cascades the images hold (>= x); z: LPV_FLAG_*; w: VPL downsample
-  uvec4 sizes;    // x: RSM resolution; y: unused; z: camera surfel stride (pixels); w: unused
+  uvec4 sizes;    // x: RSM resolution; y: VPL downsample; z: camera surfel stride (pixels); w: unused
   vec4 scales;    // x: flux fixed-point units per W; y: geometry fixed-point units per unit potential;
                   // z: indirect intensity scale; w: injection offset (cells)
   vec4 camera;    // x: camera pixel footprint at unit depth (m); yzw: unused
