@@ -5,6 +5,8 @@
 #include "shaders/lpv_geometry_inject.comp.h"
 #include "shaders/lpv_geometry_resolve.comp.h"
 
+#include <array>
+
 namespace renderer {
 namespace {
 
@@ -19,20 +21,10 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  for (const bool bounces : {false, true}) {
-    for (const api::Injection injection : {api::Injection::trilinear, api::Injection::nearest}) {
-      const std::array<std::uint32_t, 2> constants{injection == api::Injection::trilinear ? 1u : 0u, bounces ? 1u : 0u};
-      inject_[bounces][std::size_t(injection)] = vkx::Pipeline(
-          device,
-          vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants)),
-          spirv_lpv_geometry_inject_comp, constants);
-    }
-    const std::array<std::uint32_t, 1> with_albedo{bounces ? 1u : 0u};
-    corners_[bounces] = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image}, sizeof(std::uint32_t)),
-                                      spirv_lpv_geometry_corners_comp, with_albedo);
-    resolve_[bounces] = vkx::Pipeline(device, vkx::compute_layout({uniform, image, image}, sizeof(std::uint32_t)),
-                                      spirv_lpv_geometry_resolve_comp, with_albedo);
-  }
+  inject_layout_ =
+      vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants));
+  corners_layout_ = vkx::compute_layout({uniform, buffer, image}, sizeof(std::uint32_t));
+  resolve_layout_ = vkx::compute_layout({uniform, image, image}, sizeof(std::uint32_t));
 }
 
 void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
@@ -40,7 +32,12 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
                                 const LpvVolumes& volumes) const {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
-  const vkx::Pipeline& inject = inject_[sources.bounces][std::size_t(sources.injection)];
+  const std::uint32_t trilinear = sources.injection == api::Injection::trilinear ? 1u : 0u;
+  const std::array<std::uint32_t, 1> with_albedo{sources.bounces ? 1u : 0u};
+  const vkx::Pipeline& inject = inject_.get(2 * with_albedo[0] + trilinear, [&] {
+    return vkx::Pipeline(device_, inject_layout_, spirv_lpv_geometry_inject_comp,
+                         std::array<std::uint32_t, 2>{trilinear, with_albedo[0]});
+  });
   vkx::DescriptorWriter(inject.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .image(1, image, maps.position.view(), general)
@@ -51,8 +48,12 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .image(6, image, camera.albedo.view(), general)
       .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.handle())
       .apply(device_.handle());
-  const vkx::Pipeline& corners = corners_[sources.bounces];
-  const vkx::Pipeline& resolve = resolve_[sources.bounces];
+  const vkx::Pipeline& corners = corners_.get(with_albedo[0], [&] {
+    return vkx::Pipeline(device_, corners_layout_, spirv_lpv_geometry_corners_comp, with_albedo);
+  });
+  const vkx::Pipeline& resolve = resolve_.get(with_albedo[0], [&] {
+    return vkx::Pipeline(device_, resolve_layout_, spirv_lpv_geometry_resolve_comp, with_albedo);
+  });
   vkx::DescriptorWriter(corners.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.handle())

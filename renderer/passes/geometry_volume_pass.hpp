@@ -9,8 +9,6 @@
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
-#include <array>
-
 namespace renderer {
 
 struct GeometrySources {
@@ -30,9 +28,10 @@ class GeometryVolumePass {
 
  private:
   const vkx::Device& device_;
-  std::array<std::array<vkx::Pipeline, 2>, 2> inject_;  // by GeometrySources::bounces, then api::Injection
-  std::array<vkx::Pipeline, 2> corners_;  // by GeometrySources::bounces
-  std::array<vkx::Pipeline, 2> resolve_;
+  vkx::PipelineLayoutDesc inject_layout_, corners_layout_, resolve_layout_;
+  // Made on first use (lavapipe compiles each): inject_ by bounces and injection, the others
+  // by bounces.
+  vkx::PipelineVariants inject_, corners_, resolve_;
 };
 
 }  // namespace renderer

@@ -5,6 +5,8 @@
 #include "shaders/lpv_inject_emitters.comp.h"
 #include "shaders/lpv_inject_resolve.comp.h"
 
+#include <array>
+
 namespace renderer {
 namespace {
 
@@ -26,14 +28,8 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const std::uint32_t push = sizeof(CascadeConstants);
-  for (const api::Injection injection : {api::Injection::trilinear, api::Injection::nearest}) {
-    const std::array<std::uint32_t, 1> trilinear{injection == api::Injection::trilinear ? 1u : 0u};
-    inject_[std::size_t(injection)] = vkx::Pipeline(
-        device, vkx::compute_layout({uniform, image, image, image, buffer, buffer}, push), spirv_lpv_inject_comp, trilinear);
-    emitters_[std::size_t(injection)] =
-        vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, buffer, buffer}, sizeof(EmitterConstants)),
-                      spirv_lpv_inject_emitters_comp, trilinear);
-  }
+  inject_layout_ = vkx::compute_layout({uniform, image, image, image, buffer, buffer}, push);
+  emitters_layout_ = vkx::compute_layout({uniform, buffer, buffer, buffer}, sizeof(EmitterConstants));
   resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image, image, image, image, buffer}, push),
                            spirv_lpv_inject_resolve_comp);
 }
@@ -41,28 +37,49 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
 void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
                            std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes,
                            api::Injection injection) const {
-  const vkx::Pipeline& inject = inject_[std::size_t(injection)];
-  const vkx::Pipeline& emitters = emitters_[std::size_t(injection)];
+  const std::array<std::uint32_t, 1> trilinear{injection == api::Injection::trilinear ? 1u : 0u};
+  const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  if (maps)
+  if (cascade == 0) {
+    vkCmdFillBuffer(cmd, volumes.flux_stats.handle(), 0, VK_WHOLE_SIZE, 0);
+    vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  }
+  if (maps) {
+    const vkx::Pipeline& inject = inject_.get(
+        trilinear[0], [&] { return vkx::Pipeline(device_, inject_layout_, spirv_lpv_inject_comp, trilinear); });
     vkx::DescriptorWriter(inject.descriptor_set())
-        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+        .buffer(0, uniform, params.handle())
         .image(1, image, maps->position.view(), VK_IMAGE_LAYOUT_GENERAL)
         .image(2, image, maps->normal.view(), VK_IMAGE_LAYOUT_GENERAL)
         .image(3, image, maps->flux.view(), VK_IMAGE_LAYOUT_GENERAL)
         .buffer(4, storage, volumes.injected.handle())
         .buffer(5, storage, volumes.flux_stats.handle())
         .apply(device_.handle());
-  if (scene.emitter_count)
+    inject.bind(cmd);
+    inject.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_record(cascade)});
+    const std::uint32_t groups = vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP);
+    vkCmdDispatch(cmd, groups, groups, maps->layers);
+  }
+  if (scene.emitter_count) {  // after the RSM's VPLs: both add to the same integer sums
+    const vkx::Pipeline& emitters = emitters_.get(trilinear[0], [&] {
+      return vkx::Pipeline(device_, emitters_layout_, spirv_lpv_inject_emitters_comp, trilinear);
+    });
     vkx::DescriptorWriter(emitters.descriptor_set())
-        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+        .buffer(0, uniform, params.handle())
         .buffer(1, storage, scene.emitters.handle())
         .buffer(2, storage, volumes.injected.handle())
         .buffer(3, storage, volumes.flux_stats.handle())
         .apply(device_.handle());
+    if (maps) vkx::compute_barrier(cmd);
+    emitters.bind(cmd);
+    emitters.push(cmd, EmitterConstants{cascade, volumes.vpl_flux_record(cascade), scene.emitter_count});
+    vkCmdDispatch(cmd, vkx::group_count(scene.emitter_count, gpu::LPV_EMITTER_GROUP), 1, 1);
+  }
+  vkx::compute_barrier(cmd);
   vkx::DescriptorWriter(resolve_.descriptor_set())
-      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .buffer(0, uniform, params.handle())
       .buffer(1, storage, volumes.injected.handle())
       .image(2, image, volumes.grids.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(3, image, volumes.accumulated[0].view(), VK_IMAGE_LAYOUT_GENERAL)
@@ -70,25 +87,6 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
       .image(5, image, volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL)
       .buffer(6, storage, volumes.flux_stats.handle())
       .apply(device_.handle());
-
-  if (cascade == 0) {
-    vkCmdFillBuffer(cmd, volumes.flux_stats.handle(), 0, VK_WHOLE_SIZE, 0);
-    vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-  }
-  if (maps) {
-    inject.bind(cmd);
-    inject.push(cmd, CascadeConstants{cascade, volumes.vpl_flux_record(cascade)});
-    const std::uint32_t groups = vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP);
-    vkCmdDispatch(cmd, groups, groups, maps->layers);
-  }
-  if (scene.emitter_count) {  // after the RSM's VPLs: both add to the same integer sums
-    if (maps) vkx::compute_barrier(cmd);
-    emitters.bind(cmd);
-    emitters.push(cmd, EmitterConstants{cascade, volumes.vpl_flux_record(cascade), scene.emitter_count});
-    vkCmdDispatch(cmd, vkx::group_count(scene.emitter_count, gpu::LPV_EMITTER_GROUP), 1, 1);
-  }
-  vkx::compute_barrier(cmd);
   resolve_.bind(cmd);
   resolve_.push(cmd, CascadeConstants{cascade, volumes.grid_flux_record(cascade, 0)});
   const glm::uvec3 d = volumes.dims;

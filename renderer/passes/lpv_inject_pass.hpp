@@ -10,8 +10,6 @@
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
-#include <array>
-
 namespace renderer {
 
 class LpvInjectPass {
@@ -26,8 +24,10 @@ class LpvInjectPass {
 
  private:
   const vkx::Device& device_;
-  std::array<vkx::Pipeline, 2> inject_;    // by api::Injection
-  std::array<vkx::Pipeline, 2> emitters_;  // by api::Injection
+  vkx::PipelineLayoutDesc inject_layout_, emitters_layout_;
+  // Made on first use (lavapipe compiles each), by api::Injection: a scene without emissive
+  // surfaces never compiles the emitters' shader.
+  vkx::PipelineVariants inject_, emitters_;
   vkx::Pipeline resolve_;
 };
 
