@@ -6,7 +6,6 @@
 
 #include <glm/vec3.hpp>
 
-
 namespace renderer {
 namespace {
 
