@@ -5,6 +5,7 @@
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <map>
 #include <optional>
 #include <string>
@@ -29,6 +30,15 @@ std::map<std::string, double> parse_server_timing(const std::string& header);
 // code and field as given (field "" = no field), a non-empty message.
 ::testing::AssertionResult is_json_error(const httplib::Result& result, int status, const std::string& code,
                                          const std::string& field);
+
+// Wall milliseconds `work()` takes: tests that need a deadline between two amounts of work
+// time the first on this machine instead of assuming its speed.
+template <class Work>
+double elapsed_ms(Work&& work) {
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
 
 // Every key of `example` is in `actual` with a value of the same JSON type, recursively;
 // array elements of `actual` are compared with the example's first element.
