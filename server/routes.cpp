@@ -222,9 +222,10 @@ void install_routes(httplib::Server& http, Service& service) {
   http.set_pre_routing_handler([&service](const httplib::Request& request, httplib::Response& response) {
     start_request_clock();
     if (service.options.token.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    if (const Route* route = route_of(request.path); route && route->open)
-      return httplib::Server::HandlerResponse::Unhandled;
+    // The token first: a request that has it never runs the route regexes here.
     if (bearer_token_matches(request.get_header_value("Authorization"), service.options.token))
+      return httplib::Server::HandlerResponse::Unhandled;
+    if (const Route* route = route_of(request.path); route && route->open)
       return httplib::Server::HandlerResponse::Unhandled;
     send_error(response, {401, "unauthorized", "this server needs 'Authorization: Bearer <token>'", ""});
     response.set_header("WWW-Authenticate", "Bearer");
