@@ -22,7 +22,7 @@ constexpr std::array<std::string_view, 4> case_keys{"name", "kind", "request", "
 constexpr std::uint32_t max_suite_version = 1000000;
 
 // Suite names are shown in report titles and tables: the scene-name alphabet.
-std::string read_suite_name(const Field& f) { return as_name(f, limits::max_bench_name_bytes, true); }
+std::string read_suite_name(const Field& f) { return as_name(f, limits::max_bench_name_bytes); }
 
 // Case names are shown in tables and reports: printable ASCII, no '|' (a Markdown cell).
 std::string read_case_name(const Field& f) {

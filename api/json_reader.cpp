@@ -99,16 +99,16 @@ std::string as_string(const Field& f, std::size_t max_bytes) {
   return f.value->get<std::string>();
 }
 
-std::string as_name(const Field& f, std::size_t max_bytes, bool leading_dot) {
-  const std::string expectation = "a string of 1 to " + std::to_string(max_bytes) +
-                                  " characters from [A-Za-z0-9._-]" + (leading_dot ? "" : ", not starting with '.'");
+std::string as_name(const Field& f, std::size_t max_bytes) {
+  const std::string expectation =
+      "a string of 1 to " + std::to_string(max_bytes) + " characters from [A-Za-z0-9._-], not starting with '.'";
   if (!f.value->is_string()) f.reject(expectation);
   const std::string& name = f.value->get_ref<const std::string&>();
   const bool valid_chars = std::ranges::all_of(name, [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '_' ||
            c == '-';
   });
-  if (name.empty() || name.size() > max_bytes || (!leading_dot && name.front() == '.') || !valid_chars)
+  if (name.empty() || name.size() > max_bytes || name.front() == '.' || !valid_chars)
     f.reject(expectation);
   return name;
 }

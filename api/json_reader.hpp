@@ -131,9 +131,9 @@ float as_float(const Field& f, float lo, float hi);
 double as_double(const Field& f, double lo, double hi);
 // A string of at most `max_bytes` bytes.
 std::string as_string(const Field& f, std::size_t max_bytes);
-// A name of 1 to `max_bytes` characters from [A-Za-z0-9._-] (scenes, suites: safe in paths and
-// reports); with `leading_dot` false not starting with '.', which would allow "." and "..".
-std::string as_name(const Field& f, std::size_t max_bytes, bool leading_dot);
+// A name of 1 to `max_bytes` characters from [A-Za-z0-9._-], not starting with '.' (which
+// would allow "." and ".."): scenes, suites; safe in paths and reports.
+std::string as_name(const Field& f, std::size_t max_bytes);
 bool as_bool(const Field& f);
 // The elements of an array of at most `max_size` elements.
 std::vector<Field> as_array(const Field& f, std::size_t max_size);

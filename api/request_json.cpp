@@ -67,7 +67,7 @@ glm::vec3 as_direction(const Field& f) {
 glm::vec3 as_color(const Field& f) { return as_vec3(f, 0.0f, max_color); }
 
 // Scene names name files of the scene store: no leading '.'.
-std::string as_scene_name(const Field& f) { return as_name(f, max_scene_name, false); }
+std::string as_scene_name(const Field& f) { return as_name(f, max_scene_name); }
 
 // ---- the schema --------------------------------------------------------------------
 

@@ -42,6 +42,7 @@ TEST(BenchSuiteFile, ErrorsNameTheField) {
   EXPECT_EQ(suite_error(R"({"version": 1, "cases": [{"name": "a", "request": {}}]})"), "suite");
   EXPECT_EQ(suite_error(R"({"suite": "s", "cases": [{"name": "a", "request": {}}]})"), "version");
   EXPECT_EQ(suite_error(R"({"suite": "a b", "version": 1, "cases": [{"name": "a", "request": {}}]})"), "suite");
+  EXPECT_EQ(suite_error(R"({"suite": "..", "version": 1, "cases": [{"name": "a", "request": {}}]})"), "suite");
   EXPECT_EQ(suite_error(R"({"suite": "s", "version": 1, "cases": []})"), "cases");
   EXPECT_EQ(suite_error(R"({"suite": "s", "version": 1, "repetitions": 0, "cases": [{"name": "a", "request": {}}]})"),
             "repetitions");
