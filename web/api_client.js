@@ -64,7 +64,7 @@ export async function uploadScene(file) {
 }
 
 // The frame as PNG with its stats from the X-Render-Stats header, rather than the JSON
-// answer: a third fewer bytes than base64, and a blob the page shows as it is. The header
+// answer: a quarter fewer bytes than its base64, and a blob the page shows as it is. The header
 // leaves out the LPV flux statistics when they are long; the page shows none of them.
 export async function render(request, signal) {
   const response = await call('/v1/render', { method: 'POST', body: request, accept: 'image/png', signal });

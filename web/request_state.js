@@ -1,9 +1,10 @@
 // The render request the page explores: exactly the JSON body of POST /v1/render. It holds
 // only what differs from the API's defaults, so links and curl commands stay short. Controls
 // read values through `get`, which falls back to the defaults below and to the scene's own
-// camera and lights (GET /v1/scenes). DEFAULTS copies the defaults of api/openapi.yaml (the
-// server's); a value equal to its copy is left out of the request, so the two must agree
-// (tests/api/test_web_defaults.cpp reads this object and checks it against the parser).
+// camera and lights (GET /v1/scenes). DEFAULTS copies the request parser's defaults
+// (api/request_json.cpp, documented in api/openapi.yaml); a value equal to its copy is left
+// out of the request, so the two must agree (tests/api/test_web_defaults.cpp reads this
+// object and checks it against the parser).
 
 const DEFAULTS = {
   scene: 'cornell-box',

@@ -20,7 +20,7 @@ struct ShadeInputs {
   const ShadowAtlas& atlas;
   const vkx::Buffer& lpv;          // gpu::GpuLpv
   const LpvVolumes& volumes;       // the cascades' accumulated SH (not read without indirect light)
-  std::uint32_t cascades;          // of indirect light to shade (GpuLpv::info.x; 0: the LPV did not run)
+  std::uint32_t cascades;          // of indirect light to shade (0: the LPV did not run)
   std::uint32_t view;              // gpu::VIEW_*
   std::uint32_t light_kinds;       // gpu::LIGHTS_* bits (light_kinds())
   std::uint32_t light_count;       // of the buffer `lights`

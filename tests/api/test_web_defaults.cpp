@@ -11,6 +11,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace {
@@ -26,8 +27,8 @@ nlohmann::json web_defaults() {
   const std::size_t end = source.find("\n};", start);
   if (start == std::string::npos || end == std::string::npos)
     throw std::runtime_error("no `const DEFAULTS = {...};` in web/request_state.js");
-  std::string literal = source.substr(start + std::string("const DEFAULTS = ").size(), end + 2 - start -
-                                                                                          std::string("const DEFAULTS = ").size());
+  const std::size_t open = source.find('{', start);
+  std::string literal = source.substr(open, end + 2 - open);
   literal = std::regex_replace(literal, std::regex(R"(([{,]\s*)([A-Za-z_][A-Za-z0-9_]*)\s*:)"), "$1\"$2\":");
   literal = std::regex_replace(literal, std::regex("'([^']*)'"), "\"$1\"");
   literal = std::regex_replace(literal, std::regex(R"(,(\s*[}\]]))"), "$1");

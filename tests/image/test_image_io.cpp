@@ -327,7 +327,7 @@ float read_f32_le(const uint8_t* p) {
   return std::bit_cast<float>(bits);
 }
 
-TEST(Pfm, DecodesWhatItEncodesAndRejectsWhatItDoesNotWrite) {
+TEST(Pfm, DecodesWhatItEncodesAndBigEndianAndRejectsTruncatedAndGreyFiles) {
   const RgbaF32Image img = float_test_image(5, 3, 7);
   const std::vector<uint8_t> pfm = image::encode_pfm(img);
   const RgbaF32Image back = image::decode_pfm(pfm);
@@ -335,6 +335,12 @@ TEST(Pfm, DecodesWhatItEncodesAndRejectsWhatItDoesNotWrite) {
   EXPECT_EQ(back.height, img.height);
   for (size_t i = 0; i < img.pixels.size(); ++i)
     EXPECT_EQ(back.pixels[i], i % 4 == 3 ? 1.0f : img.pixels[i]) << i;  // PFM has no alpha
+  // A positive scale means big-endian floats (encode_pfm writes little-endian ones only).
+  std::string big_endian = "PF\n1 1\n1.0\n";
+  for (const float v : {1.0f, 2.0f, 3.0f})
+    for (int shift = 24; shift >= 0; shift -= 8) big_endian.push_back(char(std::bit_cast<uint32_t>(v) >> shift));
+  const RgbaF32Image one = image::decode_pfm(std::span(reinterpret_cast<const uint8_t*>(big_endian.data()), big_endian.size()));
+  EXPECT_EQ(one.pixels, (std::vector<float>{1.0f, 2.0f, 3.0f, 1.0f}));
   const std::vector<uint8_t> truncated(pfm.begin(), pfm.end() - 4);
   EXPECT_THROW(image::decode_pfm(truncated), std::invalid_argument);
   const std::string grey = "Pf\n1 1\n-1.0\n0000";

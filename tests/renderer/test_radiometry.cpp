@@ -178,7 +178,7 @@ TEST_F(Radiometry, EmissiveSurfaceShowsItsEmittedRadiance) {
   point.intensity = 3.0f;
   for (const std::vector<api::Light>& lights : {std::vector<api::Light>{}, std::vector<api::Light>{point}}) {
     for (const api::View view : {api::View::final_, api::View::direct}) {
-      SCOPED_TRACE(lights.size());
+      SCOPED_TRACE(std::to_string(lights.size()) + " lights, view " + api::to_string(view));
       api::RenderRequest request = gpu_test::linear_request(kSize, kSize, camera_facing_origin_from({0.3f, 0.2f, 3.0f}));
       request.output.view = view;
       request.lights = lights;
