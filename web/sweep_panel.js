@@ -7,6 +7,7 @@
 import { sweep } from './api_client.js';
 import { describeSettings, sweepPlot } from './sweep_plot.js';
 import { formatMs } from './svg.js';
+import { LatestRun } from './latest_run.js';
 
 const LIST_PARAMETERS = ['grid', 'iterations', 'cascades', 'rsm', 'vpl_downsample', 'bounces'];
 
@@ -16,7 +17,7 @@ function parseList(text) {
 }
 
 export class SweepPanel {
-  #controller = null;
+  #run = new LatestRun();
   #rows = [];
 
   constructor({ elements, state, errors }) {
@@ -25,7 +26,10 @@ export class SweepPanel {
       event.preventDefault();
       this.run();
     });
-    elements.stop.addEventListener('click', () => this.#controller?.abort());
+    elements.stop.addEventListener('click', () => {
+      this.#run.stop();
+      this.#progress('Stopped', elements.progress.value);
+    });
   }
 
   #body() {
@@ -52,28 +56,15 @@ export class SweepPanel {
   }
 
   async run() {
-    this.#controller?.abort();
-    const controller = new AbortController();
-    this.#controller = controller;
     const { elements } = this;
     const body = this.#body();
     this.#rows = [];
-    this.errors.clear();
     this.#draw(body.axis);
-    elements.run.disabled = true;
-    elements.stop.disabled = false;
-    this.#progress('Tracing the reference', 0);
-    try {
-      await sweep(body, controller.signal, (event) => this.#onEvent(event, body.axis));
-    } catch (error) {
-      if (error.name === 'AbortError') this.#progress('Stopped', elements.progress.value);
-      else this.errors.show(error);
-    } finally {
-      if (this.#controller === controller) {
-        elements.run.disabled = false;
-        elements.stop.disabled = true;
-      }
-    }
+    elements.progress.value = 0;
+    await this.#run.start(
+      { button: elements.run, stopButton: elements.stop, status: elements.progressLabel, errors: this.errors, busyText: 'Tracing the reference' },
+      (signal) => sweep(body, signal, (event) => this.#onEvent(event, body.axis)),
+    );
   }
 
   #onEvent(event, axis) {

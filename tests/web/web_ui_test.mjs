@@ -331,6 +331,8 @@ test('the error against the reference, and a sweep whose points load their setti
   await page.locator('#sweep-run').click();
   await page.waitForFunction(() => document.getElementById('sweep-progress-label').textContent.startsWith('Done'), null, { timeout: 120_000 });
   assert.equal(await page.locator('#sweep-progress').evaluate((p) => p.value), 1);
+  assert.equal(await page.locator('#sweep-run').isDisabled(), false, 'Run is back');
+  assert.equal(await page.locator('#sweep-stop').isDisabled(), true, 'nothing to stop');
   assert.equal(await page.locator('#sweep-plot circle').count(), 3, 'LPV off, 8³ and 16³');
   assert.ok(await page.locator('#sweep-plot circle.pareto').count() >= 1, 'the Pareto front is marked');
   await screenshot(page, '07-sweep');
@@ -339,6 +341,17 @@ test('the error against the reference, and a sweep whose points load their setti
   const loaded = await frameShown(page, (request) => request.lpv?.grid === 16 && request.lpv?.iterations === 4);
   assert.equal(loaded.output.width, 128, 'only the LPV settings change');
   assert.equal(await page.locator('#lpv-grid').inputValue(), '16');
+
+  // A long sweep stopped after its first rows: the label says so and stays, Run comes back.
+  await page.locator('#sweep-grid').fill('8, 16, 24, 32');
+  await page.locator('#sweep-iterations').fill('1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16');
+  await page.locator('#sweep-run').click();
+  await page.waitForFunction(() => document.getElementById('sweep-progress-label').textContent.startsWith('Rendered'), null, { timeout: 60_000 });
+  await page.locator('#sweep-stop').click();
+  await page.waitForTimeout(500);
+  assert.equal(await page.locator('#sweep-progress-label').textContent(), 'Stopped');
+  assert.equal(await page.locator('#sweep-run').isDisabled(), false, 'Run is back after Stop');
+  assert.equal(await page.locator('#sweep-stop').isDisabled(), true, 'Stop is off after Stop');
   assert.deepEqual(errors, []);
 });
 
