@@ -15,8 +15,9 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 request=${1:?usage: scripts/profile-jit.sh REQUEST.json [TOP]}
 top=${2:-8}
 for tool in perf gdb setarch python3; do
-  command -v "$tool" >/dev/null || { echo "profile-jit.sh: needs $tool (apt-get install linux-perf gdb)" >&2; exit 2; }
+  command -v "$tool" >/dev/null || { echo "profile-jit.sh: needs $tool (Debian: linux-perf, gdb, util-linux, python3)" >&2; exit 2; }
 done
+[[ "$top" =~ ^[0-9]+$ ]] || { echo "profile-jit.sh: TOP must be a whole number, not '$top'" >&2; exit 2; }
 [ -r "$request" ] || { echo "profile-jit.sh: cannot read $request" >&2; exit 2; }
 bin="$root/build/lpv-render"
 [ -x "$bin" ] || "$root/scripts/build.sh"
@@ -24,15 +25,25 @@ request=$(realpath "$request")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-setarch -R perf record -q -o "$work/perf.data" "$bin" "$request" -o "$work/frame.png" 2>&1 | sed -n 1,2p  # what was profiled
+# Both runs compile every shader cold (no Mesa shader cache, no pipeline cache), in the same
+# order, so the JIT code lands at the same addresses in both.
+export MESA_SHADER_CACHE_DISABLE=true LPV_PIPELINE_CACHE=off
+if ! setarch -R perf record -q -o "$work/perf.data" "$bin" "$request" -o "$work/frame.png" >"$work/render.log" 2>&1 ||
+  [ ! -s "$work/frame.png" ]; then
+  echo "profile-jit.sh: the profiled render failed:" >&2
+  cat "$work/render.log" >&2
+  exit 1
+fi
+sed -n 1,2p "$work/render.log"  # what was profiled
 # Samples as "count address": all of them, and those in JIT code (which perf, having no
 # symbols for it, files under a /tmp/perf-PID.map it was never given).
 perf script -i "$work/perf.data" -F ip,dso 2>/dev/null >"$work/script"
 awk '{print $1}' "$work/script" | sort | uniq -c >"$work/samples"
 awk '$2 ~ /perf-[0-9]+\.map/ {print $1}' "$work/script" | sort | uniq -c >"$work/jit-samples"
 
-# JIT code pages holding at least 0.5% of the samples.
-python3 - "$work" <<'EOF' >"$work/pages"
+# Address ranges to disassemble: the JIT code pages holding at least 0.5% of the samples,
+# neighbours merged (a range starting inside an instruction decodes wrongly for a few bytes).
+python3 - "$work" <<'EOF' >"$work/ranges"
 import sys
 work = sys.argv[1]
 total = sum(int(line.split()[0]) for line in open(f"{work}/samples"))
@@ -40,17 +51,22 @@ pages = {}
 for c, a in (line.split() for line in open(f"{work}/jit-samples")):
     page = int(a, 16) & ~0xfff
     pages[page] = pages.get(page, 0) + int(c)
-for page, c in sorted(pages.items()):
-    if c >= 0.005 * total:
-        print(f"0x{page:x}")
+ranges = []
+for page in sorted(p for p, c in pages.items() if c >= 0.005 * total):
+    if ranges and ranges[-1][1] == page:
+        ranges[-1][1] = page + 0x1000
+    else:
+        ranges.append([page, page + 0x1000])
+for start, end in ranges:
+    print(f"0x{start:x},0x{end:x}")
 EOF
-[ -s "$work/pages" ] || { echo "profile-jit.sh: no samples in JIT code" >&2; exit 1; }
+[ -s "$work/ranges" ] || { echo "profile-jit.sh: no samples in JIT code" >&2; exit 1; }
 {
   echo "set pagination off"
   echo "set breakpoint pending on"
   echo "break vkDestroyPipeline"
-  echo "run $request -o $work/frame.png >/dev/null"
-  while read -r page; do echo "disassemble $page,$page+0x1000"; done <"$work/pages"
+  echo "run '$request' -o '$work/frame.png' >/dev/null"
+  while read -r range; do echo "disassemble $range"; done <"$work/ranges"
   echo "kill"
 } >"$work/gdb-commands"
 gdb -q -batch -x "$work/gdb-commands" "$bin" >"$work/disassembly" 2>&1 || true
@@ -67,7 +83,8 @@ for line in open(f"{work}/disassembly"):
         code.append((int(m.group(1), 16), m.group(2).strip()))
 code.sort()
 if not code:
-    sys.exit("profile-jit.sh: gdb disassembled nothing (did lpv-render destroy a pipeline?)")
+    tail = "".join(open(f"{work}/disassembly").readlines()[-10:])
+    sys.exit("profile-jit.sh: gdb disassembled nothing (did lpv-render destroy a pipeline?); gdb said:\n" + tail)
 by_mnemonic = collections.Counter()
 blamed = collections.Counter()  # index into code of the instruction each sample is counted for
 for i in range(1, len(code)):
@@ -77,6 +94,9 @@ for i in range(1, len(code)):
         blamed[i - 1] += c
 jit = sum(by_mnemonic.values())
 print(f"{total} samples, {jit} ({100 * jit / total:.0f}%) in the JIT code disassembled")
+if jit < 0.5 * sum(counts.values()):
+    print("warning: most JIT samples fell outside the disassembled instructions: the code may not be at "
+          "the same addresses in the gdb run, so these shares are not to be trusted")
 print("by instruction: " + "  ".join(f"{k} {100 * v / jit:.1f}%" for k, v in by_mnemonic.most_common(24)))
 for i, c in blamed.most_common(top):
     print(f"\n{100 * c / total:.2f}% at 0x{code[i][0]:x}:")
