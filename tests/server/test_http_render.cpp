@@ -80,6 +80,10 @@ TEST(HttpRender, AcceptJsonReturnsStatsAndTheImageAsBase64) {
   // compress than the bytes they would save.
   EXPECT_EQ(r->get_header_value("Content-Type"), "application/json; charset=utf-8");
   EXPECT_EQ(r->get_header_value("Content-Encoding"), "");
+  // The control: the same client sees the encoding of a JSON answer without images.
+  const auto scenes = http->Get("/v1/scenes", {{"Accept-Encoding", "br, gzip"}});
+  ASSERT_TRUE(scenes);
+  EXPECT_NE(scenes->get_header_value("Content-Encoding"), "");
   const auto body = nlohmann::json::parse(r->body);
   EXPECT_EQ(body["stats"]["width"], 64);
   EXPECT_EQ(body["image"]["media_type"], "image/png");
