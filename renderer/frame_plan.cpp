@@ -166,8 +166,6 @@ FramePlan plan_frame(const PlanInputs& in) {
   const api::View view = request.output.view;
   const std::string view_name = "view '" + api::to_string(view) + "'";
   plan.run[kGBuffer] = plan.run[kShade] = plan.run[kReadback] = true;
-  plan.run[kTonemap] = in.display_readback;
-  if (!plan.run[kTonemap]) plan.reason[kTonemap] = "no 8-bit image requested";
 
   // Lights: those that emit get views, unless (auto) they cannot reach the scene.
   bool any_drawn = false, any_shadowed = false;

@@ -27,12 +27,11 @@ enum Pass : std::uint32_t {
   kGeometryVolume,
   kPropagate,
   kShade,
-  kTonemap,
   kReadback,
   kPassCount
 };
 inline constexpr std::array<const char*, kPassCount> kPassNames = {
-    "shadow", "rsm", "gbuffer", "inject", "geometry_volume", "propagate", "shade", "tonemap", "readback"};
+    "shadow", "rsm", "gbuffer", "inject", "geometry_volume", "propagate", "shade", "readback"};
 inline bool is_grid_pass(std::uint32_t p) { return p == kInject || p == kGeometryVolume || p == kPropagate; }
 
 bool needs_direct_light(api::View v);
@@ -53,7 +52,6 @@ struct PlanInputs {
   const std::vector<api::Light>& lights;  // the request's lights, resolved against the scene's
   const scene::Scene& scene;
   std::uint32_t emitters = 0;  // emissive surfels of the scene
-  bool display_readback = false;  // an 8-bit image is wanted (tonemapping)
   glm::mat4 camera_view_proj{1.0f};
 };
 

@@ -8,7 +8,6 @@ static_assert(sizeof(GpuLight) == 80);
 static_assert(sizeof(GpuMaterial) == 48);
 static_assert(sizeof(GpuEmitter) == 48);
 static_assert(sizeof(GpuFrame) == 144);
-static_assert(sizeof(GpuTonemapParams) == 16);
 static_assert(sizeof(GpuLpvCascade) == 32);
 static_assert(sizeof(GpuLpv) == 176);
 static_assert(sizeof(GpuRsmView) == 96);

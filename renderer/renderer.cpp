@@ -15,7 +15,6 @@
 #include "renderer/passes/rsm_pass.hpp"
 #include "renderer/passes/shade_pass.hpp"
 #include "renderer/passes/shadow_pass.hpp"
-#include "renderer/passes/tonemap_pass.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene_cache.hpp"
 #include "renderer/vulkan/vk_check.hpp"
@@ -99,7 +98,6 @@ struct Renderer::Impl {
         geometry(device),
         propagate(device),
         shade(device),
-        tonemap(device),
         timer(device),
         scene_source(std::move(options.scenes)),
         scenes(options.scene_cache_bytes) {
@@ -124,7 +122,6 @@ struct Renderer::Impl {
   GeometryVolumePass geometry;
   LpvPropagatePass propagate;
   ShadePass shade;
-  TonemapPass tonemap;
   PassTimer timer;
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandBuffer commands = VK_NULL_HANDLE;
@@ -280,7 +277,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const CameraSetup camera = setup_camera(camera_request, scene.bounds, float(out.width) / float(out.height));
   auto plan_start = Clock::now();
   FramePlan plan =
-      plan_frame({request, lights, scene, gpu.emitter_count, (readback & kReadbackDisplay) != 0, camera.view_proj});
+      plan_frame({request, lights, scene, gpu.emitter_count, camera.view_proj});
   double plan_ms = ms_since(plan_start);
   const LightSetup light_setup =
       setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn, plan.light_shadowed);
@@ -336,7 +333,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   for (std::uint32_t c = 0; c < cascades; ++c)
     for (Pass p : {kInject, kGeometryVolume, kPropagate})
       if (plan.run[p]) schedule.emplace_back(p, c);
-  for (Pass p : {kShade, kTonemap, kReadback})
+  for (Pass p : {kShade, kReadback})
     if (plan.run[p]) schedule.emplace_back(p, 0);
   RenderResult result;
   std::vector<double> record_ms, wait_ms, readback_ms, wall_ms, total_gpu_ms;
@@ -573,13 +570,12 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
                     gpu_view(frame.request.output.view),
                     // Views without direct light never read the lights: one pipeline serves every light setup.
                     lit ? light_kinds(frame.lights.lights, frame.gpu.emissive) : 0u,
-                    lit ? std::uint32_t(frame.lights.lights.size()) : 0u});
+                    lit ? std::uint32_t(frame.lights.lights.size()) : 0u,
+                    (frame.readback & kReadbackLinear ? gpu::SHADE_OUTPUT_LINEAR : 0u) |
+                        (frame.readback & kReadbackDisplay ? gpu::SHADE_OUTPUT_DISPLAY : 0u),
+                    frame.request.output.tonemap});
       break;
     }
-    case kTonemap:
-      tonemap.record(cmd, *targets, frame.request.output.tonemap,
-                     frame.request.output.view != api::View::normal && frame.request.output.view != api::View::depth);
-      break;
     case kReadback: {
       auto copy = [&](const vkx::Buffer& from, const vkx::Buffer& to) {
         const VkBufferCopy region{0, 0, from.size()};

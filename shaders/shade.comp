@@ -1,7 +1,10 @@
 #version 450
 // Shading of the G-buffer: direct light from punctual lights with shadow maps, plus the
-// indirect light of the Light Propagation Volumes. Output: one linear RGBA float per pixel
-// (radiance * 2^exposure for the lit views, the raw quantity for the data views).
+// indirect light of the Light Propagation Volumes. Outputs, as the frame asks: one linear
+// RGBA float per pixel (radiance * 2^exposure for the lit views, the raw quantity for the
+// data views) and one display-encoded RGBA8 pixel. Encoding here instead of in a pass of
+// its own saves that pass's reading back of the linear image: 1.9 ms of a 512^2 frame on
+// lavapipe, and a PNG frame writes no linear image at all.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
@@ -22,6 +25,8 @@ layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits o
 // and reads each light at a constant offset (direct shading 5.7 -> 4.5 ms at 512x512,
 // commit 9af103d).
 layout(constant_id = 3) const uint LIGHT_COUNT = SHADE_LIGHTS_FROM_FRAME;
+layout(constant_id = 4) const uint OUTPUTS = SHADE_OUTPUT_LINEAR;  // SHADE_OUTPUT_* bits
+layout(constant_id = 5) const uint TONE_CURVE = TONEMAP_NONE;      // of the display image
 const bool ANY_DIRECTIONAL = (LIGHT_KINDS & LIGHTS_DIRECTIONAL) != 0u;
 const bool ANY_POSITIONAL = (LIGHT_KINDS & LIGHTS_POSITIONAL) != 0u;
 const bool ANY_SHADOWED = (LIGHT_KINDS & LIGHTS_SHADOWED) != 0u;
@@ -30,6 +35,7 @@ const bool ANY_EMISSIVE = (LIGHT_KINDS & LIGHTS_EMISSIVE) != 0u;
 #define LIGHTS_MAY_HAVE_CONE ((LIGHT_KINDS & LIGHTS_SPOT_CONE) != 0u)
 #define LIGHTS_MAY_HAVE_RANGE ((LIGHT_KINDS & LIGHTS_RANGE) != 0u)
 #include "shared/lights.glsl"
+#include "shared/display_encode.glsl"
 
 layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2D g_position;
@@ -39,7 +45,7 @@ layout(set = 0, binding = 4) uniform sampler2DArrayShadow shadow_maps;
 layout(std430, set = 0, binding = 5) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, set = 0, binding = 6) readonly buffer ShadowViews { mat4 shadow_view_proj[]; };
 layout(std430, set = 0, binding = 7) readonly buffer Materials { GpuMaterial materials[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer Image { vec4 pixels[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer Linear { vec4 linear_pixels[]; };
 layout(std140, set = 0, binding = 9) uniform Lpv { GpuLpv lpv; };
 // Read with imageLoad and filtered here: lavapipe's trilinear sampler lookups cost more than
 // the eight loads and weights written out (the pass took 19 ms at 512^2 with them, 17 without,
@@ -47,6 +53,7 @@ layout(std140, set = 0, binding = 9) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = 10, rgba32f) uniform readonly image3D accumulated_r;
 layout(set = 0, binding = 11, rgba32f) uniform readonly image3D accumulated_g;
 layout(set = 0, binding = 12, rgba32f) uniform readonly image3D accumulated_b;
+layout(std430, set = 0, binding = 13) writeonly buffer Display { uint display_pixels[]; };
 
 const float PI = 3.14159265358979;
 
@@ -155,41 +162,40 @@ vec3 lpv_cell_view(vec3 p) {
   return vec3(0.0);
 }
 
-void main() {
-  uvec2 size = frame.size_view.xy;
-  uvec2 pixel = gl_GlobalInvocationID.xy;
-  if (pixel.x >= size.x || pixel.y >= size.y) return;
-  uint index = pixel.y * size.x + pixel.x;
-
+// What the frame shows at a pixel: a lit view's radiance * 2^exposure, or a data view's value;
+// alpha is the coverage, 0 where no surface is (black background).
+vec4 view_value(uvec2 pixel) {
   vec4 position = imageLoad(g_position, ivec2(pixel));
-  if (position.w == 0.0) {  // no surface: black background
-    pixels[index] = vec4(0.0);
-    return;
-  }
+  if (position.w == 0.0) return vec4(0.0);
   vec3 p = position.xyz;
   vec3 n = normalize(imageLoad(g_normal, ivec2(pixel)).xyz);
   vec3 albedo = imageLoad(g_albedo, ivec2(pixel)).rgb;
   uint material = uint(position.w) - 1u;
 
   const uint view = VIEW;
-  vec3 value;
-  if (view == VIEW_ALBEDO) {
-    value = albedo;
-  } else if (view == VIEW_NORMAL) {
-    value = n * 0.5 + 0.5;
-  } else if (view == VIEW_DEPTH) {
+  if (view == VIEW_ALBEDO) return vec4(albedo, 1.0);
+  if (view == VIEW_NORMAL) return vec4(n * 0.5 + 0.5, 1.0);
+  if (view == VIEW_DEPTH) {
     float depth = dot(p - frame.camera_position.xyz, frame.camera_forward.xyz);
-    value = vec3(clamp((depth - frame.depth_range.x) / (frame.depth_range.y - frame.depth_range.x), 0.0, 1.0));
-  } else if (view == VIEW_LPV) {
-    value = WITH_INDIRECT ? lpv_cell_view(p) * frame.exposure.x : vec3(0.0);
-  } else {
-    vec3 e = vec3(0.0);
-    if (view != VIEW_INDIRECT)
-      for (uint i = 0u; i < (LIGHT_COUNT == SHADE_LIGHTS_FROM_FRAME ? frame.size_view.w : LIGHT_COUNT); ++i)
-        e += irradiance(lights[i], p, n);
-    if (WITH_INDIRECT && view != VIEW_DIRECT) e += lpv.scales.z * indirect_irradiance(p, n);
-    vec3 emitted = ANY_EMISSIVE && view != VIEW_INDIRECT ? materials[material].emissive.rgb : vec3(0.0);
-    value = (albedo / PI * e + emitted) * frame.exposure.x;
+    return vec4(vec3(clamp((depth - frame.depth_range.x) / (frame.depth_range.y - frame.depth_range.x), 0.0, 1.0)), 1.0);
   }
-  pixels[index] = vec4(value, 1.0);
+  if (view == VIEW_LPV) return vec4(WITH_INDIRECT ? lpv_cell_view(p) * frame.exposure.x : vec3(0.0), 1.0);
+  vec3 e = vec3(0.0);
+  if (view != VIEW_INDIRECT)
+    for (uint i = 0u; i < (LIGHT_COUNT == SHADE_LIGHTS_FROM_FRAME ? frame.size_view.w : LIGHT_COUNT); ++i)
+      e += irradiance(lights[i], p, n);
+  if (WITH_INDIRECT && view != VIEW_DIRECT) e += lpv.scales.z * indirect_irradiance(p, n);
+  vec3 emitted = ANY_EMISSIVE && view != VIEW_INDIRECT ? materials[material].emissive.rgb : vec3(0.0);
+  return vec4((albedo / PI * e + emitted) * frame.exposure.x, 1.0);
+}
+
+void main() {
+  uvec2 size = frame.size_view.xy;
+  uvec2 pixel = gl_GlobalInvocationID.xy;
+  if (pixel.x >= size.x || pixel.y >= size.y) return;
+  uint index = pixel.y * size.x + pixel.x;
+  vec4 value = view_value(pixel);
+  if ((OUTPUTS & SHADE_OUTPUT_LINEAR) != 0u) linear_pixels[index] = value;
+  if ((OUTPUTS & SHADE_OUTPUT_DISPLAY) != 0u)
+    display_pixels[index] = display_pixel(value.rgb, VIEW != VIEW_NORMAL && VIEW != VIEW_DEPTH, TONE_CURVE);
 }

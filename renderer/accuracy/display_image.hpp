@@ -1,5 +1,5 @@
-// The 8-bit sRGB picture of a linear image, made on the CPU exactly as the tonemap pass
-// (shaders/tonemap.comp) makes it on the GPU: for the images no render produced (the
+// The 8-bit sRGB picture of a linear image, made on the CPU exactly as the shading
+// (shaders/shared/display_encode.glsl) makes it on the GPU: for the images no render produced (the
 // reference's), so that they sit beside rendered ones on equal terms. The test that the two
 // agree is in tests/renderer/test_accuracy.cpp.
 #pragma once

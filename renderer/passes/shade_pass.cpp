@@ -14,7 +14,7 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   layout_ = vkx::compute_layout(
-      {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, image, image, image});
+      {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, image, image, image, buffer});
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
 }
 
@@ -30,13 +30,29 @@ std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights, bool emissive_m
   return kinds;
 }
 
+namespace {
+
+std::uint32_t gpu_tone_curve(api::Tonemap curve) {
+  switch (curve) {
+    case api::Tonemap::none: return gpu::TONEMAP_NONE;
+    case api::Tonemap::reinhard: return gpu::TONEMAP_REINHARD;
+    case api::Tonemap::aces: return gpu::TONEMAP_ACES;
+  }
+  return gpu::TONEMAP_NONE;
+}
+
+}  // namespace
+
 const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
   const std::uint32_t lights = std::min(in.light_count, gpu::SHADE_LIGHTS_FROM_FRAME);
+  // A linear-only image has no tone curve: one variant for every curve.
+  const std::uint32_t curve = in.outputs & gpu::SHADE_OUTPUT_DISPLAY ? gpu_tone_curve(in.tone_curve) : gpu::TONEMAP_NONE;
   // Bits 0-2: the view (VIEW_* < 8); 3-5: the cascades (at most 4); 6-9: the light count
-  // (at most 9); above: the light kinds.
-  const std::uint32_t key = (in.light_kinds << 10) | (lights << 6) | (in.cascades << 3) | in.view;
+  // (at most 9); 10-11: the outputs; 12-13: the tone curve; above: the light kinds (7 bits).
+  const std::uint32_t key =
+      (in.light_kinds << 14) | (curve << 12) | (in.outputs << 10) | (lights << 6) | (in.cascades << 3) | in.view;
   return variants_.get(key, [&] {
-    const std::uint32_t constants[] = {in.cascades, in.view, in.light_kinds, lights};
+    const std::uint32_t constants[] = {in.cascades, in.view, in.light_kinds, lights, in.outputs, curve};
     return vkx::Pipeline(device_, layout_, spirv_shade_comp, constants);
   });
 }
@@ -61,6 +77,7 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
       .image(10, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[0].view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(11, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[1].view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(12, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL)
+      .buffer(13, storage, targets.display.handle())
       .apply(device_.handle());
 
   pipeline.bind(cmd);

@@ -1,7 +1,8 @@
 // Direct and indirect lighting (and the data views) from the G-buffer into the frame's
-// linear image.
+// linear image, its display-encoded 8-bit image, or both.
 #pragma once
 
+#include "api/render_request.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_types.hpp"
 #include "renderer/gpu_scene.hpp"
@@ -24,6 +25,8 @@ struct ShadeInputs {
   std::uint32_t view;              // gpu::VIEW_*
   std::uint32_t light_kinds;       // gpu::LIGHTS_* bits (light_kinds())
   std::uint32_t light_count;       // of the buffer `lights`
+  std::uint32_t outputs;           // gpu::SHADE_OUTPUT_* bits: the images to write
+  api::Tonemap tone_curve;         // of the display image
 };
 
 // The gpu::LIGHTS_* bits that describe what `lights`, and emissive materials if the scene
@@ -34,13 +37,15 @@ class ShadePass {
  public:
   explicit ShadePass(const vkx::Device& device);
 
-  // Writes targets.linear and makes it visible to later compute and transfer reads.
+  // Writes targets.linear and/or targets.display, as in.outputs asks, and makes them visible
+  // to later compute and transfer reads. The display image is tone-mapped (in.tone_curve) and
+  // sRGB-encoded for the lit views, quantised linearly for the data views (normal, depth).
   void record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets, const ShadeInputs& in) const;
 
  private:
-  // One shader specialised by what the frame shows and the kinds of light it has (lavapipe
-  // runs both sides of a branch, so code that cannot apply would cost every pixel); made on
-  // first use.
+  // One shader specialised by what the frame shows, the kinds of light it has and the images
+  // it writes (lavapipe runs both sides of a branch, so code that cannot apply would cost
+  // every pixel); made on first use.
   const vkx::Pipeline& variant(const ShadeInputs& in) const;
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;

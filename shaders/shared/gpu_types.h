@@ -49,7 +49,11 @@ LPV_CONST TONEMAP_NONE = 0u;
 LPV_CONST TONEMAP_REINHARD = 1u;
 LPV_CONST TONEMAP_ACES = 2u;
 
-LPV_CONST SHADE_GROUP_X = 8u;  // shade and tonemap work groups: 8 x 8 pixels
+// The images the shading writes (bits).
+LPV_CONST SHADE_OUTPUT_LINEAR = 1u;   // linear RGBA float
+LPV_CONST SHADE_OUTPUT_DISPLAY = 2u;  // display-encoded RGBA8
+
+LPV_CONST SHADE_GROUP_X = 8u;  // shade work groups: 8 x 8 pixels
 LPV_CONST SHADE_GROUP_Y = 8u;
 
 struct GpuLight {
@@ -125,10 +129,6 @@ struct GpuRsmView {
   mat4 view_proj;
   vec4 axis;   // xyz: unit view direction; w: texel footprint: side at unit distance (perspective) or side (m)
   uvec4 info;  // x: light index; y: RSM_VIEW_*
-};
-
-struct GpuTonemapParams {
-  uvec4 size_mode;  // x: width, y: height, z: TONEMAP_*, w: 1 = display-encode (sRGB), 0 = data (linear)
 };
 
 #ifdef __cplusplus

@@ -158,9 +158,9 @@ TEST_F(Accuracy, BetweenTwoSettingsMasksComeFromWhatTheCameraSees) {
   EXPECT_GT(surfaces.final_error.rmse, 0.0);  // 16^3 against 32^3 differ
 }
 
-// The reference's 8-bit picture is made on the CPU; it must match what the tonemap pass
-// makes of the same linear image, or the two would not look alike side by side.
-TEST_F(Accuracy, CpuDisplayEncodingMatchesTheTonemapPass) {
+// The reference's 8-bit picture is made on the CPU; it must match what the shading encodes
+// of the same linear image, or the two would not look alike side by side.
+TEST_F(Accuracy, CpuDisplayEncodingMatchesTheShading) {
   for (const api::Tonemap tonemap : {api::Tonemap::none, api::Tonemap::reinhard, api::Tonemap::aces}) {
     api::RenderRequest request;
     request.output.width = 48;

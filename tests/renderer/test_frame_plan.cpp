@@ -29,7 +29,7 @@ api::Light spot_at(glm::vec3 position, glm::vec3 direction) {
 
 renderer::FramePlan plan(const api::RenderRequest& request, const std::vector<api::Light>& lights,
                          const scene::Scene& scene, std::uint32_t emitters = 0) {
-  return renderer::plan_frame({request, lights, scene, emitters, true});
+  return renderer::plan_frame({request, lights, scene, emitters});
 }
 
 TEST(LightMisses, SpotConeAgainstTheScene) {

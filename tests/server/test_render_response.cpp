@@ -9,7 +9,7 @@ namespace {
 TEST(ServerTiming, ListsPassesThatRanThenTheTotals) {
   api::RenderStats stats;
   stats.passes = {{"shadow", true, "", {0.5, 0.5, 0.5}, {}},
-                  {"tonemap", false, "no 8-bit image", {}, {}},
+                  {"rsm", false, "lpv disabled", {}, {}},
                   {"shade", true, "", {2.25, 2.0, 3.0}, {}}};
   stats.gpu_ms = {2.75, 2.5, 3.5};
   stats.wall_ms = {3.0, 3.0, 3.0};
