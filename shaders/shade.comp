@@ -27,15 +27,6 @@ layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits o
 layout(constant_id = 3) const uint LIGHT_COUNT = SHADE_LIGHTS_FROM_FRAME;
 layout(constant_id = 4) const uint OUTPUTS = SHADE_OUTPUT_LINEAR;  // SHADE_OUTPUT_* bits
 layout(constant_id = 5) const uint TONE_CURVE = TONEMAP_NONE;      // of the display image
-const bool ANY_DIRECTIONAL = (LIGHT_KINDS & LIGHTS_DIRECTIONAL) != 0u;
-const bool ANY_POSITIONAL = (LIGHT_KINDS & LIGHTS_POSITIONAL) != 0u;
-const bool ANY_SHADOWED = (LIGHT_KINDS & LIGHTS_SHADOWED) != 0u;
-const bool ANY_CUBE_SHADOWED = (LIGHT_KINDS & LIGHTS_CUBE_SHADOWED) != 0u;
-const bool ANY_EMISSIVE = (LIGHT_KINDS & LIGHTS_EMISSIVE) != 0u;
-#define LIGHTS_MAY_HAVE_CONE ((LIGHT_KINDS & LIGHTS_SPOT_CONE) != 0u)
-#define LIGHTS_MAY_HAVE_RANGE ((LIGHT_KINDS & LIGHTS_RANGE) != 0u)
-#include "shared/lights.glsl"
-#include "shared/display_encode.glsl"
 
 layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2D g_position;
@@ -54,55 +45,8 @@ layout(set = 0, binding = 10, rgba32f) uniform readonly image3D accumulated_r;
 layout(set = 0, binding = 11, rgba32f) uniform readonly image3D accumulated_g;
 layout(set = 0, binding = 12, rgba32f) uniform readonly image3D accumulated_b;
 layout(std430, set = 0, binding = 13) writeonly buffer Display { uint display_pixels[]; };
-
-const float PI = 3.14159265358979;
-
-// The cube face a direction falls in, in the order +X, -X, +Y, -Y, +Z, -Z.
-uint cube_face(vec3 d) {
-  vec3 a = abs(d);
-  if (a.x >= a.y && a.x >= a.z) return d.x < 0.0 ? 1u : 0u;
-  if (a.y >= a.z) return d.y < 0.0 ? 3u : 2u;
-  return d.z < 0.0 ? 5u : 4u;
-}
-
-// Fraction of the light reaching p (1 = lit), with 2x2 PCF: the four depth comparisons of
-// a compare gather, weighted bilinearly here. The same result as a filtered compare lookup
-// (3e-8 apart on cornell-box when this was changed), which lavapipe runs a millisecond slower
-// per 512^2 frame. The lookup point is pushed along the normal by about a shadow texel to
-// keep surfaces from shadowing themselves.
-float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
-  if (!ANY_SHADOWED || light.info.z == 0u) return 1.0;
-  float offset = light.params.z * (light.info.x == LIGHT_DIRECTIONAL ? 1.0 : distance_to_light);
-  vec3 q = p + n * offset;
-  uint layer = light.info.y;
-  if (ANY_CUBE_SHADOWED && light.info.z == 6u) layer += cube_face(q - light.position.xyz);  // a cube of six maps
-  vec4 clip = shadow_view_proj[layer] * vec4(q, 1.0);
-  if (clip.w <= 0.0) return 1.0;
-  vec3 ndc = clip.xyz / clip.w;
-  // Outside the map: nothing was rendered there that could occlude.
-  if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0 || ndc.z < 0.0) return 1.0;
-  vec2 uv = ndc.xy * 0.5 + 0.5;
-  vec2 t = uv * vec2(textureSize(shadow_maps, 0).xy) - 0.5;
-  vec2 f = fract(t);
-  vec4 lit = textureGather(shadow_maps, vec3(uv, float(layer)), ndc.z);  // texels (0,1), (1,1), (1,0), (0,0)
-  return mix(mix(lit.w, lit.z, f.x), mix(lit.x, lit.y, f.x), f.y);
-}
-
-// Irradiance (W/m^2) at p with unit normal n from one light, shadows included.
-vec3 irradiance(GpuLight light, vec3 p, vec3 n) {
-  if (ANY_DIRECTIONAL && (!ANY_POSITIONAL || light.info.x == LIGHT_DIRECTIONAL)) {
-    vec3 to_light = -light.direction.xyz;
-    float cos_theta = dot(n, to_light);
-    if (cos_theta <= 0.0) return vec3(0.0);
-    return light.radiant.rgb * cos_theta * visibility(light, p, n, 0.0);
-  }
-  vec3 to_light;
-  float dist2;
-  vec3 intensity = light_intensity_toward(light, p, to_light, dist2);
-  float cos_theta = dot(n, to_light);
-  if (cos_theta <= 0.0 || dist2 == 0.0 || intensity == vec3(0.0)) return vec3(0.0);
-  return intensity * (cos_theta / dist2) * visibility(light, p, n, sqrt(dist2));
-}
+#include "shared/direct_light.glsl"
+#include "shared/display_encode.glsl"
 
 // Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units) onto a
 // surface with normal n: trilinear between cell centres, then E = <I, cosine lobe of -n> / s^2
@@ -180,13 +124,10 @@ vec4 view_value(uvec2 pixel) {
     return vec4(vec3(clamp((depth - frame.depth_range.x) / (frame.depth_range.y - frame.depth_range.x), 0.0, 1.0)), 1.0);
   }
   if (view == VIEW_LPV) return vec4(WITH_INDIRECT ? lpv_cell_view(p) * frame.exposure.x : vec3(0.0), 1.0);
-  vec3 e = vec3(0.0);
-  if (view != VIEW_INDIRECT)
-    for (uint i = 0u; i < (LIGHT_COUNT == SHADE_LIGHTS_FROM_FRAME ? frame.size_view.w : LIGHT_COUNT); ++i)
-      e += irradiance(lights[i], p, n);
+  vec3 e = view != VIEW_INDIRECT ? direct_irradiance(p, n) : vec3(0.0);
   if (WITH_INDIRECT && view != VIEW_DIRECT) e += lpv.scales.z * indirect_irradiance(p, n);
   vec3 emitted = ANY_EMISSIVE && view != VIEW_INDIRECT ? materials[material].emissive.rgb : vec3(0.0);
-  return vec4((albedo / PI * e + emitted) * frame.exposure.x, 1.0);
+  return vec4((albedo / LPV_PI * e + emitted) * frame.exposure.x, 1.0);
 }
 
 void main() {
