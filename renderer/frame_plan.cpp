@@ -229,6 +229,20 @@ FramePlan plan_frame(const PlanInputs& in) {
   return plan;
 }
 
+void plan_shading(FramePlan& plan, api::View view, bool display_only) {
+  std::string& why_not = plan.reason[kForward];
+  if (view != api::View::final_ && view != api::View::direct)
+    why_not = "view '" + api::to_string(view) + "' is shaded from the G-buffer";
+  else if (!display_only)
+    why_not = "a linear image is wanted: shaded from the G-buffer";
+  else if (plan.run[kInject])
+    why_not = "indirect light: shaded from the G-buffer";
+  plan.run[kForward] = why_not.empty();
+  if (!plan.run[kForward]) return;
+  plan.run[kGBuffer] = plan.run[kShade] = false;
+  plan.reason[kGBuffer] = plan.reason[kShade] = "direct light only, into the 8-bit image: shaded by the forward pass";
+}
+
 LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
                  const std::vector<api::Light>& lights, const std::vector<LightView>& views, const FitLpv& fit) {
   LpvPlan lpv{scene.bounds, {}, {}};

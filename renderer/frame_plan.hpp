@@ -23,6 +23,7 @@ enum Pass : std::uint32_t {
   kShadow,
   kRsm,
   kGBuffer,
+  kForward,
   kInject,
   kGeometryVolume,
   kPropagate,
@@ -31,7 +32,7 @@ enum Pass : std::uint32_t {
   kPassCount
 };
 inline constexpr std::array<const char*, kPassCount> kPassNames = {
-    "shadow", "rsm", "gbuffer", "inject", "geometry_volume", "propagate", "shade", "readback"};
+    "shadow", "rsm", "gbuffer", "forward", "inject", "geometry_volume", "propagate", "shade", "readback"};
 inline bool is_grid_pass(std::uint32_t p) { return p == kInject || p == kGeometryVolume || p == kPropagate; }
 
 bool needs_direct_light(api::View v);
@@ -84,6 +85,14 @@ bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const 
 // Per draw, whether its bounds may be inside the frustum of `view_proj` (Vulkan clip space).
 std::vector<bool> draws_seen(const scene::Scene& scene, const glm::mat4& view_proj);
 inline constexpr std::size_t kMaxShadowTestDraws = 256;
+
+// How the camera's view is shaded, once the LPV's passes are planned: by the forward pass
+// (direct light while rasterising, straight into the 8-bit image) when the frame shows the
+// final or direct view without indirect light and only its 8-bit image is read back; else
+// by the G-buffer and the deferred shading. Both modes: the two ways give the same picture
+// (within one level of 8 bits), so this is a choice of method, not a simplification.
+// `display_only`: the frame reads back the 8-bit image and no linear one.
+void plan_shading(FramePlan& plan, api::View view, bool display_only);
 
 // The propagation steps a cascade needs: light crosses one cell per step, so after the
 // L1 diameter (in cells) of the part of the scene inside the cascade, every occupied cell

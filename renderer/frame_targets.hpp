@@ -12,6 +12,7 @@ struct FrameTargets {
   static constexpr VkFormat kNormalFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   static constexpr VkFormat kAlbedoFormat = VK_FORMAT_R16G16B16A16_SFLOAT;  // 8 bits lose dark albedos
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+  static constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_UNORM;  // the forward pass's target
 
   FrameTargets(const vkx::Device& device, std::uint32_t width, std::uint32_t height);
 
@@ -21,6 +22,7 @@ struct FrameTargets {
   vkx::Image normal;
   vkx::Image albedo;
   vkx::Image depth;
+  vkx::Image display_target;     // the forward pass draws the display image here
   vkx::Buffer linear;            // vec4 per pixel, row 0 = top: the linear HDR image
   vkx::Buffer display;           // RGBA8 per pixel: the display-encoded image
   vkx::Buffer linear_readback;   // host copies of the two
@@ -36,6 +38,7 @@ struct ShadowAtlas {
   std::uint32_t resolution;
   std::uint32_t layers;
   vkx::Image depth;
+  vkx::Image display_target;     // the forward pass draws the display image here
 };
 
 }  // namespace renderer

@@ -16,8 +16,8 @@ vkx::VertexInputDesc scene_vertex_input() {
 }
 
 GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, const TextureSetLayout& texture_layout) {
-  std::vector<gpu::GpuMaterial> materials;
   GpuScene g;
+  std::vector<gpu::GpuMaterial>& materials = g.material_values;
   for (const scene::Material& m : scene.materials) {
     materials.push_back({glm::vec4(m.base_color, 1.0f), glm::vec4(m.emissive, 0.0f),
                          glm::uvec4(m.double_sided ? 1u : 0u, 0u, 0u, 0u)});

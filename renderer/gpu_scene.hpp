@@ -1,6 +1,7 @@
 // A scene's geometry and materials resident on the device: uploaded once, drawn by many frames.
 #pragma once
 
+#include "renderer/gpu_types.hpp"
 #include "renderer/material_textures.hpp"
 #include "renderer/scene/scene.hpp"
 #include "renderer/vulkan/pipeline.hpp"
@@ -30,6 +31,7 @@ struct GpuScene {
   vkx::Buffer vertices;   // scene::Vertex
   vkx::Buffer indices;    // uint32
   vkx::Buffer materials;  // gpu::GpuMaterial
+  std::vector<gpu::GpuMaterial> material_values;  // their host copies, pushed per draw (draw_material)
   MaterialTextures textures;
   vkx::Buffer emitters;  // gpu::GpuEmitter: the emissive surfaces as VPLs
   std::uint32_t emitter_count = 0;
@@ -44,6 +46,11 @@ struct GpuScene {
 
   // Device memory held.
   std::uint64_t bytes() const;
+
+  // The push constants of `draw` in the camera's raster passes.
+  gpu::GpuDrawMaterial draw_material(const scene::Draw& draw) const {
+    return {material_values[draw.material], {draw.material, 0u, 0u, 0u}};
+  }
 
   // Binds the vertex and index buffers for drawing.
   void bind_geometry(VkCommandBuffer cmd) const;

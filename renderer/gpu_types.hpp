@@ -6,6 +6,7 @@
 namespace gpu {
 static_assert(sizeof(GpuLight) == 80);
 static_assert(sizeof(GpuMaterial) == 48);
+static_assert(sizeof(GpuDrawMaterial) == 64);
 static_assert(sizeof(GpuEmitter) == 48);
 static_assert(sizeof(GpuFrame) == 144);
 static_assert(sizeof(GpuLpvCascade) == 32);

@@ -8,6 +8,7 @@
 #include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/pass_timer.hpp"
+#include "renderer/passes/forward_pass.hpp"
 #include "renderer/passes/gbuffer_pass.hpp"
 #include "renderer/passes/geometry_volume_pass.hpp"
 #include "renderer/passes/lpv_inject_pass.hpp"
@@ -94,6 +95,7 @@ struct Renderer::Impl {
         shadow(device),
         rsm(device, texture_layout),
         gbuffer(device, texture_layout),
+        forward(device, texture_layout),
         inject(device),
         geometry(device),
         propagate(device),
@@ -118,6 +120,7 @@ struct Renderer::Impl {
   ShadowPass shadow;
   RsmPass rsm;
   GBufferPass gbuffer;
+  ForwardPass forward;
   LpvInjectPass inject;
   GeometryVolumePass geometry;
   LpvPropagatePass propagate;
@@ -157,6 +160,17 @@ struct Renderer::Impl {
     std::uint32_t count = 0;
   };
   void record_pass(Pass pass, std::uint32_t cascade, Steps steps, const Frame& frame);
+  // What the forward pass and the shading read of the lights. Views without direct light never
+  // read them: no kinds and count 0, so one shading pipeline serves every light setup.
+  DirectLightInputs direct_light(const Frame& frame) const {
+    const bool lit = needs_direct_light(frame.request.output.view);
+    return {frame_uniforms,
+            light_buffer,
+            shadow_view_buffer,
+            *atlas,
+            lit ? light_kinds(frame.lights.lights, frame.gpu.emissive) : 0u,
+            lit ? std::uint32_t(frame.lights.lights.size()) : 0u};
+  }
   api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran, std::uint32_t emitters,
                           const std::vector<std::uint32_t>& iterations_run) const;
   bool converged(std::uint32_t cascade, std::uint32_t step, std::uint32_t steps, float convergence) const;
@@ -291,6 +305,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
         if (!plan.run[kGeometryVolume]) setup.occlusion = setup.bounces = false;
         return setup;
       });
+  plan_shading(plan, request.output.view, readback == kReadbackDisplay);
   plan_ms += ms_since(plan_start);
   const LpvSetup& lpv_setup = lpv_plan.setup;
   const std::vector<std::uint32_t>& iterations = lpv_plan.iterations;
@@ -312,8 +327,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);
   const auto rsm_view_bytes = lpv_setup.rsm_views.size() * sizeof(gpu::GpuRsmView);
   ensure_upload_capacity(device, frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  ensure_upload_capacity(device, light_buffer, light_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  ensure_upload_capacity(device, shadow_view_buffer, view_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  ensure_upload_capacity(device, light_buffer, 64 * 80, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  ensure_upload_capacity(device, shadow_view_buffer, 384 * 64, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   ensure_upload_capacity(device, lpv_uniforms, sizeof(lpv_setup.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   ensure_upload_capacity(device, rsm_view_buffer, rsm_view_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   frame_uniforms.write(&frame, sizeof(frame));
@@ -328,7 +343,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   // The passes in submission order. The cascades share their working grids, so each runs
   // all its grid passes before the next starts.
   std::vector<std::pair<Pass, std::uint32_t>> schedule;
-  for (Pass p : {kShadow, kRsm, kGBuffer})
+  for (Pass p : {kShadow, kRsm, kGBuffer, kForward})
     if (plan.run[p]) schedule.emplace_back(p, 0);
   for (std::uint32_t c = 0; c < cascades; ++c)
     for (Pass p : {kInject, kGeometryVolume, kPropagate})
@@ -562,20 +577,20 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.occlusion, frame.lpv.bounces, lpv_uniforms,
                        *volumes);
       break;
-    case kShade: {
-      const bool lit = needs_direct_light(frame.request.output.view);
+    case kForward:
+      // The light code binds the atlas even when no map was drawn (no light samples it then).
+      if (!frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
+      forward.record(cmd, frame.gpu, *targets, direct_light(frame), frame.request.output.tonemap);
+      break;
+    case kShade:
       shade.record(cmd, frame.gpu, *targets,
-                   {frame_uniforms, light_buffer, shadow_view_buffer, *atlas, lpv_uniforms, *volumes,
+                   {direct_light(frame), lpv_uniforms, *volumes,
                     frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u,
                     gpu_view(frame.request.output.view),
-                    // Views without direct light never read the lights: one pipeline serves every light setup.
-                    lit ? light_kinds(frame.lights.lights, frame.gpu.emissive) : 0u,
-                    lit ? std::uint32_t(frame.lights.lights.size()) : 0u,
                     (frame.readback & kReadbackLinear ? gpu::SHADE_OUTPUT_LINEAR : 0u) |
                         (frame.readback & kReadbackDisplay ? gpu::SHADE_OUTPUT_DISPLAY : 0u),
                     frame.request.output.tonemap});
       break;
-    }
     case kReadback: {
       auto copy = [&](const vkx::Buffer& from, const vkx::Buffer& to) {
         const VkBufferCopy region{0, 0, from.size()};

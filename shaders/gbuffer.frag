@@ -10,7 +10,7 @@ layout(location = 2) out vec4 out_albedo;    // rgb: linear albedo
 void main() {
   vec3 n, albedo;
   material_surface(n, albedo);
-  out_position = vec4(in_world, float(draw.material + 1u));
+  out_position = vec4(in_world, float(draw.index.x + 1u));
   out_normal = vec4(n, 0.0);
   out_albedo = vec4(albedo, 1.0);
 }

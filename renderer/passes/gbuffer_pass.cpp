@@ -12,10 +12,9 @@ namespace {
 
 vkx::PipelineLayoutDesc gbuffer_layout(const TextureSetLayout& textures) {
   vkx::PipelineLayoutDesc layout;
-  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT),
-                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
+  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)};
   layout.draw_sets = {textures.handle()};
-  layout.push_constant_bytes = sizeof(std::uint32_t);
+  layout.push_constant_bytes = sizeof(gpu::GpuDrawMaterial);
   layout.push_constant_stages = VK_SHADER_STAGE_FRAGMENT_BIT;
   return layout;
 }
@@ -47,7 +46,6 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, const Frame
   for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
     vkx::DescriptorWriter(pipelines_.get(variant).descriptor_set())
         .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.handle())
-        .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.materials.handle())
         .apply(device_.handle());
   const std::array<const vkx::Image*, 3> colors{&targets.position, &targets.normal, &targets.albedo};
   vkx::prepare_attachments(cmd, colors, &targets.depth);
@@ -65,7 +63,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, const Frame
           bound->bind(cmd);
           return bound->layout();
         },
-        [&](const scene::Draw& draw) { bound->push(cmd, draw.material); });
+        [&](const scene::Draw& draw) { bound->push(cmd, scene.draw_material(draw)); });
   }
   device_.cmd_end_rendering(cmd);
 

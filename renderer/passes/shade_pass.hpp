@@ -4,34 +4,24 @@
 
 #include "api/render_request.hpp"
 #include "renderer/frame_targets.hpp"
-#include "renderer/gpu_types.hpp"
 #include "renderer/gpu_scene.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
+#include "renderer/passes/direct_light_inputs.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
 #include <cstdint>
-#include <span>
 
 namespace renderer {
 
 struct ShadeInputs {
-  const vkx::Buffer& frame;         // gpu::GpuFrame
-  const vkx::Buffer& lights;        // gpu::GpuLight[]
-  const vkx::Buffer& shadow_views;  // mat4[] per atlas layer
-  const ShadowAtlas& atlas;
+  DirectLightInputs direct;        // views without direct light: no light kinds, count 0
   const vkx::Buffer& lpv;          // gpu::GpuLpv
   const LpvVolumes& volumes;       // the cascades' accumulated SH (not read without indirect light)
   std::uint32_t cascades;          // of indirect light to shade (0: the LPV did not run)
   std::uint32_t view;              // gpu::VIEW_*
-  std::uint32_t light_kinds;       // gpu::LIGHTS_* bits (light_kinds())
-  std::uint32_t light_count;       // of the buffer `lights`
   std::uint32_t outputs;           // gpu::SHADE_OUTPUT_* bits: the images to write
   api::Tonemap tone_curve;         // of the display image
 };
-
-// The gpu::LIGHTS_* bits that describe what `lights`, and emissive materials if the scene
-// has any, need of the shading.
-std::uint32_t light_kinds(std::span<const gpu::GpuLight> lights, bool emissive_materials);
 
 class ShadePass {
  public:

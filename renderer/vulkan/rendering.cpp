@@ -24,7 +24,8 @@ void colors_to_compute(VkCommandBuffer cmd, std::span<const Image* const> colors
 }
 
 void begin_cleared_rendering(const Device& device, VkCommandBuffer cmd, std::span<const VkImageView> colors,
-                             VkImageView depth, VkExtent2D extent, bool store_depth, ClearColors clear) {
+                             VkImageView depth, VkExtent2D extent, bool store_depth, ClearColors clear,
+                             float clear_alpha) {
   std::vector<VkRenderingAttachmentInfoKHR> color_attachments(colors.size());
   for (std::size_t i = 0; i < colors.size(); ++i) {
     VkRenderingAttachmentInfoKHR& a = color_attachments[i];
@@ -33,7 +34,7 @@ void begin_cleared_rendering(const Device& device, VkCommandBuffer cmd, std::spa
     a.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
     a.loadOp = i == 0 || clear == ClearColors::all ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_DONT_CARE;
     a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+    a.clearValue.color = {{0.0f, 0.0f, 0.0f, clear_alpha}};
   }
   VkRenderingAttachmentInfoKHR depth_attachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
   depth_attachment.imageView = depth;

@@ -21,11 +21,11 @@ void colors_to_compute(VkCommandBuffer cmd, std::span<const Image* const> colors
 // them would be memory traffic nobody reads: half a millisecond of the G-buffer at 512^2).
 enum class ClearColors { all, first };
 
-// Begins rendering over `extent` into `colors` (cleared to 0 as `clear` says, the others'
-// contents undefined) and `depth` (cleared to 1; stored only if `store_depth`), and sets
-// the viewport and scissor to the whole extent.
+// Begins rendering over `extent` into `colors` (cleared to (0, 0, 0, clear_alpha) as `clear`
+// says, the others' contents undefined) and `depth` (cleared to 1; stored only if
+// `store_depth`), and sets the viewport and scissor to the whole extent.
 void begin_cleared_rendering(const Device& device, VkCommandBuffer cmd, std::span<const VkImageView> colors,
                              VkImageView depth, VkExtent2D extent, bool store_depth,
-                             ClearColors clear = ClearColors::all);
+                             ClearColors clear = ClearColors::all, float clear_alpha = 0.0f);
 
 }  // namespace vkx

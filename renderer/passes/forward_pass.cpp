@@ -1,0 +1,89 @@
+#include "renderer/passes/forward_pass.hpp"
+
+#include "renderer/passes/display_encoding.hpp"
+#include "renderer/vulkan/rendering.hpp"
+#include "shaders/forward.frag.h"
+#include "shaders/gbuffer.vert.h"
+
+#include <array>
+
+namespace renderer {
+
+ForwardPass::ForwardPass(const vkx::Device& device, const TextureSetLayout& textures) : device_(device) {
+  const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+  layout_.bindings = {
+      vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | fragment),
+      vkx::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),  // shadow maps
+      vkx::binding(2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),          // lights
+      vkx::binding(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment)};         // shadow views
+  layout_.draw_sets = {textures.handle()};
+  layout_.push_constant_bytes = sizeof(gpu::GpuDrawMaterial);
+  layout_.push_constant_stages = fragment;
+  shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
+}
+
+const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const DirectLightInputs& in,
+                                           std::uint32_t curve) const {
+  // Bits 0-1: the material variant; 2-3: the tone curve; above: the lights (11 bits).
+  const std::uint32_t key = (direct_light_key(in) << 4) | (curve << 2) | variant.index();
+  return pipelines_.get(key, [&] {
+    vkx::GraphicsPipelineDesc g;
+    g.vertex_spirv = spirv_gbuffer_vert;
+    g.fragment_spirv = spirv_forward_frag;
+    g.fragment_specialization = {variant.double_sided, variant.textured, in.light_kinds, specialised_light_count(in),
+                                 curve};
+    g.vertex_input = scene_vertex_input();
+    g.color_formats = {FrameTargets::kDisplayFormat};
+    g.depth_format = FrameTargets::kDepthFormat;
+    // As the G-buffer: counter-clockwise front faces, back faces culled unless double-sided.
+    g.cull_mode = variant.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
+    g.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    return vkx::Pipeline(device_, layout_, g);
+  });
+}
+
+void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets,
+                         const DirectLightInputs& in, api::Tonemap tone_curve) const {
+  const std::uint32_t curve = gpu_tone_curve(tone_curve);
+  for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
+    vkx::DescriptorWriter(pipeline(variant, in, curve).descriptor_set())
+        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.frame.handle())
+        .image(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, in.atlas.depth.view(),
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, shadow_sampler_.handle())
+        .buffer(2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.lights.handle())
+        .buffer(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.shadow_views.handle())
+        .apply(device_.handle());
+  const std::array<const vkx::Image*, 1> colors{&targets.display_target};
+  vkx::prepare_attachments(cmd, colors, &targets.depth);
+  const std::array<VkImageView, 1> views{targets.display_target.view()};
+  // Opaque black where nothing is drawn, as the shading encodes a pixel without a surface.
+  vkx::begin_cleared_rendering(device_, cmd, views, targets.depth.view(), {targets.width, targets.height}, false,
+                               vkx::ClearColors::all, 1.0f);
+  if (scene.index_count > 0) {
+    scene.bind_geometry(cmd);
+    const vkx::Pipeline* bound = nullptr;
+    scene.draw_all(
+        cmd,
+        [&](MaterialVariant variant) {
+          bound = &pipeline(variant, in, curve);
+          bound->bind(cmd);
+          return bound->layout();
+        },
+        [&](const scene::Draw& draw) { bound->push(cmd, scene.draw_material(draw)); });
+  }
+  device_.cmd_end_rendering(cmd);
+
+  // Into the display buffer, rows top to bottom as the shading writes it.
+  const VkImageLayout src = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  vkx::transition(cmd, targets.display_target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, src,
+                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {targets.width, targets.height, 1};
+  vkCmdCopyImageToBuffer(cmd, targets.display_target.handle(), src, targets.display.handle(), 1, &region);
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_READ_BIT);
+}
+
+}  // namespace renderer

@@ -1,0 +1,35 @@
+// The forward pass: the camera's view of the scene shaded with direct light while it is
+// rasterised, straight into the 8-bit display image (shaders/forward.frag). It replaces the
+// G-buffer and the shading for frames that need neither indirect light nor a linear image;
+// the planner decides (plan_shading in frame_plan.hpp).
+#pragma once
+
+#include "api/render_request.hpp"
+#include "renderer/frame_targets.hpp"
+#include "renderer/gpu_scene.hpp"
+#include "renderer/material_textures.hpp"
+#include "renderer/passes/direct_light_inputs.hpp"
+#include "renderer/vulkan/pipeline.hpp"
+
+namespace renderer {
+
+class ForwardPass {
+ public:
+  ForwardPass(const vkx::Device& device, const TextureSetLayout& textures);
+
+  // Draws into targets.display_target and copies it into targets.display, where the shading
+  // would have written the display image, ready for transfer reads.
+  void record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets, const DirectLightInputs& in,
+              api::Tonemap tone_curve) const;
+
+ private:
+  // One pipeline per material variant and specialisation of the light code and tone curve,
+  // made on first use.
+  const vkx::Pipeline& pipeline(MaterialVariant variant, const DirectLightInputs& in, std::uint32_t curve) const;
+  const vkx::Device& device_;
+  vkx::PipelineLayoutDesc layout_;
+  vkx::PipelineVariants pipelines_;
+  vkx::Sampler shadow_sampler_;  // depth compare: the light code gathers 2x2 comparisons for its PCF
+};
+
+}  // namespace renderer

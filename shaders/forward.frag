@@ -1,0 +1,33 @@
+#version 450
+// The forward pass: direct light shaded while rasterising, straight into the 8-bit display
+// image, for frames that need neither indirect light nor a linear image (a PNG of the final
+// or direct view without the LPV). The same light (shared/direct_light.glsl) and encoding
+// (shared/display_encode.glsl) as the deferred shading, from the interpolated surface
+// instead of the G-buffer's stored one. Why a second way to shade: on lavapipe the fragment
+// stage runs the lighting in about a third of the time the compute shading takes, and the
+// frame writes one 4-byte target instead of the G-buffer's 32 bytes a pixel.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/gpu_types.h"
+#include "shared/lpv_sh.h"
+#include "shared/material_surface.glsl"
+
+layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits of this frame's lights
+layout(constant_id = 3) const uint LIGHT_COUNT = SHADE_LIGHTS_FROM_FRAME;
+layout(constant_id = 4) const uint TONE_CURVE = TONEMAP_NONE;
+
+layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
+layout(set = 0, binding = 1) uniform sampler2DArrayShadow shadow_maps;
+layout(std140, set = 0, binding = 2) uniform Lights { GpuLight lights[64]; };
+layout(std140, set = 0, binding = 3) uniform ShadowViews { mat4 shadow_view_proj[384]; };
+#include "shared/direct_light.glsl"
+#include "shared/display_encode.glsl"
+
+layout(location = 0) out vec4 out_display;  // an R8G8B8A8_UNORM target: the encoded bytes exactly
+
+void main() {
+  vec3 n, albedo;
+  material_surface(n, albedo);
+  vec3 emitted = ANY_EMISSIVE ? draw.material.emissive.rgb : vec3(0.0);
+  vec3 radiance = (albedo / LPV_PI * direct_irradiance(in_world, n) + emitted) * frame.exposure.x;
+  out_display = unpackUnorm4x8(display_pixel(radiance, true, TONE_CURVE));
+}
