@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <numeric>
 
 namespace renderer {
 
@@ -36,14 +37,36 @@ GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, 
   for (const scene::Material& m : scene.materials)
     g.material_variants.push_back({m.double_sided, m.base_color_texture >= 0 &&
                                                        std::size_t(m.base_color_texture) < scene.textures.size()});
-  g.draws = scene.draws;
-  std::stable_sort(g.draws.begin(), g.draws.end(), [&](const scene::Draw& a, const scene::Draw& b) {
-    return g.material_variants[a.material].index() < g.material_variants[b.material].index();
+  std::vector<std::size_t> by_variant(scene.draws.size());
+  std::iota(by_variant.begin(), by_variant.end(), std::size_t{0});
+  std::stable_sort(by_variant.begin(), by_variant.end(), [&](std::size_t a, std::size_t b) {
+    return g.material_variants[scene.draws[a].material].index() < g.material_variants[scene.draws[b].material].index();
   });
+  for (std::size_t d : by_variant) {
+    g.draws.push_back(scene.draws[d]);
+    g.draw_bounds.push_back(d < scene.draw_bounds.size() ? scene.draw_bounds[d] : scene.bounds);
+  }
   for (const scene::Draw& d : g.draws)
     if (g.variants_in_use.empty() || g.variants_in_use.back().index() != g.material_variants[d.material].index())
       g.variants_in_use.push_back(g.material_variants[d.material]);
   return g;
+}
+
+std::vector<std::uint32_t> GpuScene::camera_order(const glm::vec3& eye) const {
+  std::vector<float> farthest(draws.size());
+  for (std::size_t i = 0; i < draws.size(); ++i) {
+    const scene::Bounds& b = draw_bounds[i];
+    const glm::vec3 far_corner = glm::max(glm::abs(eye - b.min), glm::abs(eye - b.max));
+    farthest[i] = glm::dot(far_corner, far_corner);
+  }
+  std::vector<std::uint32_t> order(draws.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t va = material_variants[draws[a].material].index();
+    const std::uint32_t vb = material_variants[draws[b].material].index();
+    return va != vb ? va < vb : farthest[a] < farthest[b];
+  });
+  return order;
 }
 
 std::uint64_t GpuScene::bytes() const {

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace renderer {
@@ -39,6 +40,7 @@ struct GpuScene {
   bool emissive = false;      // a material emits (the shading adds emission only then)
   std::uint32_t index_count = 0;
   std::vector<scene::Draw> draws;              // grouped by their material's variant
+  std::vector<scene::Bounds> draw_bounds;      // of each of `draws`
   std::vector<MaterialVariant> material_variants;  // per material
   std::vector<MaterialVariant> variants_in_use;    // of the draws, in their order
 
@@ -52,16 +54,27 @@ struct GpuScene {
     return {material_values[draw.material], {draw.material, 0u, 0u, 0u}};
   }
 
+  // The order in which a camera at `eye` draws `draws`: grouped by material variant as they
+  // are (one pipeline bind each) and, within a group, the draw whose farthest point is
+  // nearest first. Small objects then come before the walls and floors around them, whose
+  // fragments behind them fail the depth test instead of being shaded and overdrawn
+  // (lavapipe tests depth before shading): the forward pass of the Cornell box at 512^2
+  // 4.7 -> 4.05 ms. A speed heuristic only: the depth test keeps the nearest surface in any
+  // order.
+  std::vector<std::uint32_t> camera_order(const glm::vec3& eye) const;
+
   // Binds the vertex and index buffers for drawing.
   void bind_geometry(VkCommandBuffer cmd) const;
   // Draws every draw of the scene: `bind(variant)` binds the pipeline for the material
   // variant and returns its layout; the material's texture is bound as set 1 and
-  // `push(draw)` sets the draw's push constants.
+  // `push(draw)` sets the draw's push constants. `order`: indices into `draws`, all of
+  // them, grouped by variant (camera_order); empty: as they are.
   template <typename Bind, typename Push>
-  void draw_all(VkCommandBuffer cmd, Bind bind, Push push) const {
+  void draw_all(VkCommandBuffer cmd, Bind bind, Push push, std::span<const std::uint32_t> order = {}) const {
     std::uint32_t bound = kMaterialVariants;
     VkPipelineLayout layout = VK_NULL_HANDLE;
-    for (const scene::Draw& draw : draws) {
+    for (std::size_t i = 0; i < draws.size(); ++i) {
+      const scene::Draw& draw = draws[order.empty() ? i : order[i]];
       const MaterialVariant variant = material_variants[draw.material];
       if (variant.index() != bound) {
         layout = bind(variant);

@@ -145,6 +145,7 @@ struct Renderer::Impl {
     const LightSetup& lights;
     const LpvSetup& lpv;
     unsigned readback;
+    std::vector<std::uint32_t> draw_order;  // of the camera's raster passes (GpuScene::camera_order)
   };
 
   RenderResult render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& request,
@@ -327,8 +328,11 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);
   const auto rsm_view_bytes = lpv_setup.rsm_views.size() * sizeof(gpu::GpuRsmView);
   ensure_upload_capacity(device, frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  ensure_upload_capacity(device, light_buffer, 64 * 80, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  ensure_upload_capacity(device, shadow_view_buffer, 384 * 64, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  // Uniform buffers of the forward pass too, sized for the most a frame may have.
+  const VkBufferUsageFlags both = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+  ensure_upload_capacity(device, light_buffer, std::max(light_bytes, gpu::SHADE_MAX_LIGHTS * sizeof(gpu::GpuLight)), both);
+  ensure_upload_capacity(device, shadow_view_buffer, std::max(view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(glm::mat4)),
+                         both);
   ensure_upload_capacity(device, lpv_uniforms, sizeof(lpv_setup.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   ensure_upload_capacity(device, rsm_view_buffer, rsm_view_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   frame_uniforms.write(&frame, sizeof(frame));
@@ -338,7 +342,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   if (rsm_view_bytes) rsm_view_buffer.write(lpv_setup.rsm_views.data(), rsm_view_bytes);
   const double setup_ms = ms_since(setup_start);
 
-  const Frame context{plan, gpu, request, light_setup, lpv_setup, readback};
+  const Frame context{plan, gpu, request, light_setup, lpv_setup, readback, gpu.camera_order(camera.position)};
   const auto cascades = std::uint32_t(lpv_setup.cascades.size());
   // The passes in submission order. The cascades share their working grids, so each runs
   // all its grid passes before the next starts.
@@ -561,7 +565,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       // The shading binds the atlas even when no map was drawn (no light samples it then).
       if (!frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
       if (!frame.plan.run[kRsm] && frame.plan.run[kInject]) RsmPass::record_skipped(cmd, *rsm_maps);
-      gbuffer.record(cmd, frame.gpu, *targets, frame_uniforms);
+      gbuffer.record(cmd, frame.gpu, frame.draw_order, *targets, frame_uniforms);
       break;
     case kInject:
       inject.record(cmd, cascade, lpv_uniforms, frame.plan.run[kRsm] ? &*rsm_maps : nullptr, vpls_per_view_side(lpv),
@@ -580,7 +584,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
     case kForward:
       // The light code binds the atlas even when no map was drawn (no light samples it then).
       if (!frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
-      forward.record(cmd, frame.gpu, *targets, direct_light(frame), frame.request.output.tonemap);
+      forward.record(cmd, frame.gpu, frame.draw_order, *targets, direct_light(frame), frame.request.output.tonemap);
       break;
     case kShade:
       shade.record(cmd, frame.gpu, *targets,

@@ -9,6 +9,8 @@
 
 namespace renderer {
 
+static_assert(gpu::SHADE_MAX_LIGHTS == api::limits::max_lights, "the forward pass's light buffer holds every light");
+
 ForwardPass::ForwardPass(const vkx::Device& device, const TextureSetLayout& textures) : device_(device) {
   const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
   layout_.bindings = {
@@ -42,8 +44,8 @@ const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const Direct
   });
 }
 
-void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets,
-                         const DirectLightInputs& in, api::Tonemap tone_curve) const {
+void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
+                         const FrameTargets& targets, const DirectLightInputs& in, api::Tonemap tone_curve) const {
   const std::uint32_t curve = gpu_tone_curve(tone_curve);
   for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
     vkx::DescriptorWriter(pipeline(variant, in, curve).descriptor_set())
@@ -69,7 +71,7 @@ void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, const Frame
           bound->bind(cmd);
           return bound->layout();
         },
-        [&](const scene::Draw& draw) { bound->push(cmd, scene.draw_material(draw)); });
+        [&](const scene::Draw& draw) { bound->push(cmd, scene.draw_material(draw)); }, order);
   }
   device_.cmd_end_rendering(cmd);
 

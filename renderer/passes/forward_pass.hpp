@@ -17,10 +17,11 @@ class ForwardPass {
  public:
   ForwardPass(const vkx::Device& device, const TextureSetLayout& textures);
 
-  // Draws into targets.display_target and copies it into targets.display, where the shading
-  // would have written the display image, ready for transfer reads.
-  void record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets, const DirectLightInputs& in,
-              api::Tonemap tone_curve) const;
+  // Draws, in `order` (the scene's camera_order), into targets.display_target and copies it
+  // into targets.display, where the shading would have written the display image, ready for
+  // transfer reads.
+  void record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
+              const FrameTargets& targets, const DirectLightInputs& in, api::Tonemap tone_curve) const;
 
  private:
   // One pipeline per material variant and specialisation of the light code and tone curve,

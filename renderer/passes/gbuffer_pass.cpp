@@ -41,8 +41,8 @@ GBufferPass::GBufferPass(const vkx::Device& device, const TextureSetLayout& text
   pipelines_.get({});  // the variant every scene without textures uses, made with the others at start
 }
 
-void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets,
-                         const vkx::Buffer& frame) const {
+void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
+                         const FrameTargets& targets, const vkx::Buffer& frame) const {
   for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
     vkx::DescriptorWriter(pipelines_.get(variant).descriptor_set())
         .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.handle())
@@ -63,7 +63,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, const Frame
           bound->bind(cmd);
           return bound->layout();
         },
-        [&](const scene::Draw& draw) { bound->push(cmd, scene.draw_material(draw)); });
+        [&](const scene::Draw& draw) { bound->push(cmd, scene.draw_material(draw)); }, order);
   }
   device_.cmd_end_rendering(cmd);
 

@@ -13,8 +13,10 @@ class GBufferPass {
  public:
   GBufferPass(const vkx::Device& device, const TextureSetLayout& textures);
 
-  // `frame` holds a gpu::GpuFrame. Leaves the colour targets ready for compute sampling.
-  void record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTargets& targets, const vkx::Buffer& frame) const;
+  // `frame` holds a gpu::GpuFrame; `order`: the scene's camera_order. Leaves the colour
+  // targets ready for compute sampling.
+  void record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
+              const FrameTargets& targets, const vkx::Buffer& frame) const;
 
  private:
   const vkx::Device& device_;

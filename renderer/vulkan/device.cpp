@@ -1,5 +1,6 @@
 #include "renderer/vulkan/device.hpp"
 
+#include "renderer/gpu_types.hpp"
 #include "renderer/vulkan/vk_check.hpp"
 
 #include <algorithm>
@@ -278,6 +279,12 @@ void Device::create_device() {
                              "(shaderInt64, shaderBufferInt64Atomics, shaderSubgroupExtendedTypes, subgroup "
                              "arithmetic and shuffles in compute), which the LPV passes need for deterministic "
                              "accumulation");
+  // The forward pass reads every shadow view of a frame from one uniform buffer.
+  const VkDeviceSize uniform_range = gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::mat4);
+  if (properties.properties.limits.maxUniformBufferRange < uniform_range)
+    throw std::runtime_error("device '" + info_.name + "' binds uniform buffers of at most " +
+                             std::to_string(properties.properties.limits.maxUniformBufferRange) + " bytes; the forward " +
+                             "pass needs " + std::to_string(uniform_range));
   VkPhysicalDeviceFeatures features10{};
   features10.shaderInt64 = VK_TRUE;
   VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};

@@ -49,6 +49,12 @@ LPV_CONST TONEMAP_NONE = 0u;
 LPV_CONST TONEMAP_REINHARD = 1u;
 LPV_CONST TONEMAP_ACES = 2u;
 
+// Lights a frame may have (api::limits::max_lights) and shadow views (a cube of six each): the
+// sizes of the forward pass's uniform buffers of them (24 KiB for the views; the device must
+// bind that much, Device checks).
+LPV_CONST SHADE_MAX_LIGHTS = 64u;
+LPV_CONST SHADE_MAX_SHADOW_VIEWS = 6u * SHADE_MAX_LIGHTS;
+
 // The images the shading writes (bits).
 LPV_CONST SHADE_OUTPUT_LINEAR = 1u;   // linear RGBA float
 LPV_CONST SHADE_OUTPUT_DISPLAY = 2u;  // display-encoded RGBA8
