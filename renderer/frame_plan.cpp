@@ -239,8 +239,9 @@ void plan_shading(FramePlan& plan, api::View view, bool display_only) {
     why_not = "indirect light: shaded from the G-buffer";
   plan.run[kForward] = why_not.empty();
   if (!plan.run[kForward]) return;
-  plan.run[kGBuffer] = plan.run[kShade] = false;
+  plan.run[kGBuffer] = plan.run[kShade] = plan.run[kReadback] = false;
   plan.reason[kGBuffer] = plan.reason[kShade] = "direct light only, into the 8-bit image: shaded by the forward pass";
+  plan.reason[kReadback] = "the forward pass copies its image to the host itself";
 }
 
 LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,

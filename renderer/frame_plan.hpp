@@ -89,8 +89,9 @@ inline constexpr std::size_t kMaxShadowTestDraws = 256;
 // How the camera's view is shaded, once the LPV's passes are planned: by the forward pass
 // (direct light while rasterising, straight into the 8-bit image) when the frame shows the
 // final or direct view without indirect light and only its 8-bit image is read back; else
-// by the G-buffer and the deferred shading. Both modes: the two ways give the same picture
-// (within one level of 8 bits), so this is a choice of method, not a simplification.
+// by the G-buffer and the deferred shading. The forward pass copies its image to the host
+// itself, so the readback pass is skipped with it. Both modes: the two ways give the same
+// picture (within one level of 8 bits), so this is a choice of method, not a simplification.
 // `display_only`: the frame reads back the 8-bit image and no linear one.
 void plan_shading(FramePlan& plan, api::View view, bool display_only);
 

@@ -23,7 +23,7 @@ FrameTargets::FrameTargets(const vkx::Device& device, std::uint32_t w, std::uint
   const VkDeviceSize pixels = VkDeviceSize(w) * h;
   const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   linear = vkx::Buffer(device, pixels * 16, storage, vkx::MemoryUse::gpu_only);
-  display = vkx::Buffer(device, pixels * 4, storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vkx::MemoryUse::gpu_only);
+  display = vkx::Buffer(device, pixels * 4, storage, vkx::MemoryUse::gpu_only);
   linear_readback = vkx::Buffer(device, pixels * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vkx::MemoryUse::readback);
   display_readback = vkx::Buffer(device, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vkx::MemoryUse::readback);
 }

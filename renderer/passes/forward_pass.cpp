@@ -75,7 +75,7 @@ void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
   }
   device_.cmd_end_rendering(cmd);
 
-  // Into the display buffer, rows top to bottom as the shading writes it.
+  // Into host memory, rows top to bottom as the shading writes the display image.
   const VkImageLayout src = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   vkx::transition(cmd, targets.display_target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, src,
                   VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
@@ -83,9 +83,9 @@ void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {targets.width, targets.height, 1};
-  vkCmdCopyImageToBuffer(cmd, targets.display_target.handle(), src, targets.display.handle(), 1, &region);
-  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_READ_BIT);
+  vkCmdCopyImageToBuffer(cmd, targets.display_target.handle(), src, targets.display_readback.handle(), 1, &region);
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                      VK_ACCESS_HOST_READ_BIT);
 }
 
 }  // namespace renderer

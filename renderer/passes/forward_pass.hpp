@@ -18,8 +18,8 @@ class ForwardPass {
   ForwardPass(const vkx::Device& device, const TextureSetLayout& textures);
 
   // Draws, in `order` (the scene's camera_order), into targets.display_target and copies it
-  // into targets.display, where the shading would have written the display image, ready for
-  // transfer reads.
+  // straight into targets.display_readback for the host (the frame's readback has nothing
+  // left to copy of it).
   void record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
               const FrameTargets& targets, const DirectLightInputs& in, api::Tonemap tone_curve) const;
 

@@ -173,3 +173,45 @@ TEST(PlanFrame, ConvergenceOnlyWhenAutomatic) {
 }
 
 }  // namespace
+
+namespace {
+
+using renderer::kForward;
+using renderer::kGBuffer;
+using renderer::kReadback;
+using renderer::kShade;
+
+TEST(PlanShading, ForwardOnlyForDirectLightPicturesReadBackIn8Bits) {
+  api::RenderRequest direct_only;
+  direct_only.lpv.enabled = false;
+  renderer::FramePlan p = plan(direct_only, cornell().lights, cornell());
+  renderer::plan_shading(p, api::View::final_, true);
+  EXPECT_TRUE(p.run[kForward]);
+  for (renderer::Pass skipped : {kGBuffer, kShade, kReadback}) {
+    EXPECT_FALSE(p.run[skipped]) << renderer::kPassNames[skipped];
+    EXPECT_FALSE(p.reason[skipped].empty()) << renderer::kPassNames[skipped] << " skipped without a reason";
+  }
+
+  p = plan(direct_only, cornell().lights, cornell());
+  renderer::plan_shading(p, api::View::final_, false);
+  EXPECT_FALSE(p.run[kForward]);
+  EXPECT_TRUE(p.run[kGBuffer] && p.run[kShade] && p.run[kReadback]);
+  EXPECT_NE(p.reason[kForward].find("linear"), std::string::npos) << p.reason[kForward];
+
+  api::RenderRequest albedo = direct_only;
+  albedo.output.view = api::View::albedo;
+  p = plan(albedo, cornell().lights, cornell());
+  renderer::plan_shading(p, api::View::albedo, true);
+  EXPECT_FALSE(p.run[kForward]);
+  EXPECT_NE(p.reason[kForward].find("albedo"), std::string::npos) << p.reason[kForward];
+
+  const api::RenderRequest with_lpv;  // the defaults: indirect light
+  p = plan(with_lpv, cornell().lights, cornell());
+  ASSERT_TRUE(p.run[renderer::kInject]);
+  renderer::plan_shading(p, api::View::final_, true);
+  EXPECT_FALSE(p.run[kForward]);
+  EXPECT_TRUE(p.run[kGBuffer] && p.run[kShade]);
+  EXPECT_NE(p.reason[kForward].find("indirect"), std::string::npos) << p.reason[kForward];
+}
+
+}  // namespace
