@@ -38,7 +38,6 @@ struct ShadowAtlas {
   std::uint32_t resolution;
   std::uint32_t layers;
   vkx::Image depth;
-  vkx::Image display_target;     // the forward pass draws the display image here
 };
 
 }  // namespace renderer
