@@ -65,24 +65,29 @@ struct GpuScene {
 
   // Binds the vertex and index buffers for drawing.
   void bind_geometry(VkCommandBuffer cmd) const;
-  // Draws every draw of the scene: `bind(variant)` binds the pipeline for the material
-  // variant and returns its layout; the material's texture is bound as set 1 and
-  // `push(draw)` sets the draw's push constants. `order`: indices into `draws`, all of
-  // them, grouped by variant (camera_order); empty: as they are.
-  template <typename Bind, typename Push>
-  void draw_all(VkCommandBuffer cmd, Bind bind, Push push, std::span<const std::uint32_t> order = {}) const {
-    std::uint32_t bound = kMaterialVariants;
-    VkPipelineLayout layout = VK_NULL_HANDLE;
+  // Draws every draw of the scene, its geometry bound first (nothing without geometry):
+  // `pipeline_of(variant)` is the pipeline of a material variant, bound (with its descriptor
+  // set) when the variant changes; the material's texture is bound as set 1 and the push
+  // constants are `constants_of(draw)`. `order`: indices into `draws`, all of them, grouped
+  // by variant (camera_order); empty: as they are.
+  template <typename PipelineOf, typename ConstantsOf>
+  void draw_all(VkCommandBuffer cmd, PipelineOf pipeline_of, ConstantsOf constants_of,
+                std::span<const std::uint32_t> order = {}) const {
+    if (index_count == 0) return;
+    bind_geometry(cmd);
+    const vkx::Pipeline* bound = nullptr;
+    std::uint32_t bound_variant = kMaterialVariants;
     for (std::size_t i = 0; i < draws.size(); ++i) {
       const scene::Draw& draw = draws[order.empty() ? i : order[i]];
       const MaterialVariant variant = material_variants[draw.material];
-      if (variant.index() != bound) {
-        layout = bind(variant);
-        bound = variant.index();
+      if (variant.index() != bound_variant) {
+        bound = &pipeline_of(variant);
+        bound->bind(cmd);
+        bound_variant = variant.index();
       }
       const VkDescriptorSet set = textures.set_of(draw.material);
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 1, 1, &set, 0, nullptr);
-      push(draw);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1, &set, 0, nullptr);
+      bound->push(cmd, constants_of(draw));
       vkCmdDrawIndexed(cmd, draw.index_count, 1, draw.first_index, 0, 0);
     }
   }

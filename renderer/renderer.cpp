@@ -554,6 +554,9 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
   VkCommandBuffer cmd = commands;
   const api::Lpv& lpv = frame.request.lpv;
   timer.begin(cmd);
+  // The camera's raster pass (G-buffer or forward) is the first to bind the shadow atlas: it
+  // needs its layout even when no map was drawn (no light samples it then).
+  if ((pass == kGBuffer || pass == kForward) && !frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
   switch (pass) {
     case kShadow:
       shadow.record(cmd, frame.gpu, *atlas, frame.lights.shadow_views);
@@ -562,8 +565,6 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       rsm.record(cmd, frame.gpu, *rsm_maps, rsm_view_buffer, light_buffer);
       break;
     case kGBuffer:
-      // The shading binds the atlas even when no map was drawn (no light samples it then).
-      if (!frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
       if (!frame.plan.run[kRsm] && frame.plan.run[kInject]) RsmPass::record_skipped(cmd, *rsm_maps);
       gbuffer.record(cmd, frame.gpu, frame.draw_order, *targets, frame_uniforms);
       break;
@@ -582,8 +583,6 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
                        *volumes);
       break;
     case kForward:
-      // The light code binds the atlas even when no map was drawn (no light samples it then).
-      if (!frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
       forward.record(cmd, frame.gpu, frame.draw_order, *targets, direct_light(frame), frame.request.output.tonemap);
       break;
     case kShade:

@@ -61,18 +61,9 @@ void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
   // Opaque black where nothing is drawn, as the shading encodes a pixel without a surface.
   vkx::begin_cleared_rendering(device_, cmd, views, targets.depth.view(), {targets.width, targets.height}, false,
                                vkx::ClearColors::all, 1.0f);
-  if (scene.index_count > 0) {
-    scene.bind_geometry(cmd);
-    const vkx::Pipeline* bound = nullptr;
-    scene.draw_all(
-        cmd,
-        [&](MaterialVariant variant) {
-          bound = &pipeline(variant, in, curve);
-          bound->bind(cmd);
-          return bound->layout();
-        },
-        [&](const scene::Draw& draw) { bound->push(cmd, scene.draw_material(draw)); }, order);
-  }
+  scene.draw_all(
+      cmd, [&](MaterialVariant variant) -> const vkx::Pipeline& { return pipeline(variant, in, curve); },
+      [&](const scene::Draw& draw) { return scene.draw_material(draw); }, order);
   device_.cmd_end_rendering(cmd);
 
   // Into host memory, rows top to bottom as the shading writes the display image.

@@ -53,18 +53,9 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
   // Position's w = 0 marks pixels with no surface; normal and albedo are read only elsewhere.
   vkx::begin_cleared_rendering(device_, cmd, views, targets.depth.view(), {targets.width, targets.height}, false,
                                vkx::ClearColors::first);
-  if (scene.index_count > 0) {
-    scene.bind_geometry(cmd);
-    const vkx::Pipeline* bound = nullptr;
-    scene.draw_all(
-        cmd,
-        [&](MaterialVariant variant) {
-          bound = &pipelines_.get(variant);
-          bound->bind(cmd);
-          return bound->layout();
-        },
-        [&](const scene::Draw& draw) { bound->push(cmd, scene.draw_material(draw)); }, order);
-  }
+  scene.draw_all(
+      cmd, [&](MaterialVariant variant) -> const vkx::Pipeline& { return pipelines_.get(variant); },
+      [&](const scene::Draw& draw) { return scene.draw_material(draw); }, order);
   device_.cmd_end_rendering(cmd);
 
   vkx::colors_to_compute(cmd, colors);

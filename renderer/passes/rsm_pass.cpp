@@ -63,18 +63,9 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
                                            maps.flux.layer_view(layer)};
     vkx::begin_cleared_rendering(device_, cmd, views, maps.depth.layer_view(layer),
                                  {maps.resolution, maps.resolution}, false);
-    if (scene.index_count > 0) {
-      scene.bind_geometry(cmd);
-      const vkx::Pipeline* bound = nullptr;
-      scene.draw_all(
-          cmd,
-          [&](MaterialVariant variant) {
-            bound = &pipelines_.get(rsm_variant(variant));
-            bound->bind(cmd);
-            return bound->layout();
-          },
-          [&](const scene::Draw& draw) { bound->push(cmd, DrawConstants{layer, draw.material}); });
-    }
+    scene.draw_all(
+        cmd, [&](MaterialVariant variant) -> const vkx::Pipeline& { return pipelines_.get(rsm_variant(variant)); },
+        [&](const scene::Draw& draw) { return DrawConstants{layer, draw.material}; });
     device_.cmd_end_rendering(cmd);
   }
   vkx::colors_to_compute(cmd, colors);
