@@ -252,12 +252,18 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
                                             "x" + std::to_string(request.lpv.grid.z) + " cells need " + mib(lpv_bytes) +
                                             ", over the budget of " + mib(kLpvBudgetBytes) + ": use fewer cells");
 
-  const std::uint64_t buffer_bytes = LpvVolumes::largest_buffer_bytes(request.lpv.grid);
+  const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
+                            std::to_string(request.lpv.grid.z) + " cells";
+  const std::uint64_t buffer_bytes = LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades);
   const std::uint64_t buffer_range = device.info().limits.maxStorageBufferRange;
   if (lpv && buffer_bytes > buffer_range)
-    throw api::RequestError("lpv.grid", std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) +
-                                            "x" + std::to_string(request.lpv.grid.z) + " cells need a storage buffer of " +
-                                            mib(buffer_bytes) + "; this device binds at most " + mib(buffer_range) +
+    throw api::RequestError("lpv.grid", cells + " need a storage buffer of " + mib(buffer_bytes) +
+                                            "; this device binds at most " + mib(buffer_range) + ": use fewer cells");
+  const std::uint64_t texels = LpvVolumes::largest_texel_buffer(request.lpv.grid, request.lpv.cascades);
+  const std::uint64_t texel_limit = device.info().limits.maxTexelBufferElements;
+  if (lpv && texels > texel_limit)
+    throw api::RequestError("lpv.grid", cells + " need a texel buffer of " + std::to_string(texels) +
+                                            " texels; this device binds at most " + std::to_string(texel_limit) +
                                             ": use fewer cells");
   if (!targets || targets->width != out.width || targets->height != out.height) {
     targets.reset();
@@ -501,38 +507,47 @@ api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup
 
 // Copies the RSMs and the accumulated grids to the host. Not timed: only for checks.
 LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv) const {
-  struct Copy {
-    const vkx::Image* image;
-    std::vector<glm::vec4>* into;
-  };
   LpvSnapshot snapshot;
   snapshot.rsm_resolution = rsm_maps->resolution;
   snapshot.rsm_layers = rsm_maps->layers;
-  std::vector<glm::vec4> channels[3];
-  std::vector<Copy> copies = {{&rsm_maps->position, &snapshot.rsm_position},
-                              {&rsm_maps->normal, &snapshot.rsm_normal},
-                              {&rsm_maps->flux, &snapshot.rsm_flux}};
-  for (int c = 0; c < 3; ++c) copies.push_back({&volumes->accumulated[c], &channels[c]});
-  for (const Copy& copy : copies) {
-    const vkx::ImageDesc& d = copy.image->desc();
-    const std::size_t texels = std::size_t(d.width) * d.height * (d.volume ? d.depth : d.layers);
+  // Runs the copy of `texels` texels that record_copy records into a readback buffer, and
+  // returns them.
+  auto read_back = [&](std::size_t texels, const auto& record_copy) {
     vkx::Buffer host(device, texels * sizeof(glm::vec4), VK_BUFFER_USAGE_TRANSFER_DST_BIT, vkx::MemoryUse::readback);
     device.run_once([&](VkCommandBuffer cmd) {
-      VkBufferImageCopy region{};
-      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, d.volume ? 1 : d.layers};
-      region.imageExtent = {d.width, d.height, d.volume ? d.depth : 1};
-      const VkImageLayout src = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-      vkx::transition(cmd, *copy.image, VK_IMAGE_LAYOUT_GENERAL, src, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                      VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-      vkCmdCopyImageToBuffer(cmd, copy.image->handle(), src, host.handle(), 1, &region);
-      vkx::transition(cmd, *copy.image, src, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+      record_copy(cmd, host.handle());
       vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                           VK_ACCESS_HOST_READ_BIT);
     });
     host.invalidate();
     const auto* texel = static_cast<const glm::vec4*>(host.mapped());
-    copy.into->assign(texel, texel + texels);
+    return std::vector<glm::vec4>(texel, texel + texels);
+  };
+  for (auto [image, into] : {std::pair{&rsm_maps->position, &snapshot.rsm_position},
+                             std::pair{&rsm_maps->normal, &snapshot.rsm_normal},
+                             std::pair{&rsm_maps->flux, &snapshot.rsm_flux}}) {
+    const vkx::ImageDesc& d = image->desc();
+    *into = read_back(std::size_t(d.width) * d.height * d.layers, [&](VkCommandBuffer cmd, VkBuffer host) {
+      VkBufferImageCopy region{};
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, d.layers};
+      region.imageExtent = {d.width, d.height, 1};
+      const VkImageLayout src = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+      vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_GENERAL, src, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                      VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+      vkCmdCopyImageToBuffer(cmd, image->handle(), src, host, 1, &region);
+      vkx::transition(cmd, *image, src, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    });
+  }
+  std::vector<glm::vec4> channels[3];
+  for (int c = 0; c < 3; ++c) {
+    const vkx::Buffer& grid = volumes->accumulated[c].buffer();
+    channels[c] = read_back(volumes->accumulated[c].texels(), [&](VkCommandBuffer cmd, VkBuffer host) {
+      vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+      const VkBufferCopy region{0, 0, grid.size()};
+      vkCmdCopyBuffer(cmd, grid.handle(), host, 1, &region);
+    });
   }
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
     const CascadePlacement& p = lpv.cascades[c];

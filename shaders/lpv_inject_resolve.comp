@@ -12,10 +12,10 @@ layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GR
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 layout(std430, set = 0, binding = 1) buffer Injected { int64_t injected[]; };
-layout(set = 0, binding = 2, rgba32f) uniform writeonly image3D grids;
-layout(set = 0, binding = 3, rgba32f) uniform writeonly image3D accumulated_r;
-layout(set = 0, binding = 4, rgba32f) uniform writeonly image3D accumulated_g;
-layout(set = 0, binding = 5, rgba32f) uniform writeonly image3D accumulated_b;
+layout(std430, set = 0, binding = 2) writeonly buffer Grids { vec4 grids[]; };
+layout(std430, set = 0, binding = 3) writeonly buffer AccumulatedR { vec4 accumulated_r[]; };
+layout(std430, set = 0, binding = 4) writeonly buffer AccumulatedG { vec4 accumulated_g[]; };
+layout(std430, set = 0, binding = 5) writeonly buffer AccumulatedB { vec4 accumulated_b[]; };
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_record; } push;
 
@@ -34,13 +34,13 @@ void main() {
         sh[c][k] = from_fixed(injected[i], 1.0 / lpv.scales.x);
         injected[i] = 0l;
       }
-      imageStore(grids, lpv_grid_texel(cell, int(c), 0u, g.dims.z), sh[c] * lpv_outgoing_scale(sh[c]));
+      grids[lpv_grid_texel(cell, int(c), 0u, g.dims.xyz)] = lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c]));
       flux[c] = sh_flux(sh[c]);
     }
-    ivec3 accumulated = lpv_accumulated_texel(cell, push.cascade, g.dims.z);
-    imageStore(accumulated_r, accumulated, sh[0]);
-    imageStore(accumulated_g, accumulated, sh[1]);
-    imageStore(accumulated_b, accumulated, sh[2]);
+    int accumulated = lpv_accumulated_texel(cell, push.cascade, g.dims.xyz);
+    accumulated_r[accumulated] = sh[0];
+    accumulated_g[accumulated] = sh[1];
+    accumulated_b[accumulated] = sh[2];
   }
   add_grid_flux(flux, push.stats_record, lpv.scales.x);
 }

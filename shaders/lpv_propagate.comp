@@ -9,30 +9,39 @@
 // From the second iteration on, the geometry volume on the face shared with the neighbour
 // blocks part of the light (none in the first, where the injecting surface would block itself).
 //
-// Speed: occlusion and bounces are specialization constants, not branches on the frame's
-// flags: lavapipe runs both sides of a branch under a lane mask, so a run-time flag would make
-// every face pay for the blocking and reflection code (a third of the pass) even when off.
-// The first iteration of an occluded frame runs the occluded shader with no blockers (the
-// same result up to float rounding: flux * 1), so a frame compiles one variant, not two
-// (lavapipe compiles at first use; this shader takes a sixth of a second).
-// The 30 faces are written out by macros with their directions and normals as literals
-// (lavapipe's compiler does not unroll loops this large), so each face costs one 4-wide dot
-// per channel plus two additions (a cosine lobe along an axis has two non-zero terms).
+// Speed (lavapipe runs each invocation as one lane of an 8-wide SIMD program):
+// - Each invocation walks a column of LPV_PROPAGATE_COLUMN cells along z, so the cells below
+//   and above, and the face below, are carried from one step to the next instead of loaded
+//   again, and the flux statistics are summed in the column and added once.
+// - The grid holds what a cell sends in sender form (lpv_sender_form): the 5 face values of
+//   a neighbour are then one shared term plus or minus one coefficient each.
+// - The far and side faces are summed apart and weighted by their solid angles once per cell.
+// - Occlusion and bounces are specialization constants, not branches on the frame's flags:
+//   lavapipe runs both sides of a branch under a lane mask, so a flag would make every face pay
+//   for the blocking and reflection code even when off. The first iteration of an occluded
+//   frame runs the occluded shader with no blockers (the same result up to float rounding:
+//   flux * 1), so a frame compiles one variant, not two (lavapipe compiles at first use).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
 
-layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
+layout(local_size_x = LPV_PROPAGATE_GROUP, local_size_y = LPV_PROPAGATE_GROUP, local_size_z = 1) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(set = 0, binding = 1, rgba32f) uniform image3D grids;
-layout(set = 0, binding = 2, rgba32f) uniform image3D accumulated_r;
-layout(set = 0, binding = 3, rgba32f) uniform image3D accumulated_g;
-layout(set = 0, binding = 4, rgba32f) uniform image3D accumulated_b;
+// The grids and the accumulated light are read as texel buffers and written as storage
+// buffers, views of the same memory (vkx::TexelBuffer says why).
+layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer grids;
+layout(set = 0, binding = 2, rgba32f) uniform readonly imageBuffer accumulated_r;
+layout(set = 0, binding = 3, rgba32f) uniform readonly imageBuffer accumulated_g;
+layout(set = 0, binding = 4, rgba32f) uniform readonly imageBuffer accumulated_b;
 layout(set = 0, binding = 5, rgba32f) uniform readonly image3D faces;
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
+layout(std430, set = 0, binding = 7) writeonly buffer GridStore { vec4 grid_store[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer AccumulatedR { vec4 accumulated_store_r[]; };
+layout(std430, set = 0, binding = 9) writeonly buffer AccumulatedG { vec4 accumulated_store_g[]; };
+layout(std430, set = 0, binding = 10) writeonly buffer AccumulatedB { vec4 accumulated_store_b[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_record; uint iteration; } push;
 
 // The faces' blocking potentials apply (when the frame has a geometry volume; from the second
@@ -42,125 +51,182 @@ layout(constant_id = 1) const bool BOUNCES = false;
 
 #include "shared/lpv_grid_flux.glsl"
 
-const float S5 = 0.4472135955;  // 1 / sqrt(5)
-const float T5 = 0.8944271910;  // 2 / sqrt(5)
-// The cells gather in lobe weights, sum of flux * (1, -n.y, n.z, -n.x) over the faces' normals
-// n; times LOBE_SCALE that is the sum of the cosine lobes flux/pi * sh_cosine_lobe(n). Adding
-// weights costs one addition per face and channel where adding lobes cost a multiplication too.
-const vec4 LOBE_SCALE = vec4(SH_COSINE_C0, SH_COSINE_C1, SH_COSINE_C1, SH_COSINE_C1) / LPV_PI;
-vec4 lobe_weights(vec3 n) { return vec4(1.0, -n.y, n.z, -n.x); }
+const float SQRT5 = 2.2360679775;
 
-// The weight a lobe along each axis adds to its one non-constant term.
-#define LOBE_AXIS_PX(sh, flux) sh.w -= (flux)
-#define LOBE_AXIS_NX(sh, flux) sh.w += (flux)
-#define LOBE_AXIS_PY(sh, flux) sh.y -= (flux)
-#define LOBE_AXIS_NY(sh, flux) sh.y += (flux)
-#define LOBE_AXIS_PZ(sh, flux) sh.z += (flux)
-#define LOBE_AXIS_NZ(sh, flux) sh.z -= (flux)
+// What a cell sends, per colour channel, in sender form; zero for a cell past the grid's edge.
+struct Sender {
+  vec4 e[3];
+};
 
-// dot() as multiply-adds: with a constant basis (a face's, or its reverse for the blockers),
-// lavapipe then drops the terms that are zero, which it keeps in dot(): about 130 fewer of
-// the shader's some 4400 instructions (counted in gdb's disassembly of the JIT code, the
-// pages scripts/profile-jit.sh finds).
-float fdot(vec4 a, vec4 b) { return fma(a.x, b.x, fma(a.y, b.y, fma(a.z, b.z, a.w * b.w))); }
+// The light a cell gathers, per channel, in the axes' order (constant, x, y, z): the fluxes
+// through far faces and through side faces, each summed as flux * (1, n) over the faces'
+// normals n and weighted by its solid angle at the end; and (bounces) the light the blockers
+// reflect, already weighted.
+struct Gathered {
+  vec4 far[3];
+  vec4 side[3];
+  vec4 reflected[3];
+};
 
-// One face: flux Omega * I(w) of each channel through it (less what the blockers stop), into
-// this cell as a cosine lobe along the face's normal axis. Omega is folded into the basis,
-// a constant: Omega * max(0, x) = max(0, Omega * x).
-#define FACE(W, OMEGA, AXIS)                                                                        \
-  {                                                                                                 \
-    const vec4 basis = (OMEGA) * sh_basis(W);                                                       \
-    vec3 flux = max(vec3(fdot(sh_r, basis), fdot(sh_g, basis), fdot(sh_b, basis)), vec3(0.0));       \
-    if (OCCLUDED) flux *= transmitted(blocking, albedo, W, flux, gathered);                        \
-    gathered[0].x += flux.r;                                                                        \
-    gathered[1].x += flux.g;                                                                        \
-    gathered[2].x += flux.b;                                                                        \
-    LOBE_AXIS_##AXIS(gathered[0], flux.r);                                                          \
-    LOBE_AXIS_##AXIS(gathered[1], flux.g);                                                          \
-    LOBE_AXIS_##AXIS(gathered[2], flux.b);                                                          \
-  }
-
-// The fraction of `flux` (travelling along w) the blockers on the face let through. With
-// bounces, the light they stop is reflected back, diffusely around their mean normal.
-float transmitted(vec4 blocking, vec3 albedo, vec3 w, vec3 flux, inout vec4 gathered[3]) {
-  float blocked = clamp(fdot(blocking, sh_basis(-w)), 0.0, 1.0);
-  if (BOUNCES && albedo != vec3(0.0) && blocked > 0.0) {
-    vec3 mean_normal = vec3(-blocking.w, -blocking.y, blocking.z);
-    vec4 weights = lobe_weights(dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -w);
-    vec3 reflected = flux * blocked * albedo;
-    gathered[0] += reflected.r * weights;
-    gathered[1] += reflected.g * weights;
-    gathered[2] += reflected.b * weights;
-  }
-  return 1.0 - blocked;
+Sender load_sender(ivec3 cell, uint which, uvec3 dims, float inside) {
+  int texel = lpv_grid_texel(cell, 0, which, dims);
+  return Sender(vec4[3](imageLoad(grids, texel) * inside, imageLoad(grids, texel + 1) * inside,
+                        imageLoad(grids, texel + 2) * inside));
 }
 
-// The light of the neighbour at cell - STEP, travelling along +STEP: its far face (normal
-// along the travel) and its four side faces (normals across it). A neighbour past the grid's
-// edge sends nothing: it is read at the nearest cell and weighted by zero, which lavapipe runs
-// faster than a branch around the whole neighbour (both sides of a branch run under a mask).
-#define NEIGHBOUR(STEP, AXIS_INDEX, FAR, W_FAR, S1, W1, S2, W2, S3, W3, S4, W4)                    \
-  {                                                                                                 \
-    ivec3 neighbour = cell - STEP;                                                                  \
-    float inside = all(greaterThanEqual(neighbour, ivec3(0))) && all(lessThan(neighbour, dims)) ? 1.0 : 0.0; \
-    neighbour = clamp(neighbour, ivec3(0), dims - 1);                                               \
-    vec4 sh_r = imageLoad(grids, lpv_grid_texel(neighbour, 0, source, depth)) * inside;             \
-    vec4 sh_g = imageLoad(grids, lpv_grid_texel(neighbour, 1, source, depth)) * inside;             \
-    vec4 sh_b = imageLoad(grids, lpv_grid_texel(neighbour, 2, source, depth)) * inside;             \
-    vec4 blocking = vec4(0.0);                                                                      \
-    vec3 albedo = vec3(0.0);                                                                        \
-    if (OCCLUDED) {                                                                                 \
-      ivec3 lower = min(cell, neighbour);                                                           \
-      blocking = imageLoad(faces, ivec3(6 * lower.x + AXIS_INDEX, lower.yz)) * blocking_on;         \
-      if (BOUNCES) albedo = imageLoad(faces, ivec3(6 * lower.x + 3 + AXIS_INDEX, lower.yz)).rgb;    \
-    }                                                                                               \
-    FACE(W_FAR, LPV_FAR_FACE_SOLID_ANGLE, FAR)                                                      \
-    FACE(W1, LPV_SIDE_FACE_SOLID_ANGLE, S1)                                                         \
-    FACE(W2, LPV_SIDE_FACE_SOLID_ANGLE, S2)                                                         \
-    FACE(W3, LPV_SIDE_FACE_SOLID_ANGLE, S3)                                                         \
-    FACE(W4, LPV_SIDE_FACE_SOLID_ANGLE, S4)                                                         \
+// The blocking SH of a face as h = (1 - its constant term, its linear terms / sqrt(5)) in the
+// axes' order, so that the fraction it lets through along w is clamp(h.x + sqrt(5) <h.yzw, w>,
+// 0, 1) (the face's blocking potential is B(-w)); (1, 0, 0, 0), all through, when off.
+vec4 face_transmission(vec4 blocking, float on) {
+  vec4 g = blocking * on;
+  return vec4(1.0 - SH_C0 * g.x, vec3(-g.w, -g.y, g.z) * (SH_C1 / SQRT5));
+}
+
+// One channel of a neighbour on axis a, travelling along sigma * a, in the axes' order
+// permuted so that a comes first (e = (A, P_a, P_b, P_c), the accumulators likewise): the
+// far face (value A + sqrt(5) sigma P_a) and the side faces +b, -b, +c, -c (values
+// A + 2 sigma P_a +- P_b, +- P_c), each clamped at zero and times what its blockers let
+// through (t_far, t_side).
+void receive(inout vec4 far, inout vec4 side, vec4 e, float sigma, float t_far, vec4 t_side) {
+  float f = max(e.x + (sigma * SQRT5) * e.y, 0.0) * t_far;
+  float shared_term = e.x + (2.0 * sigma) * e.y;
+  vec4 s = max(vec4(shared_term + e.z, shared_term - e.z, shared_term + e.w, shared_term - e.w), vec4(0.0)) * t_side;
+  far.x += f;
+  far.y += sigma * f;
+  side.x += (s.x + s.y) + (s.z + s.w);
+  side.z += s.x - s.y;
+  side.w += s.z - s.w;
+}
+
+// The light the blockers of a face stop, reflected back (bounces: 2): diffuse around their
+// mean normal, times their mean albedo. `unblocked` is the face's flux before blocking
+// (solid angle included), w its direction.
+void reflect_blocked(inout Gathered g, vec4 blocking, vec3 albedo, vec3 w, vec3 unblocked, float blocked) {
+  vec3 mean_normal = vec3(-blocking.w, -blocking.y, blocking.z);
+  vec3 n = dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -w;
+  vec3 reflected = unblocked * blocked * albedo;
+  for (int c = 0; c < 3; ++c) g.reflected[c] += reflected[c] * vec4(1.0, n);
+}
+
+// The 5 faces a neighbour's light enters through, for bounces: the same values as receive(),
+// in world axes, with the light its blockers stop reflected.
+void reflect_neighbour(inout Gathered g, Sender n, vec4 blocking, vec3 albedo, vec3 a, vec3 b, vec3 c) {
+  vec3 dirs[5] = vec3[5](a, (2.0 * a + b) / SQRT5, (2.0 * a - b) / SQRT5, (2.0 * a + c) / SQRT5, (2.0 * a - c) / SQRT5);
+  for (int f = 0; f < 5; ++f) {
+    vec3 w = dirs[f];
+    float omega = f == 0 ? LPV_FAR_FACE_SOLID_ANGLE : LPV_SIDE_FACE_SOLID_ANGLE;
+    vec3 unblocked;
+    for (int k = 0; k < 3; ++k) unblocked[k] = omega * max(n.e[k].x + SQRT5 * dot(n.e[k].yzw, w), 0.0);
+    float blocked = clamp(dot(blocking, sh_basis(-w)), 0.0, 1.0);
+    reflect_blocked(g, blocking, albedo, w, unblocked, blocked);
   }
+}
+
+// Adds the light of neighbour n on axis `axis` (0, 1, 2 = x, y, z), travelling along sigma
+// times it, entering through faces with blocking SH `blocking` (zero when not occluded).
+void gather(inout Gathered g, Sender n, int axis, float sigma, vec4 blocking, float blocking_on, vec3 albedo) {
+  vec4 h = face_transmission(blocking, blocking_on);
+  // h and the sender forms in the axes' order permuted so that `axis` comes first.
+  if (axis == 1) h = h.xzwy;
+  if (axis == 2) h = h.xwyz;
+  float t_far = 1.0;
+  vec4 t_side = vec4(1.0);
+  if (OCCLUDED) {
+    t_far = clamp(h.x + (sigma * SQRT5) * h.y, 0.0, 1.0);
+    float shared_term = h.x + (2.0 * sigma) * h.y;
+    t_side = clamp(vec4(shared_term + h.z, shared_term - h.z, shared_term + h.w, shared_term - h.w), 0.0, 1.0);
+  }
+  for (int c = 0; c < 3; ++c) {
+    if (axis == 0) receive(g.far[c], g.side[c], n.e[c], sigma, t_far, t_side);
+    if (axis == 1) receive(g.far[c].xzwy, g.side[c].xzwy, n.e[c].xzwy, sigma, t_far, t_side);
+    if (axis == 2) receive(g.far[c].xwyz, g.side[c].xwyz, n.e[c].xwyz, sigma, t_far, t_side);
+  }
+  if (BOUNCES) {
+    vec3 a = vec3(0.0), b = vec3(0.0), c = vec3(0.0);
+    a[axis] = sigma;
+    b[(axis + 1) % 3] = 1.0;
+    c[(axis + 2) % 3] = 1.0;
+    reflect_neighbour(g, n, blocking * blocking_on, albedo, a, b, c);
+  }
+}
+
+vec4 face_blocking(ivec3 cell, int axis) { return OCCLUDED ? imageLoad(faces, ivec3(6 * cell.x + axis, cell.yz)) : vec4(0.0); }
+vec3 face_albedo(ivec3 cell, int axis) {
+  return BOUNCES ? imageLoad(faces, ivec3(6 * cell.x + 3 + axis, cell.yz)).rgb : vec3(0.0);
+}
 
 void main() {
-  GpuLpvCascade g = lpv.cascades[push.cascade];
-  ivec3 dims = ivec3(g.dims.xyz);
-  // Invocations past the grid (dims not a multiple of the group) work on its last cell and
+  GpuLpvCascade grid = lpv.cascades[push.cascade];
+  uvec3 udims = grid.dims.xyz;
+  ivec3 dims = ivec3(udims);
+  // Invocations past the grid (dims not a multiple of the group) work on its last column and
   // store nothing.
-  bool in_grid = all(lessThan(gl_GlobalInvocationID, uvec3(dims)));
-  ivec3 cell = min(ivec3(gl_GlobalInvocationID), dims - 1);
-  uint depth = g.dims.z;
+  bool in_grid = all(lessThan(gl_GlobalInvocationID.xy, udims.xy));
+  ivec2 xy = min(ivec2(gl_GlobalInvocationID.xy), dims.xy - 1);
+  int z_begin = int(gl_WorkGroupID.z * LPV_PROPAGATE_COLUMN);
+  int z_end = min(z_begin + int(LPV_PROPAGATE_COLUMN), dims.z);
   uint source = (push.iteration + 1u) & 1u;  // iteration 1 reads grid 0 and writes grid 1
   uint target = push.iteration & 1u;
   float blocking_on = push.iteration >= 2u ? 1.0 : 0.0;
 
-  vec4 gathered[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
-  NEIGHBOUR(ivec3(1, 0, 0), 0, PX, vec3(1, 0, 0), PY, vec3(T5, S5, 0), NY, vec3(T5, -S5, 0), PZ, vec3(T5, 0, S5),
-            NZ, vec3(T5, 0, -S5))
-  NEIGHBOUR(ivec3(-1, 0, 0), 0, NX, vec3(-1, 0, 0), PY, vec3(-T5, S5, 0), NY, vec3(-T5, -S5, 0), PZ,
-            vec3(-T5, 0, S5), NZ, vec3(-T5, 0, -S5))
-  NEIGHBOUR(ivec3(0, 1, 0), 1, PY, vec3(0, 1, 0), PX, vec3(S5, T5, 0), NX, vec3(-S5, T5, 0), PZ, vec3(0, T5, S5),
-            NZ, vec3(0, T5, -S5))
-  NEIGHBOUR(ivec3(0, -1, 0), 1, NY, vec3(0, -1, 0), PX, vec3(S5, -T5, 0), NX, vec3(-S5, -T5, 0), PZ,
-            vec3(0, -T5, S5), NZ, vec3(0, -T5, -S5))
-  NEIGHBOUR(ivec3(0, 0, 1), 2, PZ, vec3(0, 0, 1), PX, vec3(S5, 0, T5), NX, vec3(-S5, 0, T5), PY, vec3(0, S5, T5),
-            NY, vec3(0, -S5, T5))
-  NEIGHBOUR(ivec3(0, 0, -1), 2, NZ, vec3(0, 0, -1), PX, vec3(S5, 0, -T5), NX, vec3(-S5, 0, -T5), PY,
-            vec3(0, S5, -T5), NY, vec3(0, -S5, -T5))
+  // A neighbour past the grid's edge sends nothing: it is read at the nearest cell and weighted
+  // by zero, which lavapipe runs faster than a branch (both sides of a branch run under a mask).
+  ivec2 lower_xy = max(xy - 1, ivec2(0));
+  ivec2 upper_xy = min(xy + 1, dims.xy - 1);
+  vec2 lower_inside = vec2(greaterThan(xy, ivec2(0)));
+  vec2 upper_inside = vec2(lessThan(xy, dims.xy - 1));
 
-  for (int c = 0; c < 3; ++c) gathered[c] *= LOBE_SCALE;
+  Sender below = load_sender(ivec3(xy, max(z_begin - 1, 0)), source, udims, z_begin > 0 ? 1.0 : 0.0);
+  Sender here = load_sender(ivec3(xy, z_begin), source, udims, 1.0);
+  vec4 face_below = face_blocking(ivec3(xy, max(z_begin - 1, 0)), 2);
+  vec3 albedo_below = face_albedo(ivec3(xy, max(z_begin - 1, 0)), 2);
+  vec3 column_flux = vec3(0.0);
+  for (int z = z_begin; z < z_end; ++z) {
+    ivec3 cell = ivec3(xy, z);
+    Sender above = load_sender(ivec3(xy, min(z + 1, dims.z - 1)), source, udims, z + 1 < dims.z ? 1.0 : 0.0);
+    vec4 face_above = face_blocking(cell, 2);
+    vec3 albedo_above = face_albedo(cell, 2);
 
-  vec3 flux = vec3(0.0);
-  if (in_grid) {
-    // What this cell sends in the next iteration: its SH times the outgoing scale, so that its
-    // face fluxes, negative ones dropped, add up to its flux (see lpv_outgoing_scale).
+    Gathered g;
     for (int c = 0; c < 3; ++c) {
-      imageStore(grids, lpv_grid_texel(cell, c, target, depth), gathered[c] * lpv_outgoing_scale(gathered[c]));
-      flux[c] = sh_flux(gathered[c]);
+      g.far[c] = vec4(0.0);
+      g.side[c] = vec4(0.0);
+      g.reflected[c] = vec4(0.0);
     }
-    ivec3 texel = lpv_accumulated_texel(cell, push.cascade, depth);
-    imageStore(accumulated_r, texel, imageLoad(accumulated_r, texel) + gathered[0]);
-    imageStore(accumulated_g, texel, imageLoad(accumulated_g, texel) + gathered[1]);
-    imageStore(accumulated_b, texel, imageLoad(accumulated_b, texel) + gathered[2]);
+    ivec3 left = ivec3(lower_xy.x, xy.y, z), right = ivec3(upper_xy.x, xy.y, z);
+    ivec3 front = ivec3(xy.x, lower_xy.y, z), back = ivec3(xy.x, upper_xy.y, z);
+    gather(g, load_sender(left, source, udims, lower_inside.x), 0, 1.0, face_blocking(left, 0), blocking_on,
+           face_albedo(left, 0));
+    gather(g, load_sender(right, source, udims, upper_inside.x), 0, -1.0, face_blocking(cell, 0), blocking_on,
+           face_albedo(cell, 0));
+    gather(g, load_sender(front, source, udims, lower_inside.y), 1, 1.0, face_blocking(front, 1), blocking_on,
+           face_albedo(front, 1));
+    gather(g, load_sender(back, source, udims, upper_inside.y), 1, -1.0, face_blocking(cell, 1), blocking_on,
+           face_albedo(cell, 1));
+    gather(g, below, 2, 1.0, face_below, blocking_on, albedo_below);
+    gather(g, above, 2, -1.0, face_above, blocking_on, albedo_above);
+
+    if (in_grid) {
+      int texel = lpv_grid_texel(cell, 0, target, udims);
+      int accumulated = lpv_accumulated_texel(cell, push.cascade, udims);
+      vec4 sh[3];
+      for (int c = 0; c < 3; ++c) {
+        // Lobe weights (1, n) summed over the faces, into the SH basis's order and scale.
+        vec4 w = LPV_FAR_FACE_SOLID_ANGLE * g.far[c] + LPV_SIDE_FACE_SOLID_ANGLE * g.side[c] + g.reflected[c];
+        sh[c] = vec4(w.x * SH_COSINE_C0, vec3(-w.z, w.w, -w.y) * SH_COSINE_C1) / LPV_PI;
+        // What this cell sends in the next iteration: its SH times the outgoing scale, so that
+        // its face fluxes, negative ones dropped, add up to its flux (see lpv_outgoing_scale).
+        grid_store[texel + c] = lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c]));
+        column_flux[c] += sh_flux(sh[c]);
+      }
+      accumulated_store_r[accumulated] = imageLoad(accumulated_r, accumulated) + sh[0];
+      accumulated_store_g[accumulated] = imageLoad(accumulated_g, accumulated) + sh[1];
+      accumulated_store_b[accumulated] = imageLoad(accumulated_b, accumulated) + sh[2];
+    }
+    below = here;
+    here = above;
+    face_below = face_above;
+    albedo_below = albedo_above;
   }
-  add_grid_flux(flux, push.stats_record, lpv.scales.x);
+  add_grid_flux(column_flux, push.stats_record, lpv.scales.x);
 }

@@ -41,9 +41,9 @@ layout(std140, set = 0, binding = 9) uniform Lpv { GpuLpv lpv; };
 // Read with imageLoad and filtered here: lavapipe's trilinear sampler lookups cost more than
 // the eight loads and weights written out (the pass took 19 ms at 512^2 with them, 17 without,
 // when this was changed).
-layout(set = 0, binding = 10, rgba32f) uniform readonly image3D accumulated_r;
-layout(set = 0, binding = 11, rgba32f) uniform readonly image3D accumulated_g;
-layout(set = 0, binding = 12, rgba32f) uniform readonly image3D accumulated_b;
+layout(set = 0, binding = 10, rgba32f) uniform readonly imageBuffer accumulated_r;
+layout(set = 0, binding = 11, rgba32f) uniform readonly imageBuffer accumulated_g;
+layout(set = 0, binding = 12, rgba32f) uniform readonly imageBuffer accumulated_b;
 layout(std430, set = 0, binding = 13) writeonly buffer Display { uint display_pixels[]; };
 #include "shared/direct_light.glsl"
 #include "shared/display_encode.glsl"
@@ -52,7 +52,7 @@ layout(std430, set = 0, binding = 13) writeonly buffer Display { uint display_pi
 // surface with normal n: trilinear between cell centres, then E = <I, cosine lobe of -n> / s^2
 // (a cell's intensity per unit face area is the radiance that crosses it). q is clamped to
 // the centres of the border cells, so the filter never mixes in the next cascade, stacked
-// above this one in the same images.
+// above this one in the same buffers.
 vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   GpuLpvCascade g = lpv.cascades[c];
   ivec3 last = ivec3(g.dims.xyz) - 1;
@@ -65,7 +65,7 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   for (uint corner = 0u; corner < 8u; ++corner) {
     bvec3 up = bvec3(corner & 1u, corner & 2u, corner & 4u);
     vec3 w3 = mix(1.0 - f, f, up);
-    ivec3 cell = lpv_accumulated_texel(mix(low, high, up), c, g.dims.z);
+    int cell = lpv_accumulated_texel(mix(low, high, up), c, g.dims.xyz);
     e += (w3.x * w3.y * w3.z) * vec3(dot(imageLoad(accumulated_r, cell), lobe), dot(imageLoad(accumulated_g, cell), lobe),
                                      dot(imageLoad(accumulated_b, cell), lobe));
   }
@@ -99,7 +99,7 @@ vec3 lpv_cell_view(vec3 p) {
     GpuLpvCascade g = lpv.cascades[c];
     vec3 q = lpv_grid_position(g, p);
     if (lpv_inside_distance(g, q) < 0.0) continue;
-    ivec3 cell = lpv_accumulated_texel(ivec3(min(uvec3(q), g.dims.xyz - 1u)), c, g.dims.z);
+    int cell = lpv_accumulated_texel(ivec3(min(uvec3(q), g.dims.xyz - 1u)), c, g.dims.xyz);
     vec3 dc = vec3(imageLoad(accumulated_r, cell).x, imageLoad(accumulated_g, cell).x, imageLoad(accumulated_b, cell).x);
     return max(dc, vec3(0.0)) * SH_C0 / (g.origin.w * g.origin.w);
   }

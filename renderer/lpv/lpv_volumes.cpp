@@ -10,8 +10,9 @@ namespace renderer {
 namespace {
 
 constexpr VkDeviceSize kInjectedBytesPerCell = 12 * 8;
-constexpr VkDeviceSize kGridBytesPerCell = 2 * 3 * 16;
-constexpr VkDeviceSize kAccumulatedBytesPerCell = 3 * 16;
+constexpr VkDeviceSize kGridTexelsPerCell = 2 * 3;  // two grids of three channels
+constexpr VkDeviceSize kGridBytesPerCell = kGridTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
+constexpr VkDeviceSize kAccumulatedBytesPerCell = 3 * vkx::TexelBuffer::kTexelBytes;
 constexpr VkDeviceSize kCornerBytes = gpu::LPV_GV_SOURCES * gpu::LPV_GV_WORDS * 8 + 2 * 16;
 constexpr VkDeviceSize kFaceBytesPerCell = 6 * 16;
 constexpr std::size_t kRecordInt64s = gpu::LPV_FLUX_SLOTS * gpu::LPV_FLUX_SLOT_INT64S;  // one flux_stats record
@@ -52,16 +53,21 @@ std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades) {
          cell_count(dims + 1u) * kCornerBytes;
 }
 
-std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims) {
-  return std::max(cell_count(dims) * kInjectedBytesPerCell, cell_count(dims + 1u) * kCornerBytes);
+std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades) {
+  return std::max({cell_count(dims) * kInjectedBytesPerCell, cell_count(dims + 1u) * kCornerBytes,
+                   largest_texel_buffer(dims, cascades) * vkx::TexelBuffer::kTexelBytes});
+}
+
+std::uint64_t LpvVolumes::largest_texel_buffer(glm::uvec3 dims, std::uint32_t cascades) {
+  return cell_count(dims) * std::max<std::uint64_t>(kGridTexelsPerCell, cascades);
 }
 
 LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
     : dims(d),
       cascades(c),
-      grids(volume(device, 3 * d.x, d.y, 2 * d.z)),
-      accumulated{volume(device, d.x, d.y, c * d.z), volume(device, d.x, d.y, c * d.z),
-                  volume(device, d.x, d.y, c * d.z)},
+      grids(device, cell_count(d) * kGridTexelsPerCell),
+      accumulated{vkx::TexelBuffer(device, cell_count(d) * c), vkx::TexelBuffer(device, cell_count(d) * c),
+                  vkx::TexelBuffer(device, cell_count(d) * c)},
       corners(volume(device, 2 * (d.x + 1), d.y + 1, d.z + 1)),
       faces(volume(device, 6 * d.x, d.y, d.z)) {
   const VkDeviceSize cells = cell_count(d);
@@ -71,14 +77,17 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
   device.run_once([&](VkCommandBuffer cmd) {
     // The injection resolve clears its accumulators after reading them; they start cleared.
     vkCmdFillBuffer(cmd, injected.handle(), 0, VK_WHOLE_SIZE, 0);
+    for (const vkx::TexelBuffer* b : {&accumulated[0], &accumulated[1], &accumulated[2]})
+      vkCmdFillBuffer(cmd, b->buffer().handle(), 0, VK_WHOLE_SIZE, 0);
     // The faces are read (with zero effect) before a geometry volume was ever built.
-    for (const vkx::Image* image : {&grids, &accumulated[0], &accumulated[1], &accumulated[2], &corners, &faces})
+    for (const vkx::Image* image : {&corners, &faces})
       vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
                       0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkClearColorValue zero{};
     const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    for (const vkx::Image* image : {&accumulated[0], &accumulated[1], &accumulated[2], &faces})
-      vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
+    vkCmdClearColorImage(cmd, faces.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
+    vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   });
 }
 

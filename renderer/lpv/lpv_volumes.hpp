@@ -30,9 +30,12 @@ struct RsmMaps {
 
 // The grids of all cascades. Cascades are processed one after another, so only the
 // accumulated light (read by the shading) is kept per cascade; the rest is reused. The float
-// grids are 3D images, not buffers: lavapipe gathers image texels with vector loads but reads
-// a buffer at scattered offsets one lane at a time, which made propagation 20 times slower.
-// All images stay in GENERAL layout.
+// grids that propagation reads and writes at every step are texel buffers (see
+// vkx::TexelBuffer): lavapipe gathers their texels with vector loads, where it reads a
+// plain storage buffer at scattered offsets one lane at a time (propagation 20 times
+// slower), and stores them in one loop a texel, where an image store takes four. Their
+// texels are cells in x-fastest order (lpv_grid.glsl). The geometry volume's images stay
+// in GENERAL layout.
 struct LpvVolumes {
   static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
@@ -47,7 +50,10 @@ struct LpvVolumes {
   static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades);
   // The largest storage buffer a grid of `dims` binds: it must fit the device's
   // maxStorageBufferRange (128 MiB on lavapipe: up to 93^3 cells, the corner sums the largest).
-  static std::uint64_t largest_buffer_bytes(glm::uvec3 dims);
+  static std::uint64_t largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades);
+  // The most texels a texel buffer of these volumes holds: it must fit the device's
+  // maxTexelBufferElements.
+  static std::uint64_t largest_texel_buffer(glm::uvec3 dims, std::uint32_t cascades);
 
   // Records of flux_stats (gpu::LPV_FLUX_SLOTS): the VPL flux of a cascade, and its grid's
   // flux after iteration k (k = 0: as injected).
@@ -66,12 +72,13 @@ struct LpvVolumes {
   vkx::Buffer injected;  // int64[12] per cell: fixed-point SH of the injected VPLs
   vkx::Buffer corner_sums;  // int64[LPV_GV_WORDS] per corner and source: geometry volume sums
   vkx::Buffer flux_stats;  // records of int64 fixed-point fluxes, host-visible
-  // Propagation's ping-pong: texel (3x + k, y, z + which * dims.z), the SH of channel k = R,
-  // G, B that the cell sends, already times its outgoing scale (see lpv_outgoing_scale).
-  vkx::Image grids;
-  // The light the shading reads (and filters itself), one image per colour channel:
-  // texel (x, y, z + cascade * dims.z).
-  vkx::Image accumulated[3];
+  // Propagation's ping-pong: texel 3 (which * cells + cell) + k, what the cell sends in
+  // channel k = R, G, B: its SH times its outgoing scale (lpv_outgoing_scale), in sender form
+  // (lpv_sender_form).
+  vkx::TexelBuffer grids;
+  // The light the shading reads (and filters itself), one buffer per colour channel:
+  // texel cascade * cells + cell.
+  vkx::TexelBuffer accumulated[3];
   // Geometry volume per cell corner, the stronger source: texel (2x + k, y, z), k = 0 blocking
   // SH, k = 1 albedo-weighted sum (rgb) and weight (a).
   vkx::Image corners;

@@ -30,7 +30,7 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
   const std::uint32_t push = sizeof(CascadeConstants);
   inject_layout_ = vkx::compute_layout({uniform, image, image, image, buffer, buffer}, push);
   emitters_layout_ = vkx::compute_layout({uniform, buffer, buffer, buffer}, sizeof(EmitterConstants));
-  resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, image, image, image, image, buffer}, push),
+  resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, buffer, buffer, buffer, buffer, buffer}, push),
                            spirv_lpv_inject_resolve_comp);
 }
 
@@ -81,10 +81,10 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
   vkx::DescriptorWriter(resolve_.descriptor_set())
       .buffer(0, uniform, params.handle())
       .buffer(1, storage, volumes.injected.handle())
-      .image(2, image, volumes.grids.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(3, image, volumes.accumulated[0].view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(4, image, volumes.accumulated[1].view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(5, image, volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL)
+      .buffer(2, storage, volumes.grids.buffer().handle())
+      .buffer(3, storage, volumes.accumulated[0].buffer().handle())
+      .buffer(4, storage, volumes.accumulated[1].buffer().handle())
+      .buffer(5, storage, volumes.accumulated[2].buffer().handle())
       .buffer(6, storage, volumes.flux_stats.handle())
       .apply(device_.handle());
   resolve_.bind(cmd);

@@ -17,10 +17,11 @@ struct IterationConstants {
 }  // namespace
 
 LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) {
-  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  layout_ = vkx::compute_layout(
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, image, image, image, image, image, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-      sizeof(IterationConstants));
+  const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  layout_ = vkx::compute_layout({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, texels, texels, texels, texels,
+                                 VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, storage, storage, storage, storage, storage},
+                                sizeof(IterationConstants));
 }
 
 const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& params, const LpvVolumes& volumes) const {
@@ -28,16 +29,20 @@ const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& par
     const std::array<std::uint32_t, 2> constants{v != kOpen ? 1u : 0u, v == kOccludedBounces ? 1u : 0u};
     return vkx::Pipeline(device_, layout_, spirv_lpv_propagate_comp, constants);
   });
-  const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
+  const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   vkx::DescriptorWriter(p.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .image(1, image, volumes.grids.view(), general)
-      .image(2, image, volumes.accumulated[0].view(), general)
-      .image(3, image, volumes.accumulated[1].view(), general)
-      .image(4, image, volumes.accumulated[2].view(), general)
-      .image(5, image, volumes.faces.view(), general)
-      .buffer(6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.flux_stats.handle())
+      .texel_buffer(1, texels, volumes.grids.view())
+      .texel_buffer(2, texels, volumes.accumulated[0].view())
+      .texel_buffer(3, texels, volumes.accumulated[1].view())
+      .texel_buffer(4, texels, volumes.accumulated[2].view())
+      .image(5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, volumes.faces.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .buffer(6, storage, volumes.flux_stats.handle())
+      .buffer(7, storage, volumes.grids.buffer().handle())
+      .buffer(8, storage, volumes.accumulated[0].buffer().handle())
+      .buffer(9, storage, volumes.accumulated[1].buffer().handle())
+      .buffer(10, storage, volumes.accumulated[2].buffer().handle())
       .apply(device_.handle());
   return p;
 }
@@ -51,8 +56,8 @@ void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::u
   const glm::uvec3 d = volumes.dims;
   for (std::uint32_t k = first; k < first + count; ++k) {
     pipeline.push(cmd, IterationConstants{cascade, volumes.grid_flux_record(cascade, k), k});
-    vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
-                  vkx::group_count(d.z, gpu::LPV_GROUP));
+    vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_PROPAGATE_GROUP), vkx::group_count(d.y, gpu::LPV_PROPAGATE_GROUP),
+                  vkx::group_count(d.z, gpu::LPV_PROPAGATE_COLUMN));
     vkx::compute_barrier(cmd);
   }
 }

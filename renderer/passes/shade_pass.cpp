@@ -11,8 +11,9 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   layout_ = vkx::compute_layout(
-      {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, image, image, image, buffer});
+      {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, texels, texels, texels, buffer});
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
 }
 
@@ -47,9 +48,9 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
       .buffer(7, storage, scene.materials.handle())
       .buffer(8, storage, targets.linear.handle())
       .buffer(9, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.lpv.handle())
-      .image(10, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[0].view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(11, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[1].view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(12, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, in.volumes.accumulated[2].view(), VK_IMAGE_LAYOUT_GENERAL)
+      .texel_buffer(10, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, in.volumes.accumulated[0].view())
+      .texel_buffer(11, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, in.volumes.accumulated[1].view())
+      .texel_buffer(12, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, in.volumes.accumulated[2].view())
       .buffer(13, storage, targets.display.handle())
       .apply(device_.handle());
 

@@ -216,7 +216,7 @@ DescriptorWriter& DescriptorWriter::buffer(std::uint32_t binding, VkDescriptorTy
                                            VkDeviceSize size) {
   buffers_.push_back({buffer, 0, size});
   slots_.emplace_back(binding, type);
-  is_image_.push_back(false);
+  kinds_.push_back(Kind::buffer);
   return *this;
 }
 
@@ -224,23 +224,31 @@ DescriptorWriter& DescriptorWriter::image(std::uint32_t binding, VkDescriptorTyp
                                           VkImageLayout layout, VkSampler sampler) {
   images_.push_back({sampler, view, layout});
   slots_.emplace_back(binding, type);
-  is_image_.push_back(true);
+  kinds_.push_back(Kind::image);
+  return *this;
+}
+
+DescriptorWriter& DescriptorWriter::texel_buffer(std::uint32_t binding, VkDescriptorType type, VkBufferView view) {
+  texel_buffers_.push_back(view);
+  slots_.emplace_back(binding, type);
+  kinds_.push_back(Kind::texel_buffer);
   return *this;
 }
 
 void DescriptorWriter::apply(VkDevice device) {
   std::vector<VkWriteDescriptorSet> writes;
-  std::size_t next_buffer = 0, next_image = 0;
+  std::size_t next_buffer = 0, next_image = 0, next_texel_buffer = 0;
   for (std::size_t i = 0; i < slots_.size(); ++i) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstSet = set_;
     w.dstBinding = slots_[i].first;
     w.descriptorCount = 1;
     w.descriptorType = slots_[i].second;
-    if (is_image_[i])
-      w.pImageInfo = &images_[next_image++];
-    else
-      w.pBufferInfo = &buffers_[next_buffer++];
+    switch (kinds_[i]) {
+      case Kind::buffer: w.pBufferInfo = &buffers_[next_buffer++]; break;
+      case Kind::image: w.pImageInfo = &images_[next_image++]; break;
+      case Kind::texel_buffer: w.pTexelBufferView = &texel_buffers_[next_texel_buffer++]; break;
+    }
     writes.push_back(w);
   }
   vkUpdateDescriptorSets(device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);

@@ -103,14 +103,17 @@ class DescriptorWriter {
                            VkDeviceSize size = VK_WHOLE_SIZE);
   DescriptorWriter& image(std::uint32_t binding, VkDescriptorType type, VkImageView view, VkImageLayout layout,
                           VkSampler sampler = VK_NULL_HANDLE);
+  DescriptorWriter& texel_buffer(std::uint32_t binding, VkDescriptorType type, VkBufferView view);
   void apply(VkDevice device);
 
  private:
   VkDescriptorSet set_;
   std::vector<VkDescriptorBufferInfo> buffers_;
   std::vector<VkDescriptorImageInfo> images_;
+  std::vector<VkBufferView> texel_buffers_;
+  enum class Kind { buffer, image, texel_buffer };
   std::vector<std::pair<std::uint32_t, VkDescriptorType>> slots_;
-  std::vector<bool> is_image_;
+  std::vector<Kind> kinds_;
 };
 
 // The layout of a compute pipeline: binding i has descriptor type types[i]; push constants

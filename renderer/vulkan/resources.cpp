@@ -57,6 +57,37 @@ Buffer::Buffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage
   }
 }
 
+TexelBuffer::TexelBuffer(const Device& device, VkDeviceSize texels)
+    : device_(device.handle()),
+      buffer_(device, texels * kTexelBytes,
+              VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+              MemoryUse::gpu_only) {
+  VkBufferViewCreateInfo ci{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  ci.buffer = buffer_.handle();
+  ci.format = kFormat;
+  ci.range = VK_WHOLE_SIZE;
+  VK_CHECK(vkCreateBufferView(device_, &ci, nullptr, &view_));
+}
+
+TexelBuffer::~TexelBuffer() { release(); }
+
+TexelBuffer& TexelBuffer::operator=(TexelBuffer&& other) noexcept {
+  if (this != &other) {
+    release();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    buffer_ = std::move(other.buffer_);
+    view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+void TexelBuffer::release() {
+  if (view_) vkDestroyBufferView(device_, view_, nullptr);
+  view_ = VK_NULL_HANDLE;
+  buffer_ = Buffer();
+}
+
 Buffer::~Buffer() { release(); }
 
 Buffer& Buffer::operator=(Buffer&& other) noexcept {

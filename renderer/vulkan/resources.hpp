@@ -46,6 +46,32 @@ class Buffer {
   bool coherent_ = true;
 };
 
+// A device-local buffer of RGBA32F texels, read through a storage texel buffer view
+// (imageBuffer: lavapipe gathers such texels with vector loads) and written as a storage
+// buffer (vec4[]: lavapipe scatters those a lane at a time in one loop, where an image store
+// takes one loop per channel, four times the work).
+class TexelBuffer {
+ public:
+  static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+  static constexpr VkDeviceSize kTexelBytes = 16;
+
+  TexelBuffer() = default;
+  TexelBuffer(const Device& device, VkDeviceSize texels);
+  ~TexelBuffer();
+  TexelBuffer(TexelBuffer&& other) noexcept { *this = std::move(other); }
+  TexelBuffer& operator=(TexelBuffer&& other) noexcept;
+
+  const Buffer& buffer() const { return buffer_; }
+  VkBufferView view() const { return view_; }
+  VkDeviceSize texels() const { return buffer_.size() / kTexelBytes; }
+
+ private:
+  void release();
+  VkDevice device_ = VK_NULL_HANDLE;
+  Buffer buffer_;
+  VkBufferView view_ = VK_NULL_HANDLE;
+};
+
 struct ImageDesc {
   VkFormat format = VK_FORMAT_UNDEFINED;
   std::uint32_t width = 1;

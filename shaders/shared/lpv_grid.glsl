@@ -1,6 +1,6 @@
 // Addressing of the LPV grids, for the LPV passes and the shading. An SH grid cell is one vec4
-// per colour channel (see lpv_sh.h for the basis); buffers hold cells in x-fastest order,
-// images as described in renderer/lpv/lpv_volumes.hpp.
+// per colour channel (see lpv_sh.h for the basis); buffers hold cells in x-fastest order
+// (renderer/lpv/lpv_volumes.hpp).
 #ifndef LPV_GRID_GLSL
 #define LPV_GRID_GLSL
 
@@ -17,13 +17,13 @@ float lpv_inside_distance(GpuLpvCascade g, vec3 q) {
 
 // Texel of the propagation grids (LpvVolumes::grids): channel k of a cell in grid `which`
 // (0 or 1).
-ivec3 lpv_grid_texel(ivec3 cell, int k, uint which, uint depth) {
-  return ivec3(3 * cell.x + k, cell.y, cell.z + int(which * depth));
+int lpv_grid_texel(ivec3 cell, int k, uint which, uvec3 dims) {
+  return 3 * int(lpv_cell_index(uvec3(cell), dims) + which * dims.x * dims.y * dims.z) + k;
 }
 
-// Texel of a cascade's cell in the accumulated images (LpvVolumes::accumulated).
-ivec3 lpv_accumulated_texel(ivec3 cell, uint cascade, uint depth) {
-  return ivec3(cell.xy, cell.z + int(cascade * depth));
+// Texel of a cascade's cell in the accumulated buffers (LpvVolumes::accumulated).
+int lpv_accumulated_texel(ivec3 cell, uint cascade, uvec3 dims) {
+  return int(lpv_cell_index(uvec3(cell), dims) + cascade * dims.x * dims.y * dims.z);
 }
 
 // Width of the band at a cascade's border over which it hands over to the next coarser one.

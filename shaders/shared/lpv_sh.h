@@ -125,6 +125,14 @@ LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) {
   return positive > total ? total / positive : 1.0f;
 }
 
+// What a cell sends, in the form propagation reads it: I(w) = A + sqrt(5) <P, w>, stored as
+// (A, P) with A = c0 s0 and P = c1 (-s3, -s1, s2) / sqrt(5) (axes x, y, z). The value on a
+// neighbour's far face, A + sqrt(5) P_a, and on its side faces, A + 2 P_a +- P_b, then take
+// one shared term and an addition each.
+LPV_FUNC vec4 lpv_sender_form(vec4 sh) {
+  return vec4(SH_C0 * sh.x, -SH_C1 * LPV_INV_SQRT5 * sh.w, -SH_C1 * LPV_INV_SQRT5 * sh.y, SH_C1 * LPV_INV_SQRT5 * sh.z);
+}
+
 #ifdef __cplusplus
 }  // namespace gpu or gpu_double
 #else

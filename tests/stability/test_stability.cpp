@@ -63,7 +63,7 @@ TEST_P(Stability, FiniteDeterministicAndNoEnergyGain) {
   const stability::Case& c = GetParam();
   const scene::Scene scene = c.scene();
   auto& r = gpu_test::renderer();
-  if (renderer::LpvVolumes::largest_buffer_bytes(c.request.lpv.grid) >
+  if (renderer::LpvVolumes::largest_buffer_bytes(c.request.lpv.grid, c.request.lpv.cascades) >
       gpu_test::device().info().limits.maxStorageBufferRange) {
     // Beyond what the device binds: the documented error, not a crash or a silent clamp.
     try {
