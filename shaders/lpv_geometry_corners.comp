@@ -9,8 +9,9 @@
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(std430, set = 0, binding = 1) readonly buffer CornerSums { int64_t corner_sums[]; };
-layout(set = 0, binding = 2, rgba32f) uniform writeonly image3D corners;
+// LPV_GV_WORDS sums per corner and source, two a texel.
+layout(set = 0, binding = 1, rgba32ui) uniform readonly uimageBuffer corner_sums;
+layout(std430, set = 0, binding = 2) writeonly buffer Corners { vec4 corners[]; };
 layout(push_constant) uniform Push { uint cascade; } push;
 // The blockers' albedo serves bounces only: without them its corners are neither read nor written.
 layout(constant_id = 0) const bool BOUNCES = true;
@@ -24,14 +25,15 @@ void main() {
   vec4 sh = vec4(0.0);
   vec4 albedo = vec4(0.0);
   for (uint source = 0u; source < LPV_GV_SOURCES; ++source) {
-    uint base = (index * LPV_GV_SOURCES + source) * LPV_GV_WORDS;
-    float potential = from_fixed(corner_sums[base], one_per_unit);
-    if (potential <= sh.x) continue;
-    for (uint k = 0u; k < 4u; ++k) {
-      sh[k] = from_fixed(corner_sums[base + k], one_per_unit);
-      if (BOUNCES) albedo[k] = from_fixed(corner_sums[base + 4u + k], one_per_unit);
-    }
+    int base = int((index * LPV_GV_SOURCES + source) * LPV_GV_WORDS / 2u);
+    vec4 source_sh = from_fixed(fixed_pair(imageLoad(corner_sums, base)), fixed_pair(imageLoad(corner_sums, base + 1)),
+                                one_per_unit);
+    if (source_sh.x <= sh.x) continue;
+    sh = source_sh;
+    if (BOUNCES)
+      albedo = from_fixed(fixed_pair(imageLoad(corner_sums, base + 2)), fixed_pair(imageLoad(corner_sums, base + 3)),
+                          one_per_unit);
   }
-  imageStore(corners, ivec3(2u * corner.x, corner.yz), sh);
-  if (BOUNCES) imageStore(corners, ivec3(2u * corner.x + 1u, corner.yz), albedo);
+  corners[2u * index] = sh;
+  if (BOUNCES) corners[2u * index + 1u] = albedo;
 }

@@ -9,15 +9,17 @@
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(set = 0, binding = 1, rgba32f) uniform readonly image3D corners;
-layout(set = 0, binding = 2, rgba32f) uniform writeonly image3D faces;
+layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer corners;  // 2 texels per corner
+layout(std430, set = 0, binding = 2) writeonly buffer Faces { vec4 faces[]; };
 layout(push_constant) uniform Push { uint cascade; } push;
 // The blockers' albedo serves bounces only: without them its faces are not written.
 layout(constant_id = 0) const bool BOUNCES = true;
 
 void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(cell, ivec3(lpv.cascades[push.cascade].dims.xyz)))) return;
+  uvec3 dims = lpv.cascades[push.cascade].dims.xyz;
+  if (any(greaterThanEqual(cell, ivec3(dims)))) return;
+  int face = 6 * int(lpv_cell_index(uvec3(cell), dims));
   for (int axis = 0; axis < 3; ++axis) {
     // The face at +axis: its corners have cell[axis] + 1 on the axis and both values on the others.
     int u = (axis + 1) % 3;
@@ -29,11 +31,11 @@ void main() {
       corner[axis] += 1;
       corner[u] += k & 1;
       corner[v] += k >> 1;
-      sh += 0.25 * imageLoad(corners, ivec3(2 * corner.x, corner.yz));
-      if (BOUNCES) albedo += imageLoad(corners, ivec3(2 * corner.x + 1, corner.yz));
+      int texel = 2 * int(lpv_cell_index(uvec3(corner), dims + 1u));
+      sh += 0.25 * imageLoad(corners, texel);
+      if (BOUNCES) albedo += imageLoad(corners, texel + 1);
     }
-    imageStore(faces, ivec3(6 * cell.x + axis, cell.yz), sh);
-    if (BOUNCES)
-      imageStore(faces, ivec3(6 * cell.x + 3 + axis, cell.yz), vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
+    faces[face + axis] = sh;
+    if (BOUNCES) faces[face + 3 + axis] = vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0);
   }
 }

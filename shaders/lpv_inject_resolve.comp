@@ -1,7 +1,6 @@
 #version 450
 // After injection: the fixed-point sums become the float grid that propagation starts from
-// (and the first term of the accumulated light), and the accumulators are cleared for the
-// next cascade. Also sums the grid's flux for the statistics.
+// (and the first term of the accumulated light). Also sums the grid's flux for the statistics.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
@@ -11,7 +10,7 @@
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(std430, set = 0, binding = 1) buffer Injected { int64_t injected[]; };
+layout(set = 0, binding = 1, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
 layout(std430, set = 0, binding = 2) writeonly buffer Grids { vec4 grids[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer AccumulatedR { vec4 accumulated_r[]; };
 layout(std430, set = 0, binding = 4) writeonly buffer AccumulatedG { vec4 accumulated_g[]; };
@@ -26,15 +25,12 @@ void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
   vec3 flux = vec3(0.0);
   if (all(lessThan(cell, ivec3(g.dims.xyz)))) {
-    uint index = lpv_cell_index(uvec3(cell), g.dims.xyz);
+    int texel = 6 * int(lpv_cell_index(uvec3(cell), g.dims.xyz));
     vec4 sh[3];
-    for (uint c = 0u; c < 3u; ++c) {
-      for (uint k = 0u; k < 4u; ++k) {
-        uint i = index * 12u + c * 4u + k;
-        sh[c][k] = from_fixed(injected[i], 1.0 / lpv.scales.x);
-        injected[i] = 0l;
-      }
-      grids[lpv_grid_texel(cell, int(c), 0u, g.dims.xyz)] = lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c]));
+    for (int c = 0; c < 3; ++c) {
+      sh[c] = from_fixed(fixed_pair(imageLoad(injected, texel + 2 * c)), fixed_pair(imageLoad(injected, texel + 2 * c + 1)),
+                         1.0 / lpv.scales.x);
+      grids[lpv_grid_texel(cell, c, 0u, g.dims.xyz)] = lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c]));
       flux[c] = sh_flux(sh[c]);
     }
     int accumulated = lpv_accumulated_texel(cell, push.cascade, g.dims.xyz);

@@ -36,7 +36,7 @@ layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer grids;
 layout(set = 0, binding = 2, rgba32f) uniform readonly imageBuffer accumulated_r;
 layout(set = 0, binding = 3, rgba32f) uniform readonly imageBuffer accumulated_g;
 layout(set = 0, binding = 4, rgba32f) uniform readonly imageBuffer accumulated_b;
-layout(set = 0, binding = 5, rgba32f) uniform readonly image3D faces;
+layout(set = 0, binding = 5, rgba32f) uniform readonly imageBuffer faces;  // 6 texels per cell
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(std430, set = 0, binding = 7) writeonly buffer GridStore { vec4 grid_store[]; };
 layout(std430, set = 0, binding = 8) writeonly buffer AccumulatedR { vec4 accumulated_store_r[]; };
@@ -150,10 +150,9 @@ void gather(inout Gathered g, Sender n, int axis, float sigma, vec4 blocking, fl
   }
 }
 
-vec4 face_blocking(ivec3 cell, int axis) { return OCCLUDED ? imageLoad(faces, ivec3(6 * cell.x + axis, cell.yz)) : vec4(0.0); }
-vec3 face_albedo(ivec3 cell, int axis) {
-  return BOUNCES ? imageLoad(faces, ivec3(6 * cell.x + 3 + axis, cell.yz)).rgb : vec3(0.0);
-}
+int face_texel(ivec3 cell, int axis) { return 6 * int(lpv_cell_index(uvec3(cell), lpv.cascades[push.cascade].dims.xyz)) + axis; }
+vec4 face_blocking(ivec3 cell, int axis) { return OCCLUDED ? imageLoad(faces, face_texel(cell, axis)) : vec4(0.0); }
+vec3 face_albedo(ivec3 cell, int axis) { return BOUNCES ? imageLoad(faces, face_texel(cell, 3 + axis)).rgb : vec3(0.0); }
 
 void main() {
   GpuLpvCascade grid = lpv.cascades[push.cascade];

@@ -10,11 +10,15 @@ namespace renderer {
 namespace {
 
 constexpr VkDeviceSize kInjectedBytesPerCell = 12 * 8;
+constexpr VkDeviceSize kCornerSumBytes = gpu::LPV_GV_SOURCES * gpu::LPV_GV_WORDS * 8;
 constexpr VkDeviceSize kGridTexelsPerCell = 2 * 3;  // two grids of three channels
 constexpr VkDeviceSize kGridBytesPerCell = kGridTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
 constexpr VkDeviceSize kAccumulatedBytesPerCell = 3 * vkx::TexelBuffer::kTexelBytes;
-constexpr VkDeviceSize kCornerBytes = gpu::LPV_GV_SOURCES * gpu::LPV_GV_WORDS * 8 + 2 * 16;
-constexpr VkDeviceSize kFaceBytesPerCell = 6 * 16;
+constexpr VkDeviceSize kCornerTexels = 2;
+constexpr VkDeviceSize kCornerBytes = kCornerSumBytes + kCornerTexels * vkx::TexelBuffer::kTexelBytes;
+constexpr VkDeviceSize kFaceTexelsPerCell = 6;
+constexpr VkDeviceSize kFaceBytesPerCell = kFaceTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
+constexpr VkFormat kSums = VK_FORMAT_R32G32B32A32_UINT;
 constexpr std::size_t kRecordInt64s = gpu::LPV_FLUX_SLOTS * gpu::LPV_FLUX_SLOT_INT64S;  // one flux_stats record
 
 std::uint64_t cell_count(glm::uvec3 d) { return std::uint64_t(d.x) * d.y * d.z; }
@@ -23,17 +27,6 @@ vkx::Image rsm_target(const vkx::Device& device, VkFormat format, std::uint32_t 
   return vkx::Image(device, {format, res, res, layers,
                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                              VK_IMAGE_ASPECT_COLOR_BIT, true});
-}
-
-vkx::Image volume(const vkx::Device& device, std::uint32_t w, std::uint32_t h, std::uint32_t d) {
-  vkx::ImageDesc desc;
-  desc.format = LpvVolumes::kFormat;
-  desc.width = w;
-  desc.height = h;
-  desc.depth = d;
-  desc.volume = true;
-  desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-  return vkx::Image(device, desc);
 }
 
 }  // namespace
@@ -54,12 +47,13 @@ std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades) {
 }
 
 std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades) {
-  return std::max({cell_count(dims) * kInjectedBytesPerCell, cell_count(dims + 1u) * kCornerBytes,
-                   largest_texel_buffer(dims, cascades) * vkx::TexelBuffer::kTexelBytes});
+  return largest_texel_buffer(dims, cascades) * vkx::TexelBuffer::kTexelBytes;
 }
 
 std::uint64_t LpvVolumes::largest_texel_buffer(glm::uvec3 dims, std::uint32_t cascades) {
-  return cell_count(dims) * std::max<std::uint64_t>(kGridTexelsPerCell, cascades);
+  const std::uint64_t per_cell =
+      std::max({kInjectedBytesPerCell, kGridBytesPerCell, kFaceBytesPerCell, cascades * vkx::TexelBuffer::kTexelBytes});
+  return std::max(cell_count(dims) * per_cell, cell_count(dims + 1u) * kCornerSumBytes) / vkx::TexelBuffer::kTexelBytes;
 }
 
 LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
@@ -68,24 +62,15 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
       grids(device, cell_count(d) * kGridTexelsPerCell),
       accumulated{vkx::TexelBuffer(device, cell_count(d) * c), vkx::TexelBuffer(device, cell_count(d) * c),
                   vkx::TexelBuffer(device, cell_count(d) * c)},
-      corners(volume(device, 2 * (d.x + 1), d.y + 1, d.z + 1)),
-      faces(volume(device, 6 * d.x, d.y, d.z)) {
-  const VkDeviceSize cells = cell_count(d);
-  const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  injected = vkx::Buffer(device, cells * kInjectedBytesPerCell, storage, vkx::MemoryUse::gpu_only);
-  corner_sums = vkx::Buffer(device, cell_count(d + 1u) * kCornerBytes, storage, vkx::MemoryUse::gpu_only);
+      injected(device, cell_count(d) * kInjectedBytesPerCell / vkx::TexelBuffer::kTexelBytes, kSums),
+      corner_sums(device, cell_count(d + 1u) * kCornerSumBytes / vkx::TexelBuffer::kTexelBytes, kSums),
+      corners(device, cell_count(d + 1u) * kCornerTexels),
+      faces(device, cell_count(d) * kFaceTexelsPerCell) {
   device.run_once([&](VkCommandBuffer cmd) {
-    // The injection resolve clears its accumulators after reading them; they start cleared.
-    vkCmdFillBuffer(cmd, injected.handle(), 0, VK_WHOLE_SIZE, 0);
-    for (const vkx::TexelBuffer* b : {&accumulated[0], &accumulated[1], &accumulated[2]})
+    // The accumulated light of cascades a frame does not propagate, and the faces before a
+    // geometry volume was ever built, are read (with zero effect).
+    for (const vkx::TexelBuffer* b : {&accumulated[0], &accumulated[1], &accumulated[2], &faces})
       vkCmdFillBuffer(cmd, b->buffer().handle(), 0, VK_WHOLE_SIZE, 0);
-    // The faces are read (with zero effect) before a geometry volume was ever built.
-    for (const vkx::Image* image : {&corners, &faces})
-      vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                      0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    const VkClearColorValue zero{};
-    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdClearColorImage(cmd, faces.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &all);
     vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   });

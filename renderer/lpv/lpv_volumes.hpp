@@ -29,13 +29,11 @@ struct RsmMaps {
 };
 
 // The grids of all cascades. Cascades are processed one after another, so only the
-// accumulated light (read by the shading) is kept per cascade; the rest is reused. The float
-// grids that propagation reads and writes at every step are texel buffers (see
-// vkx::TexelBuffer): lavapipe gathers their texels with vector loads, where it reads a
-// plain storage buffer at scattered offsets one lane at a time (propagation 20 times
-// slower), and stores them in one loop a texel, where an image store takes four. Their
-// texels are cells in x-fastest order (lpv_grid.glsl). The geometry volume's images stay
-// in GENERAL layout.
+// accumulated light (read by the shading) is kept per cascade; the rest is reused. Every
+// volume is a texel buffer (see vkx::TexelBuffer): lavapipe gathers texels with vector loads,
+// where it reads a plain storage buffer at scattered offsets one lane at a time (propagation
+// 20 times slower), and stores a texel to a storage buffer in one loop, where an image store
+// takes four. Cells and corners are in x-fastest order (lpv_grid.glsl).
 struct LpvVolumes {
   static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
@@ -69,8 +67,11 @@ struct LpvVolumes {
   std::uint32_t cascades;
   std::uint32_t iterations = 0;    // of the current frame (set_iterations)
   std::uint32_t records_per_cascade = 0;  // in flux_stats: iterations + 2
-  vkx::Buffer injected;  // int64[12] per cell: fixed-point SH of the injected VPLs
-  vkx::Buffer corner_sums;  // int64[LPV_GV_WORDS] per corner and source: geometry volume sums
+  // The scattering passes' 64-bit fixed-point sums, added with atomics and read back as RGBA32UI
+  // texels (two sums a texel): int64[12] per cell, the SH of the injected VPLs; and
+  // int64[LPV_GV_WORDS] per corner and source, the geometry volume's.
+  vkx::TexelBuffer injected;
+  vkx::TexelBuffer corner_sums;
   vkx::Buffer flux_stats;  // records of int64 fixed-point fluxes, host-visible
   // Propagation's ping-pong: texel 3 (which * cells + cell) + k, what the cell sends in
   // channel k = R, G, B: its SH times its outgoing scale (lpv_outgoing_scale), in sender form
@@ -79,11 +80,12 @@ struct LpvVolumes {
   // The light the shading reads (and filters itself), one buffer per colour channel:
   // texel cascade * cells + cell.
   vkx::TexelBuffer accumulated[3];
-  // Geometry volume per cell corner, the stronger source: texel (2x + k, y, z), k = 0 blocking
-  // SH, k = 1 albedo-weighted sum (rgb) and weight (a).
-  vkx::Image corners;
-  // Geometry volume per cell: texel (6x + k, y, z), k = 0..2 blocking SH on the +X, +Y, +Z
-  // faces, k = 3..5 the blockers' albedo there.
-  vkx::Image faces;
+  // Geometry volume per cell corner, the stronger source: texel 2 corner + k (corners in
+  // x-fastest order on the (dims + 1)^3 lattice), k = 0 blocking SH, k = 1 albedo-weighted sum
+  // (rgb) and weight (a).
+  vkx::TexelBuffer corners;
+  // Geometry volume per cell: texel 6 cell + k, k = 0..2 blocking SH on the +X, +Y, +Z faces,
+  // k = 3..5 the blockers' albedo there.
+  vkx::TexelBuffer faces;
 };
 }  // namespace renderer

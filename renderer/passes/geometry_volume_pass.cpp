@@ -21,10 +21,11 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   inject_layout_ =
       vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants));
-  corners_layout_ = vkx::compute_layout({uniform, buffer, image}, sizeof(std::uint32_t));
-  resolve_layout_ = vkx::compute_layout({uniform, image, image}, sizeof(std::uint32_t));
+  corners_layout_ = vkx::compute_layout({uniform, texels, buffer}, sizeof(std::uint32_t));
+  resolve_layout_ = vkx::compute_layout({uniform, texels, buffer}, sizeof(std::uint32_t));
 }
 
 void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
@@ -46,7 +47,7 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .image(4, image, camera.position.view(), general)
       .image(5, image, camera.normal.view(), general)
       .image(6, image, camera.albedo.view(), general)
-      .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.handle())
+      .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.buffer().handle())
       .apply(device_.handle());
   const vkx::Pipeline& corners = corners_.get(with_albedo[0], [&] {
     return vkx::Pipeline(device_, corners_layout_, spirv_lpv_geometry_corners_comp, with_albedo);
@@ -56,16 +57,16 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
   });
   vkx::DescriptorWriter(corners.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.handle())
-      .image(2, image, volumes.corners.view(), general)
+      .texel_buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.corner_sums.view())
+      .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corners.buffer().handle())
       .apply(device_.handle());
   vkx::DescriptorWriter(resolve.descriptor_set())
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .image(1, image, volumes.corners.view(), general)
-      .image(2, image, volumes.faces.view(), general)
+      .texel_buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.corners.view())
+      .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.buffer().handle())
       .apply(device_.handle());
 
-  vkCmdFillBuffer(cmd, volumes.corner_sums.handle(), 0, VK_WHOLE_SIZE, 0);
+  vkCmdFillBuffer(cmd, volumes.corner_sums.buffer().handle(), 0, VK_WHOLE_SIZE, 0);
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   inject.bind(cmd);

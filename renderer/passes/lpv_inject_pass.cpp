@@ -30,7 +30,8 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
   const std::uint32_t push = sizeof(CascadeConstants);
   inject_layout_ = vkx::compute_layout({uniform, image, image, image, buffer, buffer}, push);
   emitters_layout_ = vkx::compute_layout({uniform, buffer, buffer, buffer}, sizeof(EmitterConstants));
-  resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, buffer, buffer, buffer, buffer, buffer, buffer}, push),
+  const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+  resolve_ = vkx::Pipeline(device, vkx::compute_layout({uniform, texels, buffer, buffer, buffer, buffer, buffer}, push),
                            spirv_lpv_inject_resolve_comp);
 }
 
@@ -41,11 +42,12 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  if (cascade == 0) {
-    vkCmdFillBuffer(cmd, volumes.flux_stats.handle(), 0, VK_WHOLE_SIZE, 0);
-    vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-  }
+  // The sums start at zero in every cascade (a fill is a memset; the resolve's stores, lane by
+  // lane, cost more).
+  if (cascade == 0) vkCmdFillBuffer(cmd, volumes.flux_stats.handle(), 0, VK_WHOLE_SIZE, 0);
+  vkCmdFillBuffer(cmd, volumes.injected.buffer().handle(), 0, VK_WHOLE_SIZE, 0);
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   if (maps) {
     const vkx::Pipeline& inject = inject_.get(
         trilinear[0], [&] { return vkx::Pipeline(device_, inject_layout_, spirv_lpv_inject_comp, trilinear); });
@@ -54,7 +56,7 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
         .image(1, image, maps->position.view(), VK_IMAGE_LAYOUT_GENERAL)
         .image(2, image, maps->normal.view(), VK_IMAGE_LAYOUT_GENERAL)
         .image(3, image, maps->flux.view(), VK_IMAGE_LAYOUT_GENERAL)
-        .buffer(4, storage, volumes.injected.handle())
+        .buffer(4, storage, volumes.injected.buffer().handle())
         .buffer(5, storage, volumes.flux_stats.handle())
         .apply(device_.handle());
     inject.bind(cmd);
@@ -69,7 +71,7 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
     vkx::DescriptorWriter(emitters.descriptor_set())
         .buffer(0, uniform, params.handle())
         .buffer(1, storage, scene.emitters.handle())
-        .buffer(2, storage, volumes.injected.handle())
+        .buffer(2, storage, volumes.injected.buffer().handle())
         .buffer(3, storage, volumes.flux_stats.handle())
         .apply(device_.handle());
     if (maps) vkx::compute_barrier(cmd);
@@ -80,7 +82,7 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
   vkx::compute_barrier(cmd);
   vkx::DescriptorWriter(resolve_.descriptor_set())
       .buffer(0, uniform, params.handle())
-      .buffer(1, storage, volumes.injected.handle())
+      .texel_buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.injected.view())
       .buffer(2, storage, volumes.grids.buffer().handle())
       .buffer(3, storage, volumes.accumulated[0].buffer().handle())
       .buffer(4, storage, volumes.accumulated[1].buffer().handle())

@@ -19,8 +19,8 @@ struct IterationConstants {
 LpvPropagatePass::LpvPropagatePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  layout_ = vkx::compute_layout({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, texels, texels, texels, texels,
-                                 VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, storage, storage, storage, storage, storage},
+  layout_ = vkx::compute_layout({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, texels, texels, texels, texels, texels, storage,
+                                 storage, storage, storage, storage},
                                 sizeof(IterationConstants));
 }
 
@@ -37,7 +37,7 @@ const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& par
       .texel_buffer(2, texels, volumes.accumulated[0].view())
       .texel_buffer(3, texels, volumes.accumulated[1].view())
       .texel_buffer(4, texels, volumes.accumulated[2].view())
-      .image(5, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, volumes.faces.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .texel_buffer(5, texels, volumes.faces.view())
       .buffer(6, storage, volumes.flux_stats.handle())
       .buffer(7, storage, volumes.grids.buffer().handle())
       .buffer(8, storage, volumes.accumulated[0].buffer().handle())

@@ -57,7 +57,7 @@ Buffer::Buffer(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage
   }
 }
 
-TexelBuffer::TexelBuffer(const Device& device, VkDeviceSize texels)
+TexelBuffer::TexelBuffer(const Device& device, VkDeviceSize texels, VkFormat format)
     : device_(device.handle()),
       buffer_(device, texels * kTexelBytes,
               VK_BUFFER_USAGE_STORAGE_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
@@ -65,7 +65,7 @@ TexelBuffer::TexelBuffer(const Device& device, VkDeviceSize texels)
               MemoryUse::gpu_only) {
   VkBufferViewCreateInfo ci{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
   ci.buffer = buffer_.handle();
-  ci.format = kFormat;
+  ci.format = format;
   ci.range = VK_WHOLE_SIZE;
   VK_CHECK(vkCreateBufferView(device_, &ci, nullptr, &view_));
 }

@@ -46,17 +46,17 @@ class Buffer {
   bool coherent_ = true;
 };
 
-// A device-local buffer of RGBA32F texels, read through a storage texel buffer view
-// (imageBuffer: lavapipe gathers such texels with vector loads) and written as a storage
-// buffer (vec4[]: lavapipe scatters those a lane at a time in one loop, where an image store
-// takes one loop per channel, four times the work).
+// A device-local buffer of 16-byte texels (RGBA32F, or RGBA32UI for 64-bit integer sums),
+// read through a storage texel buffer view (imageBuffer: lavapipe gathers such texels with
+// vector loads, where it reads a storage buffer at scattered offsets one lane at a time) and
+// written as a storage buffer (vec4[], or atomics: lavapipe scatters those a lane at a time
+// in one loop, where an image store takes one loop per channel, four times the work).
 class TexelBuffer {
  public:
-  static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
   static constexpr VkDeviceSize kTexelBytes = 16;
 
   TexelBuffer() = default;
-  TexelBuffer(const Device& device, VkDeviceSize texels);
+  TexelBuffer(const Device& device, VkDeviceSize texels, VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT);
   ~TexelBuffer();
   TexelBuffer(TexelBuffer&& other) noexcept { *this = std::move(other); }
   TexelBuffer& operator=(TexelBuffer&& other) noexcept;
