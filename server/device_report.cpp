@@ -41,6 +41,7 @@ nlohmann::json device_report(const vkx::DeviceInfo& info) {
       {"max_color_attachments", l.maxColorAttachments},
       {"max_uniform_buffer_range", l.maxUniformBufferRange},
       {"max_storage_buffer_range", l.maxStorageBufferRange},
+      {"max_texel_buffer_elements", l.maxTexelBufferElements},
       {"max_push_constants_size", l.maxPushConstantsSize},
       {"max_bound_descriptor_sets", l.maxBoundDescriptorSets},
       {"max_compute_shared_memory_size", l.maxComputeSharedMemorySize},
