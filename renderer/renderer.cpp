@@ -523,11 +523,16 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv) const {
     const auto* texel = static_cast<const glm::vec4*>(host.mapped());
     return std::vector<glm::vec4>(texel, texel + texels);
   };
-  for (auto [image, into] : {std::pair{&rsm_maps->position, &snapshot.rsm_position},
-                             std::pair{&rsm_maps->normal, &snapshot.rsm_normal},
-                             std::pair{&rsm_maps->flux, &snapshot.rsm_flux}}) {
+  struct RsmCopy {
+    const vkx::Image* image;
+    std::vector<glm::vec4>* into;
+  };
+  for (const RsmCopy& copy : {RsmCopy{&rsm_maps->position, &snapshot.rsm_position},
+                              RsmCopy{&rsm_maps->normal, &snapshot.rsm_normal},
+                              RsmCopy{&rsm_maps->flux, &snapshot.rsm_flux}}) {
+    const vkx::Image* image = copy.image;
     const vkx::ImageDesc& d = image->desc();
-    *into = read_back(std::size_t(d.width) * d.height * d.layers, [&](VkCommandBuffer cmd, VkBuffer host) {
+    *copy.into = read_back(std::size_t(d.width) * d.height * d.layers, [&](VkCommandBuffer cmd, VkBuffer host) {
       VkBufferImageCopy region{};
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, d.layers};
       region.imageExtent = {d.width, d.height, 1};

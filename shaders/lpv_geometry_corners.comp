@@ -5,13 +5,14 @@
 #include "shared/gpu_types.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
+#include "shared/texel_store.glsl"
 
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 // LPV_GV_WORDS sums per corner and source, two a texel.
 layout(set = 0, binding = 1, rgba32ui) uniform readonly uimageBuffer corner_sums;
-layout(std430, set = 0, binding = 2) writeonly buffer Corners { vec4 corners[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Corners { u64vec2 corners[]; };
 layout(push_constant) uniform Push { uint cascade; } push;
 // The blockers' albedo serves bounces only: without them its corners are neither read nor written.
 layout(constant_id = 0) const bool BOUNCES = true;
@@ -34,6 +35,6 @@ void main() {
       albedo = from_fixed(fixed_pair(imageLoad(corner_sums, base + 2)), fixed_pair(imageLoad(corner_sums, base + 3)),
                           one_per_unit);
   }
-  corners[2u * index] = sh;
-  if (BOUNCES) corners[2u * index + 1u] = albedo;
+  corners[2u * index] = texel_bits(sh);
+  if (BOUNCES) corners[2u * index + 1u] = texel_bits(albedo);
 }

@@ -5,12 +5,13 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_grid.glsl"
+#include "shared/texel_store.glsl"
 
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer corners;  // 2 texels per corner
-layout(std430, set = 0, binding = 2) writeonly buffer Faces { vec4 faces[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Faces { u64vec2 faces[]; };
 layout(push_constant) uniform Push { uint cascade; } push;
 // The blockers' albedo serves bounces only: without them its faces are not written.
 layout(constant_id = 0) const bool BOUNCES = true;
@@ -35,7 +36,7 @@ void main() {
       sh += 0.25 * imageLoad(corners, texel);
       if (BOUNCES) albedo += imageLoad(corners, texel + 1);
     }
-    faces[face + axis] = sh;
-    if (BOUNCES) faces[face + 3 + axis] = vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0);
+    faces[face + axis] = texel_bits(sh);
+    if (BOUNCES) faces[face + 3 + axis] = texel_bits(vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
   }
 }

@@ -6,15 +6,16 @@
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
+#include "shared/texel_store.glsl"
 
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = 1, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
-layout(std430, set = 0, binding = 2) writeonly buffer Grids { vec4 grids[]; };
-layout(std430, set = 0, binding = 3) writeonly buffer AccumulatedR { vec4 accumulated_r[]; };
-layout(std430, set = 0, binding = 4) writeonly buffer AccumulatedG { vec4 accumulated_g[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer AccumulatedB { vec4 accumulated_b[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Grids { u64vec2 grids[]; };
+layout(std430, set = 0, binding = 3) writeonly buffer AccumulatedR { u64vec2 accumulated_r[]; };
+layout(std430, set = 0, binding = 4) writeonly buffer AccumulatedG { u64vec2 accumulated_g[]; };
+layout(std430, set = 0, binding = 5) writeonly buffer AccumulatedB { u64vec2 accumulated_b[]; };
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_record; } push;
 
@@ -30,13 +31,13 @@ void main() {
     for (int c = 0; c < 3; ++c) {
       sh[c] = from_fixed(fixed_pair(imageLoad(injected, texel + 2 * c)), fixed_pair(imageLoad(injected, texel + 2 * c + 1)),
                          1.0 / lpv.scales.x);
-      grids[lpv_grid_texel(cell, c, 0u, g.dims.xyz)] = lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c]));
+      grids[lpv_grid_texel(cell, c, 0u, g.dims.xyz)] = texel_bits(lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c])));
       flux[c] = sh_flux(sh[c]);
     }
     int accumulated = lpv_accumulated_texel(cell, push.cascade, g.dims.xyz);
-    accumulated_r[accumulated] = sh[0];
-    accumulated_g[accumulated] = sh[1];
-    accumulated_b[accumulated] = sh[2];
+    accumulated_r[accumulated] = texel_bits(sh[0]);
+    accumulated_g[accumulated] = texel_bits(sh[1]);
+    accumulated_b[accumulated] = texel_bits(sh[2]);
   }
   add_grid_flux(flux, push.stats_record, lpv.scales.x);
 }

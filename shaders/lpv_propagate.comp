@@ -26,22 +26,23 @@
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
+#include "shared/texel_store.glsl"
 
 layout(local_size_x = LPV_PROPAGATE_GROUP, local_size_y = LPV_PROPAGATE_GROUP, local_size_z = 1) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 // The grids and the accumulated light are read as texel buffers and written as storage
-// buffers, views of the same memory (vkx::TexelBuffer says why).
+// buffers, views of the same memory (vkx::TexelBuffer and texel_store.glsl say why).
 layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer grids;
 layout(set = 0, binding = 2, rgba32f) uniform readonly imageBuffer accumulated_r;
 layout(set = 0, binding = 3, rgba32f) uniform readonly imageBuffer accumulated_g;
 layout(set = 0, binding = 4, rgba32f) uniform readonly imageBuffer accumulated_b;
 layout(set = 0, binding = 5, rgba32f) uniform readonly imageBuffer faces;  // 6 texels per cell
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
-layout(std430, set = 0, binding = 7) writeonly buffer GridStore { vec4 grid_store[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer AccumulatedR { vec4 accumulated_store_r[]; };
-layout(std430, set = 0, binding = 9) writeonly buffer AccumulatedG { vec4 accumulated_store_g[]; };
-layout(std430, set = 0, binding = 10) writeonly buffer AccumulatedB { vec4 accumulated_store_b[]; };
+layout(std430, set = 0, binding = 7) writeonly buffer GridStore { u64vec2 grid_store[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer AccumulatedR { u64vec2 accumulated_store_r[]; };
+layout(std430, set = 0, binding = 9) writeonly buffer AccumulatedG { u64vec2 accumulated_store_g[]; };
+layout(std430, set = 0, binding = 10) writeonly buffer AccumulatedB { u64vec2 accumulated_store_b[]; };
 layout(push_constant) uniform Push { uint cascade; uint stats_record; uint iteration; } push;
 
 // The faces' blocking potentials apply (when the frame has a geometry volume; from the second
@@ -215,12 +216,12 @@ void main() {
         sh[c] = vec4(w.x * SH_COSINE_C0, vec3(-w.z, w.w, -w.y) * SH_COSINE_C1) / LPV_PI;
         // What this cell sends in the next iteration: its SH times the outgoing scale, so that
         // its face fluxes, negative ones dropped, add up to its flux (see lpv_outgoing_scale).
-        grid_store[texel + c] = lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c]));
+        grid_store[texel + c] = texel_bits(lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c])));
         column_flux[c] += sh_flux(sh[c]);
       }
-      accumulated_store_r[accumulated] = imageLoad(accumulated_r, accumulated) + sh[0];
-      accumulated_store_g[accumulated] = imageLoad(accumulated_g, accumulated) + sh[1];
-      accumulated_store_b[accumulated] = imageLoad(accumulated_b, accumulated) + sh[2];
+      accumulated_store_r[accumulated] = texel_bits(imageLoad(accumulated_r, accumulated) + sh[0]);
+      accumulated_store_g[accumulated] = texel_bits(imageLoad(accumulated_g, accumulated) + sh[1]);
+      accumulated_store_b[accumulated] = texel_bits(imageLoad(accumulated_b, accumulated) + sh[2]);
     }
     below = here;
     here = above;

@@ -49,8 +49,9 @@ class Buffer {
 // A device-local buffer of 16-byte texels (RGBA32F, or RGBA32UI for 64-bit integer sums),
 // read through a storage texel buffer view (imageBuffer: lavapipe gathers such texels with
 // vector loads, where it reads a storage buffer at scattered offsets one lane at a time) and
-// written as a storage buffer (vec4[], or atomics: lavapipe scatters those a lane at a time
-// in one loop, where an image store takes one loop per channel, four times the work).
+// written as a storage buffer (atomics, or texels as two 64-bit halves, texel_store.glsl:
+// lavapipe scatters those a lane at a time in one loop, where an image store takes one loop
+// per channel).
 class TexelBuffer {
  public:
   static constexpr VkDeviceSize kTexelBytes = 16;
