@@ -47,7 +47,7 @@ struct LpvVolumes {
   // Device memory the volumes of these sizes take.
   static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades);
   // The largest storage buffer a grid of `dims` binds: it must fit the device's
-  // maxStorageBufferRange (128 MiB on lavapipe: up to 93^3 cells, the corner sums the largest).
+  // maxStorageBufferRange (128 MiB on lavapipe: up to 100^3 cells, the corner sums the largest).
   static std::uint64_t largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades);
   // The most texels a texel buffer of these volumes holds: it must fit the device's
   // maxTexelBufferElements.

@@ -146,4 +146,27 @@ TEST(Propagation, IsotropicSourceConservesFluxThroughAllThirtyFaces) {
   EXPECT_NEAR(reprojected, through_faces, 1e-5 * through_faces);
 }
 
+// The sender form propagation reads: A + sqrt(5) <P, w> is the SH's value in every direction
+// w, and on the faces of the neighbour along sigma * a it is A + sqrt(5) sigma P_a (far face)
+// and A + 2 sigma P_a +- P_b (side faces), the shared-term form lpv_propagate.comp computes.
+TEST(SenderForm, EvaluatesTheShAndGivesTheFaceValues) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  const float sqrt5 = std::sqrt(5.0f);
+  for (int trial = 0; trial < 100; ++trial) {
+    const glm::vec4 sh(u(rng), u(rng), u(rng), u(rng));
+    const glm::vec4 e = gpu::lpv_sender_form(sh);
+    const glm::vec3 p(e.y, e.z, e.w);
+    const glm::vec3 w = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)));
+    EXPECT_NEAR(e.x + sqrt5 * glm::dot(p, w), gpu::sh_evaluate(sh, w), 1e-6f);
+    for (const auto& [ahead, sides] : neighbours()) {
+      const float sigma_pa = glm::dot(p, ahead);  // ahead = sigma * a
+      EXPECT_NEAR(e.x + sqrt5 * sigma_pa, gpu::sh_evaluate(sh, ahead), 1e-6f);
+      for (const glm::vec3& side : sides)
+        EXPECT_NEAR(e.x + 2.0f * sigma_pa + glm::dot(p, side),
+                    gpu::sh_evaluate(sh, gpu::lpv_face_direction(ahead, side)), 1e-6f);
+    }
+  }
+}
+
 }  // namespace

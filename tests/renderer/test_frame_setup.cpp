@@ -1,6 +1,7 @@
 // The CPU-side maths of a frame: lights after edits, camera planes, shadow views.
 #include "api/request_error.hpp"
 #include "renderer/frame_setup.hpp"
+#include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 
 #include <gtest/gtest.h>
@@ -132,6 +133,18 @@ TEST(SetupLights, RadiantValueIsColourTimesIntensity) {
   l.intensity = 8.0f;
   const auto setup = renderer::setup_lights({l}, cornell().bounds, api::Shadows{});
   EXPECT_EQ(glm::vec3(setup.lights[0].radiant), glm::vec3(8.0f, 4.0f, 0.0f));
+}
+
+// The grid's largest buffer decides which grids a device binds (lavapipe: 128 MiB storage
+// buffers): the geometry volume's corner sums, 2 sources x 8 int64 per corner of the
+// (n + 1)^3 lattice, are the largest, and 100^3 is the most that fits (docs/lpv.md).
+TEST(LpvVolumes, LargestBufferIsTheCornerSumsAndBoundsTheGridAt100Cells) {
+  constexpr std::uint64_t kLavapipeRange = 128ull << 20;
+  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 1), 101ull * 101 * 101 * 128);
+  EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 4), kLavapipeRange);
+  EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(101), 1), kLavapipeRange);
+  // A texel buffer holds 16-byte texels: the same bound in texels.
+  EXPECT_EQ(renderer::LpvVolumes::largest_texel_buffer(glm::uvec3(100), 1), 101ull * 101 * 101 * 8);
 }
 
 }  // namespace
