@@ -59,11 +59,11 @@ std::uint64_t LpvVolumes::largest_texel_buffer(glm::uvec3 dims, std::uint32_t ca
 LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
     : dims(d),
       cascades(c),
+      injected(device, cell_count(d) * kInjectedBytesPerCell / vkx::TexelBuffer::kTexelBytes, kSums),
+      corner_sums(device, cell_count(d + 1u) * kCornerSumBytes / vkx::TexelBuffer::kTexelBytes, kSums),
       grids(device, cell_count(d) * kGridTexelsPerCell),
       accumulated{vkx::TexelBuffer(device, cell_count(d) * c), vkx::TexelBuffer(device, cell_count(d) * c),
                   vkx::TexelBuffer(device, cell_count(d) * c)},
-      injected(device, cell_count(d) * kInjectedBytesPerCell / vkx::TexelBuffer::kTexelBytes, kSums),
-      corner_sums(device, cell_count(d + 1u) * kCornerSumBytes / vkx::TexelBuffer::kTexelBytes, kSums),
       corners(device, cell_count(d + 1u) * kCornerTexels),
       faces(device, cell_count(d) * kFaceTexelsPerCell) {
   device.run_once([&](VkCommandBuffer cmd) {

@@ -35,8 +35,6 @@ struct RsmMaps {
 // 20 times slower), and stores a texel to a storage buffer in one loop, where an image store
 // takes four. Cells and corners are in x-fastest order (lpv_grid.glsl).
 struct LpvVolumes {
-  static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-
   LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades);
 
   // Sizes the flux statistics for `iterations` per cascade. Only that small buffer depends on
