@@ -20,7 +20,6 @@ void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
   uvec3 dims = lpv.cascades[push.cascade].dims.xyz;
   if (any(greaterThanEqual(cell, ivec3(dims)))) return;
-  int face = 6 * int(lpv_cell_index(uvec3(cell), dims));
   for (int axis = 0; axis < 3; ++axis) {
     // The face at +axis: its corners have cell[axis] + 1 on the axis and both values on the others.
     int u = (axis + 1) % 3;
@@ -36,7 +35,8 @@ void main() {
       sh += 0.25 * imageLoad(corners, texel);
       if (BOUNCES) albedo += imageLoad(corners, texel + 1);
     }
-    faces[face + axis] = texel_bits(sh);
-    if (BOUNCES) faces[face + 3 + axis] = texel_bits(vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
+    faces[lpv_face_texel(cell, axis, dims)] = texel_bits(sh);
+    if (BOUNCES)
+      faces[lpv_face_albedo_texel(cell, axis, dims)] = texel_bits(vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
   }
 }

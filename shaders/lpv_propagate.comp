@@ -37,7 +37,7 @@ layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer grids;
 layout(set = 0, binding = 2, rgba32f) uniform readonly imageBuffer accumulated_r;
 layout(set = 0, binding = 3, rgba32f) uniform readonly imageBuffer accumulated_g;
 layout(set = 0, binding = 4, rgba32f) uniform readonly imageBuffer accumulated_b;
-layout(set = 0, binding = 5, rgba32f) uniform readonly imageBuffer faces;  // 6 texels per cell
+layout(set = 0, binding = 5, rgba32f) uniform readonly imageBuffer faces;  // lpv_face_texel
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(std430, set = 0, binding = 7) writeonly buffer GridStore { u64vec2 grid_store[]; };
 layout(std430, set = 0, binding = 8) writeonly buffer AccumulatedR { u64vec2 accumulated_store_r[]; };
@@ -151,9 +151,13 @@ void gather(inout Gathered g, Sender n, int axis, float sigma, vec4 blocking, fl
   }
 }
 
-int face_texel(ivec3 cell, int axis) { return 6 * int(lpv_cell_index(uvec3(cell), lpv.cascades[push.cascade].dims.xyz)) + axis; }
-vec4 face_blocking(ivec3 cell, int axis) { return OCCLUDED ? imageLoad(faces, face_texel(cell, axis)) : vec4(0.0); }
-vec3 face_albedo(ivec3 cell, int axis) { return BOUNCES ? imageLoad(faces, face_texel(cell, 3 + axis)).rgb : vec3(0.0); }
+vec4 face_blocking(ivec3 cell, int axis) {
+  return OCCLUDED ? imageLoad(faces, lpv_face_texel(cell, axis, lpv.cascades[push.cascade].dims.xyz)) : vec4(0.0);
+}
+vec3 face_albedo(ivec3 cell, int axis) {
+  return BOUNCES ? imageLoad(faces, lpv_face_albedo_texel(cell, axis, lpv.cascades[push.cascade].dims.xyz)).rgb
+                 : vec3(0.0);
+}
 
 void main() {
   GpuLpvCascade grid = lpv.cascades[push.cascade];

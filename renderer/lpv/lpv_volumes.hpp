@@ -82,8 +82,9 @@ struct LpvVolumes {
   // x-fastest order on the (dims + 1)^3 lattice), k = 0 blocking SH, k = 1 albedo-weighted sum
   // (rgb) and weight (a).
   vkx::TexelBuffer corners;
-  // Geometry volume per cell: texel 6 cell + k, k = 0..2 blocking SH on the +X, +Y, +Z faces,
-  // k = 3..5 the blockers' albedo there.
+  // Geometry volume per cell: texel 3 cell + k, the blocking SH on its +X, +Y, +Z faces
+  // (k = 0, 1, 2), then texel 3 (cells + cell) + k, the blockers' albedo there
+  // (lpv_face_texel).
   vkx::TexelBuffer faces;
 };
 }  // namespace renderer

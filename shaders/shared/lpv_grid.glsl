@@ -26,6 +26,14 @@ int lpv_accumulated_texel(ivec3 cell, uint cascade, uvec3 dims) {
   return int(lpv_cell_index(uvec3(cell), dims) + cascade * dims.x * dims.y * dims.z);
 }
 
+// Texels of the geometry volume's faces (LpvVolumes::faces): the blocking SH on face k = 0,
+// 1, 2 (+X, +Y, +Z) of a cell, and the blockers' albedo there (bounces only) in a second
+// block, so that the blocking SH of neighbouring cells share cache lines.
+int lpv_face_texel(ivec3 cell, int k, uvec3 dims) { return 3 * int(lpv_cell_index(uvec3(cell), dims)) + k; }
+int lpv_face_albedo_texel(ivec3 cell, int k, uvec3 dims) {
+  return 3 * int(dims.x * dims.y * dims.z + lpv_cell_index(uvec3(cell), dims)) + k;
+}
+
 // Width of the band at a cascade's border over which it hands over to the next coarser one.
 const float LPV_BLEND_CELLS = 2.0;
 
