@@ -13,4 +13,6 @@ static_assert(sizeof(GpuLpvCascade) == 32);
 static_assert(sizeof(GpuLpv) == 176);
 static_assert(sizeof(GpuRsmView) == 96);
 static_assert(sizeof(mat4) == 64);
+// splat_group_point (lpv_splat.glsl) tiles 8x8 work groups with 4x2 blocks.
+static_assert(LPV_VPL_GROUP == 8);
 }  // namespace gpu

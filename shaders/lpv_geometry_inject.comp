@@ -67,7 +67,7 @@ bool surfel_splat(vec3 p, vec3 n, float area, vec3 albedo, out ivec3 low, out ve
 }
 
 void main() {
-  uvec3 id = gl_GlobalInvocationID;
+  uvec3 id = splat_group_point();
   bool found = false;
   vec3 position = vec3(0.0);
   vec3 normal = vec3(0.0, 0.0, 1.0);

@@ -23,7 +23,7 @@ layout(push_constant) uniform Push { uint cascade; uint stats_record; } push;
 void main() {
   uint block = lpv.sizes.y;
   uint vpls_per_side = lpv.sizes.x / block;
-  uvec3 id = gl_GlobalInvocationID;
+  uvec3 id = splat_group_point();
   bool in_range = id.x < vpls_per_side && id.y < vpls_per_side;
 
   // Merge the block: flux adds up; position and normal are flux-weighted means.
