@@ -259,7 +259,7 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
   if (lpv && buffer_bytes > buffer_range)
     throw api::RequestError("lpv.grid", cells + " need a storage buffer of " + mib(buffer_bytes) +
                                             "; this device binds at most " + mib(buffer_range) + ": use fewer cells");
-  const std::uint64_t texels = LpvVolumes::largest_texel_buffer(request.lpv.grid, request.lpv.cascades);
+  const std::uint64_t texels = buffer_bytes / vkx::TexelBuffer::kTexelBytes;
   const std::uint64_t texel_limit = device.info().limits.maxTexelBufferElements;
   if (lpv && texels > texel_limit)
     throw api::RequestError("lpv.grid", cells + " need a texel buffer of " + std::to_string(texels) +
@@ -530,17 +530,17 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv) const {
   for (const RsmCopy& copy : {RsmCopy{&rsm_maps->position, &snapshot.rsm_position},
                               RsmCopy{&rsm_maps->normal, &snapshot.rsm_normal},
                               RsmCopy{&rsm_maps->flux, &snapshot.rsm_flux}}) {
-    const vkx::Image* image = copy.image;
-    const vkx::ImageDesc& d = image->desc();
+    const vkx::Image& image = *copy.image;
+    const vkx::ImageDesc& d = image.desc();
     *copy.into = read_back(std::size_t(d.width) * d.height * d.layers, [&](VkCommandBuffer cmd, VkBuffer host) {
       VkBufferImageCopy region{};
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, d.layers};
       region.imageExtent = {d.width, d.height, 1};
       const VkImageLayout src = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-      vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_GENERAL, src, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+      vkx::transition(cmd, image, VK_IMAGE_LAYOUT_GENERAL, src, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
                       VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-      vkCmdCopyImageToBuffer(cmd, image->handle(), src, host, 1, &region);
-      vkx::transition(cmd, *image, src, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+      vkCmdCopyImageToBuffer(cmd, image.handle(), src, host, 1, &region);
+      vkx::transition(cmd, image, src, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     });
   }

@@ -123,10 +123,23 @@ void reflect_neighbour(inout Gathered g, Sender n, vec4 blocking, vec3 albedo, v
   }
 }
 
+// The face a neighbour's light enters through: its blockers' SH (zero when not occluded) and
+// mean albedo (bounces only).
+struct Face {
+  vec4 blocking;
+  vec3 albedo;
+};
+
+// The face on the +axis side of `cell`.
+Face load_face(ivec3 cell, int axis, uvec3 dims) {
+  return Face(OCCLUDED ? imageLoad(faces, lpv_face_texel(cell, axis, dims)) : vec4(0.0),
+              BOUNCES ? imageLoad(faces, lpv_face_albedo_texel(cell, axis, dims)).rgb : vec3(0.0));
+}
+
 // Adds the light of neighbour n on axis `axis` (0, 1, 2 = x, y, z), travelling along sigma
-// times it, entering through faces with blocking SH `blocking` (zero when not occluded).
-void gather(inout Gathered g, Sender n, int axis, float sigma, vec4 blocking, float blocking_on, vec3 albedo) {
-  vec4 h = face_transmission(blocking, blocking_on);
+// times it, entering through `face`.
+void gather(inout Gathered g, Sender n, int axis, float sigma, Face face, float blocking_on) {
+  vec4 h = face_transmission(face.blocking, blocking_on);
   // h and the sender forms in the axes' order permuted so that `axis` comes first.
   if (axis == 1) h = h.xzwy;
   if (axis == 2) h = h.xwyz;
@@ -147,16 +160,8 @@ void gather(inout Gathered g, Sender n, int axis, float sigma, vec4 blocking, fl
     a[axis] = sigma;
     b[(axis + 1) % 3] = 1.0;
     c[(axis + 2) % 3] = 1.0;
-    reflect_neighbour(g, n, blocking * blocking_on, albedo, a, b, c);
+    reflect_neighbour(g, n, face.blocking * blocking_on, face.albedo, a, b, c);
   }
-}
-
-vec4 face_blocking(ivec3 cell, int axis) {
-  return OCCLUDED ? imageLoad(faces, lpv_face_texel(cell, axis, lpv.cascades[push.cascade].dims.xyz)) : vec4(0.0);
-}
-vec3 face_albedo(ivec3 cell, int axis) {
-  return BOUNCES ? imageLoad(faces, lpv_face_albedo_texel(cell, axis, lpv.cascades[push.cascade].dims.xyz)).rgb
-                 : vec3(0.0);
 }
 
 void main() {
@@ -182,14 +187,12 @@ void main() {
 
   Sender below = load_sender(ivec3(xy, max(z_begin - 1, 0)), source, udims, z_begin > 0 ? 1.0 : 0.0);
   Sender here = load_sender(ivec3(xy, z_begin), source, udims, 1.0);
-  vec4 face_below = face_blocking(ivec3(xy, max(z_begin - 1, 0)), 2);
-  vec3 albedo_below = face_albedo(ivec3(xy, max(z_begin - 1, 0)), 2);
+  Face face_below = load_face(ivec3(xy, max(z_begin - 1, 0)), 2, udims);
   vec3 column_flux = vec3(0.0);
   for (int z = z_begin; z < z_end; ++z) {
     ivec3 cell = ivec3(xy, z);
     Sender above = load_sender(ivec3(xy, min(z + 1, dims.z - 1)), source, udims, z + 1 < dims.z ? 1.0 : 0.0);
-    vec4 face_above = face_blocking(cell, 2);
-    vec3 albedo_above = face_albedo(cell, 2);
+    Face face_above = load_face(cell, 2, udims);
 
     Gathered g;
     for (int c = 0; c < 3; ++c) {
@@ -199,16 +202,14 @@ void main() {
     }
     ivec3 left = ivec3(lower_xy.x, xy.y, z), right = ivec3(upper_xy.x, xy.y, z);
     ivec3 front = ivec3(xy.x, lower_xy.y, z), back = ivec3(xy.x, upper_xy.y, z);
-    gather(g, load_sender(left, source, udims, lower_inside.x), 0, 1.0, face_blocking(left, 0), blocking_on,
-           face_albedo(left, 0));
-    gather(g, load_sender(right, source, udims, upper_inside.x), 0, -1.0, face_blocking(cell, 0), blocking_on,
-           face_albedo(cell, 0));
-    gather(g, load_sender(front, source, udims, lower_inside.y), 1, 1.0, face_blocking(front, 1), blocking_on,
-           face_albedo(front, 1));
-    gather(g, load_sender(back, source, udims, upper_inside.y), 1, -1.0, face_blocking(cell, 1), blocking_on,
-           face_albedo(cell, 1));
-    gather(g, below, 2, 1.0, face_below, blocking_on, albedo_below);
-    gather(g, above, 2, -1.0, face_above, blocking_on, albedo_above);
+    // Each neighbour's light enters through the face the two cells share: the +axis face of
+    // the lower one.
+    gather(g, load_sender(left, source, udims, lower_inside.x), 0, 1.0, load_face(left, 0, udims), blocking_on);
+    gather(g, load_sender(right, source, udims, upper_inside.x), 0, -1.0, load_face(cell, 0, udims), blocking_on);
+    gather(g, load_sender(front, source, udims, lower_inside.y), 1, 1.0, load_face(front, 1, udims), blocking_on);
+    gather(g, load_sender(back, source, udims, upper_inside.y), 1, -1.0, load_face(cell, 1, udims), blocking_on);
+    gather(g, below, 2, 1.0, face_below, blocking_on);
+    gather(g, above, 2, -1.0, face_above, blocking_on);
 
     if (in_grid) {
       int texel = lpv_grid_texel(cell, 0, target, udims);
@@ -230,7 +231,6 @@ void main() {
     below = here;
     here = above;
     face_below = face_above;
-    albedo_below = albedo_above;
   }
   add_grid_flux(column_flux, push.stats_record, lpv.scales.x);
 }

@@ -47,13 +47,9 @@ std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades) {
 }
 
 std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades) {
-  return largest_texel_buffer(dims, cascades) * vkx::TexelBuffer::kTexelBytes;
-}
-
-std::uint64_t LpvVolumes::largest_texel_buffer(glm::uvec3 dims, std::uint32_t cascades) {
   const std::uint64_t per_cell =
       std::max({kInjectedBytesPerCell, kGridBytesPerCell, kFaceBytesPerCell, cascades * vkx::TexelBuffer::kTexelBytes});
-  return std::max(cell_count(dims) * per_cell, cell_count(dims + 1u) * kCornerSumBytes) / vkx::TexelBuffer::kTexelBytes;
+  return std::max(cell_count(dims) * per_cell, cell_count(dims + 1u) * kCornerSumBytes);
 }
 
 LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)

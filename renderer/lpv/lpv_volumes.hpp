@@ -44,12 +44,10 @@ struct LpvVolumes {
 
   // Device memory the volumes of these sizes take.
   static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades);
-  // The largest storage buffer a grid of `dims` binds: it must fit the device's
-  // maxStorageBufferRange (128 MiB on lavapipe: up to 100^3 cells, the corner sums the largest).
+  // The largest buffer of the volumes, all texel buffers: it must fit the device's
+  // maxStorageBufferRange (128 MiB on lavapipe: up to 100^3 cells, the corner sums the
+  // largest) and, in texels of vkx::TexelBuffer::kTexelBytes, its maxTexelBufferElements.
   static std::uint64_t largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades);
-  // The most texels a texel buffer of these volumes holds: it must fit the device's
-  // maxTexelBufferElements.
-  static std::uint64_t largest_texel_buffer(glm::uvec3 dims, std::uint32_t cascades);
 
   // Records of flux_stats (gpu::LPV_FLUX_SLOTS): the VPL flux of a cascade, and its grid's
   // flux after iteration k (k = 0: as injected).

@@ -143,8 +143,9 @@ TEST(LpvVolumes, LargestBufferIsTheCornerSumsAndBoundsTheGridAt100Cells) {
   EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 1), 101ull * 101 * 101 * 128);
   EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 4), kLavapipeRange);
   EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(101), 1), kLavapipeRange);
-  // A texel buffer holds 16-byte texels: the same bound in texels.
-  EXPECT_EQ(renderer::LpvVolumes::largest_texel_buffer(glm::uvec3(100), 1), 101ull * 101 * 101 * 8);
+  // In texels (maxTexelBufferElements): 8 texels of 16 bytes per corner.
+  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 1) / vkx::TexelBuffer::kTexelBytes,
+            101ull * 101 * 101 * 8);
 }
 
 }  // namespace
