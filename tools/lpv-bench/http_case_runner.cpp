@@ -53,6 +53,10 @@ HttpCaseRunner::HttpCaseRunner(const std::string& url) {
   client_->set_read_timeout(kReadTimeoutSeconds, 0);
   client_->set_connection_timeout(kConnectTimeoutSeconds, 0);
   client_->set_keep_alive(true);  // one connection for the whole suite: no connection set-up in the round trips
+  // A request's headers and body go out in separate writes: without this, Nagle's algorithm
+  // holds the body until the server acknowledges the headers, which it may delay by 40 ms,
+  // and round_trip_ms measured that stall (75.8 against 32.7 ms of frame at 256^2 in one run).
+  client_->set_tcp_nodelay(true);
   if (const char* token = std::getenv("LPV_SERVER_TOKEN"); token && *token) client_->set_bearer_token_auth(token);
 }
 
