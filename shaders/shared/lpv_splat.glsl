@@ -76,7 +76,8 @@ void splat_point(ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, floa
 // groups: each run of 8 invocations (a lavapipe subgroup) takes a 4x2 block instead of a row
 // of 8. The block spans about half as many cells across, so its subgroup's box has fewer
 // lattice points and fewer atomics (inject 4.5 -> 4.1 ms, geometry volume 4.1 -> 3.7 at 32^3,
-// alternated runs). Which invocation takes which point changes nothing else.
+// one-off alternated runs, commit bcd1d7a). Which invocation takes which point changes
+// nothing else.
 uvec3 splat_group_point() {
   uint run = gl_LocalInvocationIndex / 8u, lane = gl_LocalInvocationIndex % 8u;
   uvec2 in_group = uvec2((run % 2u) * 4u + lane % 4u, (run / 2u) * 2u + lane / 4u);

@@ -2,7 +2,7 @@
 // declared as u64vec2 per 16-byte texel and a texel is stored as two 64-bit halves:
 // lavapipe scatters a storage-buffer store one lane at a time, checking every component
 // against the buffer's end, so two 64-bit components cost about half of four 32-bit ones
-// (propagation 10% faster).
+// (propagation 10% faster in one-off alternated runs, commit ff83845).
 #ifndef LPV_TEXEL_STORE_GLSL
 #define LPV_TEXEL_STORE_GLSL
 
