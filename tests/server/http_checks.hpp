@@ -40,6 +40,17 @@ double elapsed_ms(Work&& work) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// A render that keeps a worker busy for a while on lavapipe (about a second: 60 direct-light
+// frames at 1024^2, about 15 ms each; the server's default --max-repeat is 100), for tests
+// that need a render in flight. Direct light only, so its duration does not follow the cost
+// of the LPV settings. At 40 frames of 512^2, once the direct frame fell from 10 to 4 ms, it
+// ended after about 160 ms, before LoadClientGone's impatient client (100 ms) had left, and
+// that test failed on a fast day.
+inline constexpr int kSlowRenderSize = 1024;
+inline const std::string kSlowRender = R"({"output": {"width": )" + std::to_string(kSlowRenderSize) +
+                                       R"(, "height": )" + std::to_string(kSlowRenderSize) +
+                                       R"(}, "lpv": {"enabled": false}, "repeat": 60})";
+
 // Every key of `example` is in `actual` with a value of the same JSON type, recursively;
 // array elements of `actual` are compared with the example's first element.
 ::testing::AssertionResult has_shape_of(const nlohmann::json& example, const nlohmann::json& actual);

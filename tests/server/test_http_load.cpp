@@ -16,9 +16,6 @@
 namespace server_test {
 namespace {
 
-// A render that keeps a worker busy for a while on lavapipe (about a second). Direct
-// light only, so its duration does not follow the cost of the LPV settings.
-const std::string kSlowRender = R"({"output": {"width": 512, "height": 512}, "lpv": {"enabled": false}, "repeat": 40})";
 
 double metric(ServerProcess& server, const std::string& series) {
   const auto r = server.client()->Get("/metrics");
@@ -128,7 +125,7 @@ TEST(LoadShutdown, SigtermDuringARenderFinishesItAndExitsZero) {
   EXPECT_EQ(r->status, 200);
   const auto size = png_size(r->body);
   ASSERT_TRUE(size);
-  EXPECT_EQ(size->width, 512);
+  EXPECT_EQ(size->width, kSlowRenderSize);
   EXPECT_EQ(server.stop(SIGTERM), 0) << server.log();
   EXPECT_NE(server.log().find("\"event\":\"shutdown\""), std::string::npos);
 }

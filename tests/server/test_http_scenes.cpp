@@ -237,9 +237,7 @@ TEST(HttpScenes, ADeletedSceneIsNotRenderedFromAWorkersCache) {
   // A render of it waits behind a slow one while the scene is deleted: it got past the
   // check before queueing, so the worker must see the deletion itself.
   auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post(
-        "/v1/render", R"({"output": {"width": 512, "height": 512}, "lpv": {"enabled": false}, "repeat": 60})",
-        "application/json");
+    return server.client()->Post("/v1/render", kSlowRender, "application/json");
   });
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight 1"));
   auto queued = std::async(std::launch::async, [&] { return render(*server.client(), id); });
