@@ -594,8 +594,8 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       break;
     case kGeometryVolume:
       geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, *targets,
-                      {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.z,
-                       lpv.injection, frame.lpv.bounces},
+                      {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.w,
+                       frame.lpv.gpu.sizes.z, lpv.injection, frame.lpv.bounces},
                       *volumes);
       break;
     case kPropagate:

@@ -74,15 +74,17 @@ void main() {
   float area = 0.0;
   vec3 albedo = vec3(0.0);
   if (push.source == LPV_GV_SOURCE_RSM) {
+    // Every stride-th texel of the RSM, standing for stride^2 texels.
+    uint stride = lpv.sizes.w;
     uint res = lpv.sizes.x;
-    ivec3 texel = ivec3(id);
-    if (id.x < res && id.y < res) {
+    ivec3 texel = ivec3(id.xy * stride + stride / 2u, id.z);
+    if (texel.x < res && texel.y < res) {
       vec4 p = imageLoad(rsm_position, texel);
       vec4 n = imageLoad(rsm_normal, texel);
       found = p.w != 0.0;
       position = p.xyz;
       normal = n.xyz;
-      area = imageLoad(rsm_flux, texel).w;
+      area = imageLoad(rsm_flux, texel).w * float(stride * stride);
       albedo = decode_albedo(n.w);
     }
   } else {

@@ -8,9 +8,14 @@
 namespace renderer {
 namespace {
 
-// The camera's G-buffer feeds the geometry volume with about this many rows of surfels
-// (enough: 256 rows gave the same errors against the reference, docs/lpv.md).
-constexpr std::uint32_t kCameraSurfelRows = 128;
+// The geometry volume takes about this many rows of surfels from the camera's G-buffer and
+// from each RSM (enough: 256 rows gave the same errors against the reference, docs/lpv.md).
+constexpr std::uint32_t kGeometrySurfelRows = 128;
+
+// Every how many pixels (each way) a geometry volume source of `rows` rows gives a surfel.
+std::uint32_t surfel_stride(std::uint32_t rows) {
+  return std::max(1u, (rows + kGeometrySurfelRows / 2) / kGeometrySurfelRows);
+}
 
 float max_component(glm::vec3 v) { return std::max({v.x, v.y, v.z}); }
 
@@ -103,8 +108,8 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene
   }
   setup.occlusion = lpv.occlusion;
   setup.bounces = lpv.occlusion && lpv.bounces > 1;
-  const std::uint32_t stride = std::max(1u, (image_height + kCameraSurfelRows / 2) / kCameraSurfelRows);
-  g.sizes = glm::uvec4(lpv.rsm_resolution, lpv.vpl_downsample, stride, 0u);
+  g.sizes = glm::uvec4(lpv.rsm_resolution, lpv.vpl_downsample, surfel_stride(image_height),
+                       surfel_stride(lpv.rsm_resolution));
   g.scales = glm::vec4(flux_units_per_watt(vpl_flux_bound(lights, bounds) + emitted_flux), kGeometryUnitsPerPotential,
                        lpv.intensity, lpv.injection_offset);
   const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);

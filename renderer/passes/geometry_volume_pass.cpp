@@ -72,8 +72,8 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
   inject.bind(cmd);
   if (sources.rsm) {
     inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_RSM});
-    vkCmdDispatch(cmd, vkx::group_count(maps.resolution, gpu::LPV_VPL_GROUP), vkx::group_count(maps.resolution, gpu::LPV_VPL_GROUP),
-                  maps.layers);
+    const std::uint32_t side = vkx::group_count(maps.resolution, sources.rsm_stride);
+    vkCmdDispatch(cmd, vkx::group_count(side, gpu::LPV_VPL_GROUP), vkx::group_count(side, gpu::LPV_VPL_GROUP), maps.layers);
   }
   if (sources.camera) {
     inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA});

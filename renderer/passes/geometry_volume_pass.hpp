@@ -12,8 +12,9 @@
 namespace renderer {
 
 struct GeometrySources {
-  bool rsm = true;     // surfels of every RSM texel
+  bool rsm = true;     // surfels of every rsm_stride-th RSM texel (each way)
   bool camera = true;  // surfels of every camera_stride-th G-buffer pixel (each way)
+  std::uint32_t rsm_stride = 1;
   std::uint32_t camera_stride = 1;
   api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
   bool bounces = false;  // the blockers' albedo is splatted and resolved too (it serves bounces only)

@@ -135,7 +135,7 @@ struct GpuLpvCascade {
 // Everything the LPV passes and the shading read about the volumes of one frame.
 struct GpuLpv {
   GpuLpvCascade cascades[LPV_MAX_CASCADES];
-  uvec4 sizes;    // x: RSM resolution; y: VPL downsample; z: camera surfel stride (pixels); w: unused
+  uvec4 sizes;    // x: RSM resolution; y: VPL downsample; z: camera surfel stride (pixels); w: RSM surfel stride (texels)
   vec4 scales;    // x: flux fixed-point units per W; y: geometry fixed-point units per unit potential;
                   // z: indirect intensity scale; w: injection offset (cells)
   vec4 camera;    // x: camera pixel footprint at unit depth (m); yzw: unused

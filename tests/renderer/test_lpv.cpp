@@ -196,6 +196,29 @@ TEST_F(Lpv, OcclusionActsFromTheSecondIterationAndBouncesReturnBlockedLight) {
   EXPECT_LE(bounced, open * (1.0 + 1e-5));
 }
 
+// The geometry volume takes about 128 rows of surfels from each RSM, each standing for the
+// texels it skips (every second texel of a 256^2 map stands for 4): the light blocked must
+// not depend on the map's resolution, as a surfel counted with the wrong area would make it.
+TEST_F(Lpv, LightBlockedByRsmSurfelsDoesNotDependOnTheRsmResolution) {
+  auto propagated_flux = [](std::uint32_t rsm_resolution, bool occlusion) {
+    api::RenderRequest request = lpv_request("cornell-box");
+    request.lpv.rsm_resolution = rsm_resolution;
+    request.lpv.occlusion = occlusion;
+    request.lpv.occlusion_from_camera = false;
+    const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear);
+    return result.stats.lpv->cascades.at(0).propagated_flux.back()[0];
+  };
+  auto transmitted = [&](std::uint32_t rsm_resolution) {
+    return propagated_flux(rsm_resolution, true) / propagated_flux(rsm_resolution, false);
+  };
+  const double at_128 = transmitted(128), at_256 = transmitted(256), at_512 = transmitted(512);
+  std::printf("flux transmitted with RSM surfels of a 128^2, 256^2, 512^2 map: %.4f %.4f %.4f\n", at_128, at_256,
+              at_512);
+  EXPECT_LT(at_128, 0.95);
+  EXPECT_NEAR(at_256, at_128, 0.01);
+  EXPECT_NEAR(at_512, at_128, 0.01);
+}
+
 TEST_F(Lpv, IdenticalRequestsGiveBitwiseIdenticalGridsAndImages) {
   auto& r = gpu_test::renderer();
   api::RenderRequest request = lpv_request("cornell-box", api::View::final_);
