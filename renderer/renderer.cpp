@@ -175,7 +175,7 @@ struct Renderer::Impl {
   api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran, std::uint32_t emitters,
                           const std::vector<std::uint32_t>& iterations_run) const;
   bool converged(std::uint32_t cascade, std::uint32_t step, std::uint32_t steps, float convergence) const;
-  LpvSnapshot lpv_snapshot(const LpvSetup& lpv) const;
+  LpvSnapshot lpv_snapshot(const LpvSetup& lpv, bool with_geometry_volume) const;
   // The named scene, made resident (loaded and uploaded) if it is not; the times are 0 when it was.
   const ResidentScene& resident(const std::string& name, double& load_ms, double& upload_ms);
 };
@@ -430,7 +430,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.cpu_ms["readback"] = api::TimeSummary::of(readback_ms);
   stats.wall_ms = api::TimeSummary::of(wall_ms);
   if (plan.run[kInject]) stats.lpv = lpv_stats(request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count, iterations_run);
-  if (plan.run[kInject] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup);
+  if (plan.run[kInject] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(lpv_setup, plan.run[kGeometryVolume]);
   return result;
 }
 
@@ -505,8 +505,9 @@ api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup
   return stats;
 }
 
-// Copies the RSMs and the accumulated grids to the host. Not timed: only for checks.
-LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv) const {
+// Copies the RSMs, the accumulated grids and the geometry volume to the host. Not timed: only
+// for checks.
+LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv, bool with_geometry_volume) const {
   LpvSnapshot snapshot;
   snapshot.rsm_resolution = rsm_maps->resolution;
   snapshot.rsm_layers = rsm_maps->layers;
@@ -544,15 +545,19 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv) const {
                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     });
   }
-  std::vector<glm::vec4> channels[3];
-  for (int c = 0; c < 3; ++c) {
-    const vkx::Buffer& grid = volumes->accumulated[c].buffer();
-    channels[c] = read_back(volumes->accumulated[c].texels(), [&](VkCommandBuffer cmd, VkBuffer host) {
+  auto read_back_volume = [&](const vkx::TexelBuffer& volume, std::size_t texels) {
+    return read_back(texels, [&](VkCommandBuffer cmd, VkBuffer host) {
       vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-      const VkBufferCopy region{0, 0, grid.size()};
-      vkCmdCopyBuffer(cmd, grid.handle(), host, 1, &region);
+      const VkBufferCopy region{0, 0, texels * sizeof(glm::vec4)};
+      vkCmdCopyBuffer(cmd, volume.buffer().handle(), host, 1, &region);
     });
+  };
+  std::vector<glm::vec4> channels[3];
+  for (int c = 0; c < 3; ++c) channels[c] = read_back_volume(volumes->accumulated[c], volumes->accumulated[c].texels());
+  if (with_geometry_volume) {
+    const glm::uvec3 d = lpv.cascades.back().dims;
+    snapshot.faces = read_back_volume(volumes->faces, 3 * std::size_t(d.x) * d.y * d.z);
   }
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
     const CascadePlacement& p = lpv.cascades[c];

@@ -42,6 +42,9 @@ struct LpvSnapshot {
   std::vector<glm::vec4> rsm_position;  // per texel, layer-major: xyz, w = 1 where a surface is
   std::vector<glm::vec4> rsm_normal;    // xyz, w: albedo code
   std::vector<glm::vec4> rsm_flux;      // rgb: VPL flux (W), w: surfel area
+  // The geometry volume of the last cascade (one volume serves each cascade in turn): per
+  // cell, the blocking SH on its +X, +Y, +Z faces; empty when the frame built none.
+  std::vector<glm::vec4> faces;
 };
 
 // The readback a request's output format needs.

@@ -38,13 +38,13 @@ layout(constant_id = 1) const bool BOUNCES = true;
 
 // The lattice is the cell corners; each holds LPV_GV_WORDS sums per source: the blocking
 // potential's SH (4), the blockers' albedo (3) and the potential (1), each weighted by it.
-// Without bounces only the blocking potential's 4 are splatted.
+// Without bounces only the blocking potential's 4 are kept (LPV_GV_SH_WORDS a corner).
 #define SPLAT_VALUES LPV_GV_WORDS
-#define SPLAT_ACTIVE_VALUES (BOUNCES ? LPV_GV_WORDS : 4u)
+#define SPLAT_ACTIVE_VALUES (BOUNCES ? LPV_GV_WORDS : LPV_GV_SH_WORDS)
 #define SPLAT_SUMS corner_sums
 uint splat_index(ivec3 corner) {
   uvec3 corner_dims = lpv.cascades[push.cascade].dims.xyz + 1u;
-  return (lpv_cell_index(uvec3(corner), corner_dims) * LPV_GV_SOURCES + push.source) * LPV_GV_WORDS;
+  return (lpv_cell_index(uvec3(corner), corner_dims) * LPV_GV_SOURCES + push.source) * SPLAT_ACTIVE_VALUES;
 }
 #include "shared/lpv_splat.glsl"
 

@@ -66,7 +66,7 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.buffer().handle())
       .apply(device_.handle());
 
-  vkCmdFillBuffer(cmd, volumes.corner_sums.buffer().handle(), 0, VK_WHOLE_SIZE, 0);
+  vkCmdFillBuffer(cmd, volumes.corner_sums.buffer().handle(), 0, volumes.corner_sum_bytes(sources.bounces), 0);
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   inject.bind(cmd);

@@ -121,7 +121,11 @@ LPV_CONST LPV_EMITTER_GROUP = 64u;  // injection of emissive surfels: work group
 LPV_CONST LPV_GV_SOURCES = 2u;    // geometry volume sources: RSM surfels, camera surfels
 LPV_CONST LPV_GV_SOURCE_RSM = 0u;
 LPV_CONST LPV_GV_SOURCE_CAMERA = 1u;
-LPV_CONST LPV_GV_WORDS = 8u;      // int64 per corner and source: 4 SH, 3 albedo * weight, weight
+// int64 per corner and source: 4 SH, then (bounces only) 3 albedo * weight and the weight.
+// A frame without bounces lays its corners out with LPV_GV_SH_WORDS each, so the sums it
+// clears and splats into are half as many (LpvVolumes::corner_sum_bytes).
+LPV_CONST LPV_GV_WORDS = 8u;
+LPV_CONST LPV_GV_SH_WORDS = 4u;
 
 // Light views of the RSM pass (GpuRsmView.info.y).
 LPV_CONST RSM_VIEW_PERSPECTIVE = 0u;

@@ -108,6 +108,46 @@ BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<V
 
 template struct BasicGrid<glm::vec4>;
 template struct BasicGrid<glm::dvec4>;
+BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels, glm::vec3 origin, float cell_size,
+                                             glm::ivec3 dims) {
+  constexpr double kMaxPotential = 64.0;  // lpv_geometry_inject.comp's MAX_POTENTIAL
+  const glm::ivec3 corner_dims = dims + 1;
+  auto corner_index = [&](glm::ivec3 c) { return std::size_t(c.x + corner_dims.x * (c.y + corner_dims.y * c.z)); };
+  std::vector<glm::dvec4> corners(std::size_t(corner_dims.x) * corner_dims.y * corner_dims.z, glm::dvec4(0.0));
+  for (const Surfel& s : surfels) {
+    const glm::dvec3 q = (glm::dvec3(s.position) - glm::dvec3(origin)) / double(cell_size);
+    const double potential = std::min(double(s.area) / (double(cell_size) * cell_size), kMaxPotential);
+    if (glm::any(glm::lessThan(q, glm::dvec3(0.0))) || glm::any(glm::greaterThan(q, glm::dvec3(dims))) ||
+        !(potential > 0.0))
+      continue;
+    const glm::dvec4 values = gpu_double::sh_cosine_lobe(glm::dvec3(s.normal)) * potential;
+    const glm::ivec3 low(glm::floor(q));
+    const glm::dvec3 f = q - glm::dvec3(low);
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::ivec3 o(corner & 1, (corner >> 1) & 1, corner >> 2);
+      const glm::dvec3 w3 = glm::mix(1.0 - f, f, glm::dvec3(o));
+      corners[corner_index(glm::clamp(low + o, glm::ivec3(0), dims))] += w3.x * w3.y * w3.z * values;
+    }
+  }
+  BasicFaceBlocking<glm::dvec4> faces;
+  for (int z = 0; z < dims.z; ++z)
+    for (int y = 0; y < dims.y; ++y)
+      for (int x = 0; x < dims.x; ++x)
+        for (int axis = 0; axis < 3; ++axis) {
+          const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+          glm::dvec4 sum(0.0);
+          for (int k = 0; k < 4; ++k) {
+            glm::ivec3 c(x, y, z);
+            c[axis] += 1;
+            c[u] += k & 1;
+            c[v] += k >> 1;
+            sum += corners[corner_index(c)];
+          }
+          faces.push_back(0.25 * sum);
+        }
+  return faces;
+}
+
 template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
 template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
 template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&);

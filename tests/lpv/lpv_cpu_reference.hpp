@@ -1,5 +1,5 @@
-// A CPU reference of LPV injection and propagation: the maths of lpv_inject.comp and
-// lpv_propagate.comp written plainly (loops over faces), on the same shared formulas
+// A CPU reference of LPV injection, the geometry volume and propagation: the maths of
+// lpv_inject.comp, lpv_geometry_*.comp and lpv_propagate.comp written plainly (loops over faces), on the same shared formulas
 // (shaders/shared/lpv_sh.h), in float (what the GPU computes) or in double (to measure how
 // far the GPU's float result is from the exact one). Tests compare the GPU grids with it and
 // check conservation laws on it for grids too small or iteration counts too large for a frame.
@@ -45,6 +45,21 @@ BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cel
 template <class Vec4>
 using BasicFaceBlocking = std::vector<Vec4>;
 using FaceBlocking = BasicFaceBlocking<glm::vec4>;
+
+// A surfel of the geometry volume: an RSM texel or camera pixel, standing for `area` (m^2)
+// of surface (its own and that of the texels or pixels it stands for).
+struct Surfel {
+  glm::vec3 position;
+  glm::vec3 normal;  // unit
+  float area;
+};
+
+// The geometry volume from one source of surfels, in double: each adds its blocking
+// potential min(area / s^2, 64) times the cosine lobe of its normal to the 8 cell corners
+// around it, with trilinear weights (shares past the border to the border corners); each
+// face then takes the mean of its 4 corners.
+BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels, glm::vec3 origin, float cell_size,
+                                             glm::ivec3 dims);
 
 // One propagation iteration from `grid` (what each cell holds), with the face blocking
 // applied if given.

@@ -196,6 +196,45 @@ TEST_F(Lpv, OcclusionActsFromTheSecondIterationAndBouncesReturnBlockedLight) {
   EXPECT_LE(bounced, open * (1.0 + 1e-5));
 }
 
+// The geometry volume from the RSM's surfels alone, against the CPU reference fed the same
+// surfels: every second texel of a 256^2 map each way (about 128 rows), standing for four.
+TEST_F(Lpv, GeometryVolumeMatchesTheDoublePrecisionReference) {
+  for (const std::uint32_t bounces : {1u, 2u}) {  // two layouts of the corner sums
+    api::RenderRequest request = small_grid_request(2);
+    request.plan = api::PlanMode::exact;  // keeps the 256^2 RSM on the 8^3 grid
+    request.lpv.rsm_resolution = 256;
+    request.lpv.occlusion = true;
+    request.lpv.occlusion_from_camera = false;
+    request.lpv.bounces = bounces;
+    const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+    const renderer::LpvSnapshot& snap = result.lpv;
+    ASSERT_EQ(snap.cascades.size(), 1u);
+    const auto& c = snap.cascades[0];
+    const std::uint32_t res = snap.rsm_resolution, stride = 2;
+    std::vector<lpv_ref::Surfel> surfels;
+    for (std::uint32_t layer = 0; layer < snap.rsm_layers; ++layer)
+      for (std::uint32_t y = stride / 2; y < res; y += stride)
+        for (std::uint32_t x = stride / 2; x < res; x += stride) {
+          const std::size_t i = (std::size_t(layer) * res + y) * res + x;
+          if (snap.rsm_position[i].w == 0.0f) continue;
+          surfels.push_back({glm::vec3(snap.rsm_position[i]), glm::normalize(glm::vec3(snap.rsm_normal[i])),
+                             snap.rsm_flux[i].w * float(stride * stride)});
+        }
+    const auto exact = lpv_ref::geometry_faces(surfels, c.origin, c.cell_size, glm::ivec3(c.dims));
+    ASSERT_EQ(snap.faces.size(), exact.size());
+    double largest = 0.0, difference = 0.0;
+    for (std::size_t i = 0; i < exact.size(); ++i)
+      for (int k = 0; k < 4; ++k) {
+        largest = std::max(largest, std::abs(exact[i][k]));
+        difference = std::max(difference, std::abs(double(snap.faces[i][k]) - exact[i][k]));
+      }
+    std::printf("geometry volume (bounces %u), GPU against double: %.2e of the largest coefficient %.3g\n", bounces,
+                difference / largest, largest);
+    EXPECT_GT(largest, 0.1);
+    EXPECT_LT(difference, 3e-5 * largest);  // the fixed-point sums round each add to 2^-21
+  }
+}
+
 // The geometry volume takes about 128 rows of surfels from each RSM, each standing for the
 // texels it skips (every second texel of a 256^2 map stands for 4): the light blocked must
 // not depend on the map's resolution, as a surfel counted with the wrong area would make it.
