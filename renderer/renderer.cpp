@@ -245,15 +245,13 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
     throw api::RequestError("lpv.rsm", std::to_string(rsm_layers) + " reflective shadow maps of " +
                                            std::to_string(request.lpv.rsm_resolution) + "^2 need " + mib(rsm_bytes) +
                                            ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
-  const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades);
-  if (lpv && lpv_bytes > kLpvBudgetBytes)
-    throw api::RequestError("lpv.grid", std::to_string(request.lpv.cascades) + " cascades of " +
-                                            std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) +
-                                            "x" + std::to_string(request.lpv.grid.z) + " cells need " + mib(lpv_bytes) +
-                                            ", over the budget of " + mib(kLpvBudgetBytes) + ": use fewer cells");
-
   const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
                             std::to_string(request.lpv.grid.z) + " cells";
+  const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades);
+  if (lpv && lpv_bytes > kLpvBudgetBytes)
+    throw api::RequestError("lpv.grid", std::to_string(request.lpv.cascades) + " cascades of " + cells + " need " +
+                                            mib(lpv_bytes) + ", over the budget of " + mib(kLpvBudgetBytes) +
+                                            ": use fewer cells");
   const std::uint64_t buffer_bytes = LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades);
   const std::uint64_t buffer_range = device.info().limits.maxStorageBufferRange;
   if (lpv && buffer_bytes > buffer_range)

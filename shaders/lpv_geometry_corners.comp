@@ -10,7 +10,7 @@
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-// LPV_GV_WORDS sums per corner and source (LPV_GV_SH_WORDS without bounces), two a texel.
+// lpv_gv_corner_words(BOUNCES) sums per corner and source (gpu_types.h), two a texel.
 layout(set = 0, binding = 1, rgba32ui) uniform readonly uimageBuffer corner_sums;
 layout(std430, set = 0, binding = 2) writeonly buffer Corners { u64vec2 corners[]; };
 layout(push_constant) uniform Push { uint cascade; } push;
@@ -26,7 +26,7 @@ void main() {
   vec4 sh = vec4(0.0);
   vec4 albedo = vec4(0.0);
   for (uint source = 0u; source < LPV_GV_SOURCES; ++source) {
-    int base = int((index * LPV_GV_SOURCES + source) * (BOUNCES ? LPV_GV_WORDS : LPV_GV_SH_WORDS) / 2u);
+    int base = int((index * LPV_GV_SOURCES + source) * lpv_gv_corner_words(BOUNCES) / 2u);
     vec4 source_sh = from_fixed(fixed_pair(imageLoad(corner_sums, base)), fixed_pair(imageLoad(corner_sums, base + 1)),
                                 one_per_unit);
     if (source_sh.x <= sh.x) continue;

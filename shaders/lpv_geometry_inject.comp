@@ -20,7 +20,7 @@ layout(set = 0, binding = 3, rgba32f) uniform readonly image2DArray rsm_flux;
 layout(set = 0, binding = 4, rgba32f) uniform readonly image2D g_position;
 layout(set = 0, binding = 5, rgba16f) uniform readonly image2D g_normal;
 layout(set = 0, binding = 6, rgba16f) uniform readonly image2D g_albedo;
-layout(std430, set = 0, binding = 7) buffer CornerSums { int64_t corner_sums[]; };  // LPV_GV_WORDS per corner, source
+layout(std430, set = 0, binding = 7) buffer CornerSums { int64_t corner_sums[]; };  // lpv_gv_corner_words per corner, source
 layout(push_constant) uniform Push { uint cascade; uint source; } push;
 
 // Surfels seen edge-on count at most this many times their projected area.
@@ -36,11 +36,9 @@ vec3 decode_albedo(float code) {
 // The blockers' albedo serves bounces only: without them it is neither summed nor splatted.
 layout(constant_id = 1) const bool BOUNCES = true;
 
-// The lattice is the cell corners; each holds LPV_GV_WORDS sums per source: the blocking
-// potential's SH (4), the blockers' albedo (3) and the potential (1), each weighted by it.
-// Without bounces only the blocking potential's 4 are kept (LPV_GV_SH_WORDS a corner).
+// The lattice is the cell corners; each holds lpv_gv_corner_words sums per source (gpu_types.h).
 #define SPLAT_VALUES LPV_GV_WORDS
-#define SPLAT_ACTIVE_VALUES (BOUNCES ? LPV_GV_WORDS : LPV_GV_SH_WORDS)
+#define SPLAT_ACTIVE_VALUES lpv_gv_corner_words(BOUNCES)
 #define SPLAT_SUMS corner_sums
 uint splat_index(ivec3 corner) {
   uvec3 corner_dims = lpv.cascades[push.cascade].dims.xyz + 1u;

@@ -73,7 +73,7 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
 }
 
 VkDeviceSize LpvVolumes::corner_sum_bytes(bool bounces) const {
-  return VkDeviceSize(cell_count(dims + 1u)) * gpu::LPV_GV_SOURCES * (bounces ? gpu::LPV_GV_WORDS : gpu::LPV_GV_SH_WORDS) * 8;
+  return VkDeviceSize(cell_count(dims + 1u)) * gpu::LPV_GV_SOURCES * gpu::lpv_gv_corner_words(bounces) * 8;
 }
 
 void LpvVolumes::set_iterations(const vkx::Device& device, std::uint32_t n) {

@@ -42,7 +42,7 @@ struct LpvVolumes {
   // when it must grow.
   void set_iterations(const vkx::Device& device, std::uint32_t iterations);
 
-  // Bytes of corner_sums a frame uses: fewer sums a corner without bounces (LPV_GV_SH_WORDS).
+  // Bytes of corner_sums a frame uses: fewer sums a corner without bounces (lpv_gv_corner_words).
   VkDeviceSize corner_sum_bytes(bool bounces) const;
 
   // Device memory the volumes of these sizes take.
@@ -68,8 +68,8 @@ struct LpvVolumes {
   std::uint32_t records_per_cascade = 0;  // in flux_stats: iterations + 2
   // The scattering passes' 64-bit fixed-point sums, added with atomics and read back as RGBA32UI
   // texels (two sums a texel): int64[12] per cell, the SH of the injected VPLs; and
-  // int64[LPV_GV_WORDS] per corner and source (LPV_GV_SH_WORDS without bounces), the
-  // geometry volume's.
+  // int64[lpv_gv_corner_words(bounces)] per corner and source, the geometry volume's (room
+  // for LPV_GV_WORDS).
   vkx::TexelBuffer injected;
   vkx::TexelBuffer corner_sums;
   vkx::Buffer flux_stats;  // records of int64 fixed-point fluxes, host-visible

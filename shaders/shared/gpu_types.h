@@ -13,8 +13,10 @@ using uvec4 = glm::uvec4;
 using mat4 = glm::mat4;
 using uint = std::uint32_t;
 #define LPV_CONST inline constexpr uint
+#define LPV_CONST_FUNC inline constexpr
 #else
 #define LPV_CONST const uint
+#define LPV_CONST_FUNC
 #endif
 
 LPV_CONST LIGHT_DIRECTIONAL = 0u;
@@ -121,11 +123,12 @@ LPV_CONST LPV_EMITTER_GROUP = 64u;  // injection of emissive surfels: work group
 LPV_CONST LPV_GV_SOURCES = 2u;    // geometry volume sources: RSM surfels, camera surfels
 LPV_CONST LPV_GV_SOURCE_RSM = 0u;
 LPV_CONST LPV_GV_SOURCE_CAMERA = 1u;
-// int64 per corner and source: 4 SH, then (bounces only) 3 albedo * weight and the weight.
-// A frame without bounces lays its corners out with LPV_GV_SH_WORDS each, so the sums it
-// clears and splats into are half as many (LpvVolumes::corner_sum_bytes).
+// int64 sums per corner and source: the blocking potential's SH (4), then the blockers'
+// albedo (3) and the potential (1), each weighted by it. The albedo serves bounces only, so a
+// frame without them lays its corners out with the SH's 4 alone and clears and splats into
+// half the memory; LPV_GV_WORDS is what the buffer holds.
 LPV_CONST LPV_GV_WORDS = 8u;
-LPV_CONST LPV_GV_SH_WORDS = 4u;
+LPV_CONST_FUNC uint lpv_gv_corner_words(bool bounces) { return bounces ? LPV_GV_WORDS : 4u; }
 
 // Light views of the RSM pass (GpuRsmView.info.y).
 LPV_CONST RSM_VIEW_PERSPECTIVE = 0u;
@@ -155,6 +158,7 @@ struct GpuRsmView {
 #ifdef __cplusplus
 }  // namespace gpu
 #undef LPV_CONST
+#undef LPV_CONST_FUNC
 #endif
 
 #endif

@@ -106,8 +106,6 @@ BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<V
   return next;
 }
 
-template struct BasicGrid<glm::vec4>;
-template struct BasicGrid<glm::dvec4>;
 BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels, glm::vec3 origin, float cell_size,
                                              glm::ivec3 dims) {
   constexpr double kMaxPotential = 64.0;  // lpv_geometry_inject.comp's MAX_POTENTIAL
@@ -148,6 +146,8 @@ BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels,
   return faces;
 }
 
+template struct BasicGrid<glm::vec4>;
+template struct BasicGrid<glm::dvec4>;
 template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
 template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
 template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&);

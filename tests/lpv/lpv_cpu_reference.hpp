@@ -1,8 +1,9 @@
 // A CPU reference of LPV injection, the geometry volume and propagation: the maths of
-// lpv_inject.comp, lpv_geometry_*.comp and lpv_propagate.comp written plainly (loops over faces), on the same shared formulas
-// (shaders/shared/lpv_sh.h), in float (what the GPU computes) or in double (to measure how
-// far the GPU's float result is from the exact one). Tests compare the GPU grids with it and
-// check conservation laws on it for grids too small or iteration counts too large for a frame.
+// lpv_inject.comp, lpv_geometry_*.comp and lpv_propagate.comp written plainly (loops over
+// faces), on the same shared formulas (shaders/shared/lpv_sh.h), in float (what the GPU
+// computes) or in double (to measure how far the GPU's float result is from the exact one).
+// Tests compare the GPU grids with it and check conservation laws on it for grids too small
+// or iteration counts too large for a frame.
 #pragma once
 
 #include <glm/glm.hpp>

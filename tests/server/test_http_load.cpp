@@ -16,7 +16,6 @@
 namespace server_test {
 namespace {
 
-
 double metric(ServerProcess& server, const std::string& series) {
   const auto r = server.client()->Get("/metrics");
   if (!r || r->status != 200) return -1;
