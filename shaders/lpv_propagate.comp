@@ -13,6 +13,10 @@
 // - Each invocation walks a column of LPV_PROPAGATE_COLUMN cells along z, so the cells below
 //   and above, and the face below, are carried from one step to the next instead of loaded
 //   again, and the flux statistics are summed in the column and added once.
+// - A subgroup's columns form a block (4x2 for 8 lanes, see column_of_lane), so a cell's
+//   neighbours in x and y are mostly the cells other lanes hold at the same height, taken by
+//   shuffles; only lanes on the block's edge load one neighbour per axis. A texel gather costs
+//   lavapipe a loop over the lanes, a shuffle one permute.
 // - The grid holds what a cell sends in sender form (lpv_sender_form): the 5 face values of
 //   a neighbour are then one shared term plus or minus one coefficient each.
 // - The far and side faces are summed apart and weighted by their solid angles once per cell.
@@ -22,6 +26,7 @@
 //   frame runs the occluded shader with no blockers (the same result up to float rounding:
 //   flux * 1), so a frame compiles one variant, not two (lavapipe compiles at first use).
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_shuffle : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
@@ -164,14 +169,49 @@ void gather(inout Gathered g, Sender n, int axis, float sigma, Face face, float 
   }
 }
 
+// A neighbour inside the subgroup's block: what lane `lane` holds at the same height.
+Sender shuffle_sender(Sender s, uint lane) {
+  return Sender(vec4[3](subgroupShuffle(s.e[0], lane), subgroupShuffle(s.e[1], lane), subgroupShuffle(s.e[2], lane)));
+}
+
+// `loaded` where the lane loaded the neighbour itself, else `shuffled`; times `inside`.
+Sender pick_sender(bool use_loaded, Sender loaded, Sender shuffled, float inside) {
+  Sender s;
+  for (int c = 0; c < 3; ++c) s.e[c] = (use_loaded ? loaded.e[c] : shuffled.e[c]) * inside;
+  return s;
+}
+
+// The block of columns a subgroup takes: lanes in x-fastest order, `width` of them a row, at
+// least 2 each way, so that a lane on the block's edge has its outside neighbour on one side
+// only (4x2 for lavapipe's 8 lanes, 8x4 for 32). The device has at least 4 lanes a subgroup
+// (Device checks); one larger than the work group holds it in its first lanes.
+uvec2 block_size() {
+  uint lanes = min(gl_SubgroupSize, LPV_PROPAGATE_GROUP * LPV_PROPAGATE_GROUP);
+  uint width = min(LPV_PROPAGATE_GROUP, lanes / 2u);
+  return uvec2(width, lanes / width);
+}
+
+// The column (x, y) of this invocation: its subgroup's block in the work group, its lane's
+// place in the block. Built from the subgroup and lane ids rather than the local invocation
+// index, so the blocks match the subgroups however the device forms them.
+uvec2 column_of_lane(uvec2 block, uvec2 in_block) {
+  uint blocks_per_row = LPV_PROPAGATE_GROUP / block.x;
+  uvec2 origin = uvec2(gl_SubgroupID % blocks_per_row, gl_SubgroupID / blocks_per_row) * block;
+  return gl_WorkGroupID.xy * LPV_PROPAGATE_GROUP + origin + in_block;
+}
+
 void main() {
   GpuLpvCascade grid = lpv.cascades[push.cascade];
   uvec3 udims = grid.dims.xyz;
   ivec3 dims = ivec3(udims);
+  uvec2 block = block_size();
+  uint lane = gl_SubgroupInvocationID;
+  uvec2 in_block = uvec2(lane % block.x, lane / block.x);
+  uvec2 column = column_of_lane(block, in_block);
   // Invocations past the grid (dims not a multiple of the group) work on its last column and
   // store nothing.
-  bool in_grid = all(lessThan(gl_GlobalInvocationID.xy, udims.xy));
-  ivec2 xy = min(ivec2(gl_GlobalInvocationID.xy), dims.xy - 1);
+  bool in_grid = all(lessThan(column, udims.xy));
+  ivec2 xy = min(ivec2(column), dims.xy - 1);
   int z_begin = int(gl_WorkGroupID.z * LPV_PROPAGATE_COLUMN);
   int z_end = min(z_begin + int(LPV_PROPAGATE_COLUMN), dims.z);
   uint source = (push.iteration + 1u) & 1u;  // iteration 1 reads grid 0 and writes grid 1
@@ -184,6 +224,15 @@ void main() {
   ivec2 upper_xy = min(xy + 1, dims.xy - 1);
   vec2 lower_inside = vec2(greaterThan(xy, ivec2(0)));
   vec2 upper_inside = vec2(lessThan(xy, dims.xy - 1));
+  // The neighbour a lane on the block's edge loads itself, per axis: the lower one on the
+  // block's lower edge, else the upper one (used on the upper edge only).
+  bvec2 on_lower_edge = equal(in_block, uvec2(0u));
+  bvec2 on_upper_edge = equal(in_block, block - 1u);
+  ivec2 edge_x = ivec2(on_lower_edge.x ? lower_xy.x : upper_xy.x, xy.y);
+  ivec2 edge_y = ivec2(xy.x, on_lower_edge.y ? lower_xy.y : upper_xy.y);
+  // The lanes holding the neighbours inside the block (this lane's own on an edge, not read).
+  uvec2 lower_lane = uvec2(on_lower_edge.x ? lane : lane - 1u, on_lower_edge.y ? lane : lane - block.x);
+  uvec2 upper_lane = uvec2(on_upper_edge.x ? lane : lane + 1u, on_upper_edge.y ? lane : lane + block.x);
 
   Sender below = load_sender(ivec3(xy, max(z_begin - 1, 0)), source, udims, z_begin > 0 ? 1.0 : 0.0);
   Sender here = load_sender(ivec3(xy, z_begin), source, udims, 1.0);
@@ -200,14 +249,17 @@ void main() {
       g.side[c] = vec4(0.0);
       g.reflected[c] = vec4(0.0);
     }
-    ivec3 left = ivec3(lower_xy.x, xy.y, z), right = ivec3(upper_xy.x, xy.y, z);
-    ivec3 front = ivec3(xy.x, lower_xy.y, z), back = ivec3(xy.x, upper_xy.y, z);
+    ivec3 left = ivec3(lower_xy.x, xy.y, z), front = ivec3(xy.x, lower_xy.y, z);
+    Sender beyond_x = load_sender(ivec3(edge_x, z), source, udims, 1.0);
+    Sender beyond_y = load_sender(ivec3(edge_y, z), source, udims, 1.0);
+    Sender next_x[2] = Sender[2](shuffle_sender(here, lower_lane.x), shuffle_sender(here, upper_lane.x));
+    Sender next_y[2] = Sender[2](shuffle_sender(here, lower_lane.y), shuffle_sender(here, upper_lane.y));
     // Each neighbour's light enters through the face the two cells share: the +axis face of
     // the lower one.
-    gather(g, load_sender(left, source, udims, lower_inside.x), 0, 1.0, load_face(left, 0, udims), blocking_on);
-    gather(g, load_sender(right, source, udims, upper_inside.x), 0, -1.0, load_face(cell, 0, udims), blocking_on);
-    gather(g, load_sender(front, source, udims, lower_inside.y), 1, 1.0, load_face(front, 1, udims), blocking_on);
-    gather(g, load_sender(back, source, udims, upper_inside.y), 1, -1.0, load_face(cell, 1, udims), blocking_on);
+    gather(g, pick_sender(on_lower_edge.x, beyond_x, next_x[0], lower_inside.x), 0, 1.0, load_face(left, 0, udims), blocking_on);
+    gather(g, pick_sender(on_upper_edge.x, beyond_x, next_x[1], upper_inside.x), 0, -1.0, load_face(cell, 0, udims), blocking_on);
+    gather(g, pick_sender(on_lower_edge.y, beyond_y, next_y[0], lower_inside.y), 1, 1.0, load_face(front, 1, udims), blocking_on);
+    gather(g, pick_sender(on_upper_edge.y, beyond_y, next_y[1], upper_inside.y), 1, -1.0, load_face(cell, 1, udims), blocking_on);
     gather(g, below, 2, 1.0, face_below, blocking_on);
     gather(g, above, 2, -1.0, face_above, blocking_on);
 

@@ -271,14 +271,15 @@ void Device::create_device() {
   vkGetPhysicalDeviceProperties2(physical_, &properties);
   // Subgroup shuffles sum the splats of a subgroup before its atomics (lpv_splat.glsl).
   const VkSubgroupFeatureFlags subgroup_needs = VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
+  // Propagation lays a subgroup's lanes out as a block of columns at least 2 wide each way.
   const bool subgroup_ops = (subgroup.supportedOperations & subgroup_needs) == subgroup_needs &&
-                            (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
+                            (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) && subgroup.subgroupSize >= 4;
   if (!supported.features.shaderInt64 || !supported12.shaderBufferInt64Atomics ||
       !supported12.shaderSubgroupExtendedTypes || !subgroup_ops)
     throw std::runtime_error("device '" + info_.name + "' lacks 64-bit integer atomics or subgroup sums of them "
                              "(shaderInt64, shaderBufferInt64Atomics, shaderSubgroupExtendedTypes, subgroup "
-                             "arithmetic and shuffles in compute), which the LPV passes need for deterministic "
-                             "accumulation");
+                             "arithmetic and shuffles in compute, at least 4 lanes), which the LPV passes need "
+                             "for deterministic accumulation and propagation");
   // The forward pass reads every shadow view of a frame from one uniform buffer.
   const VkDeviceSize uniform_range = gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::mat4);
   if (properties.properties.limits.maxUniformBufferRange < uniform_range)

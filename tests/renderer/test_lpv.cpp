@@ -128,20 +128,31 @@ TEST_F(Lpv, InjectedGridMatchesTheDoublePrecisionReference) {
   }
 }
 
+// 8^3 is one work group in x and y; 13 x 10 x 9 spans two each way, partly filled, and two
+// columns of cells in z, so cells whose neighbours another work group or subgroup holds, and
+// invocations past the grid's edge, are compared too.
 TEST_F(Lpv, PropagatedGridMatchesTheDoublePrecisionReference) {
   auto& r = gpu_test::renderer();
-  const auto injected = r.render(small_grid_request(0), renderer::kReadbackLinear | renderer::kReadbackLpv);
-  const auto propagated = r.render(small_grid_request(6), renderer::kReadbackLinear | renderer::kReadbackLpv);
-  // From the GPU's own injected grid, so that only propagation is compared.
-  lpv_ref::GridD grid = grid_of(injected.lpv.cascades.at(0));
-  lpv_ref::GridD accumulated = grid;
-  for (int k = 0; k < 6; ++k) {
-    grid = lpv_ref::propagate(grid);
-    for (std::size_t i = 0; i < grid.sh.size(); ++i) accumulated.sh[i] += grid.sh[i];
+  for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(13, 10, 9)}) {
+    const std::string name = std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+    SCOPED_TRACE(name);
+    api::RenderRequest request = small_grid_request(0);
+    request.lpv.grid = dims;
+    const auto injected = r.render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+    request.lpv.iterations = 6;
+    const auto propagated = r.render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+    // From the GPU's own injected grid, so that only propagation is compared.
+    lpv_ref::GridD grid = grid_of(injected.lpv.cascades.at(0));
+    lpv_ref::GridD accumulated = grid;
+    for (int k = 0; k < 6; ++k) {
+      grid = lpv_ref::propagate(grid);
+      for (std::size_t i = 0; i < grid.sh.size(); ++i) accumulated.sh[i] += grid.sh[i];
+    }
+    const double d = grid_difference(grid_of(propagated.lpv.cascades.at(0)), accumulated);
+    std::printf("%s grid, 6 iterations accumulated, GPU (float) against double: %.2e of the largest coefficient\n",
+                name.c_str(), d);
+    EXPECT_LT(d, kPropagatedGridTolerance);
   }
-  const double d = grid_difference(grid_of(propagated.lpv.cascades.at(0)), accumulated);
-  std::printf("6 iterations accumulated, GPU (float) against double: %.2e of the largest coefficient\n", d);
-  EXPECT_LT(d, kPropagatedGridTolerance);
 }
 
 TEST_F(Lpv, PropagatedFluxNeverExceedsTheInjectedFluxWithOrWithoutOcclusion) {
