@@ -235,12 +235,10 @@ void plan_shading(FramePlan& plan, api::View view, bool display_only) {
     why_not = "view '" + api::to_string(view) + "' is shaded from the G-buffer";
   else if (!display_only)
     why_not = "a linear image is wanted: shaded from the G-buffer";
-  else if (plan.run[kInject])
-    why_not = "indirect light: shaded from the G-buffer";
   plan.run[kForward] = why_not.empty();
   if (!plan.run[kForward]) return;
   plan.run[kGBuffer] = plan.run[kShade] = plan.run[kReadback] = false;
-  plan.reason[kGBuffer] = plan.reason[kShade] = "direct light only, into the 8-bit image: shaded by the forward pass";
+  plan.reason[kGBuffer] = plan.reason[kShade] = "only the 8-bit image is wanted: shaded by the forward pass";
   plan.reason[kReadback] = "the forward pass copies its image to the host itself";
 }
 

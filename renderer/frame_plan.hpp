@@ -23,16 +23,16 @@ enum Pass : std::uint32_t {
   kShadow,
   kRsm,
   kGBuffer,
-  kForward,
   kInject,
   kGeometryVolume,
   kPropagate,
+  kForward,
   kShade,
   kReadback,
   kPassCount
 };
 inline constexpr std::array<const char*, kPassCount> kPassNames = {
-    "shadow", "rsm", "gbuffer", "forward", "inject", "geometry_volume", "propagate", "shade", "readback"};
+    "shadow", "rsm", "gbuffer", "inject", "geometry_volume", "propagate", "forward", "shade", "readback"};
 inline bool is_grid_pass(std::uint32_t p) { return p == kInject || p == kGeometryVolume || p == kPropagate; }
 
 bool needs_direct_light(api::View v);

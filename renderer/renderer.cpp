@@ -172,6 +172,10 @@ struct Renderer::Impl {
             lit ? light_kinds(frame.lights.lights, frame.gpu.emissive) : 0u,
             lit ? std::uint32_t(frame.lights.lights.size()) : 0u};
   }
+  // What the forward pass and the shading read of the LPV: its cascades when it ran, else none.
+  IndirectLightInputs indirect_light(const Frame& frame) const {
+    return {lpv_uniforms, *volumes, frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u};
+  }
   api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran, std::uint32_t emitters,
                           const std::vector<std::uint32_t>& iterations_run) const;
   bool converged(std::uint32_t cascade, std::uint32_t step, std::uint32_t steps, float convergence) const;
@@ -265,7 +269,7 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
                                             ": use fewer cells");
   if (!targets || targets->width != out.width || targets->height != out.height) {
     targets.reset();
-    targets.emplace(device, out.width, out.height);
+    targets.emplace(device, out.width, out.height, surfel_stride(out.height));
   }
   if (!atlas || atlas->resolution != shadow_res || atlas->layers != shadow_layers) {
     atlas.reset();
@@ -349,14 +353,14 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const Frame context{plan, gpu, request, light_setup, lpv_setup, readback, gpu.camera_order(camera.position)};
   const auto cascades = std::uint32_t(lpv_setup.cascades.size());
   // The passes in submission order. The cascades share their working grids, so each runs
-  // all its grid passes before the next starts.
+  // all its grid passes before the next starts. The forward pass shades with the grids.
   std::vector<std::pair<Pass, std::uint32_t>> schedule;
-  for (Pass p : {kShadow, kRsm, kGBuffer, kForward})
+  for (Pass p : {kShadow, kRsm, kGBuffer})
     if (plan.run[p]) schedule.emplace_back(p, 0);
   for (std::uint32_t c = 0; c < cascades; ++c)
     for (Pass p : {kInject, kGeometryVolume, kPropagate})
       if (plan.run[p]) schedule.emplace_back(p, c);
-  for (Pass p : {kShade, kReadback})
+  for (Pass p : {kForward, kShade, kReadback})
     if (plan.run[p]) schedule.emplace_back(p, 0);
   RenderResult result;
   std::vector<double> record_ms, wait_ms, readback_ms, wall_ms, total_gpu_ms;
@@ -588,17 +592,22 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       rsm.record(cmd, frame.gpu, *rsm_maps, rsm_view_buffer, light_buffer);
       break;
     case kGBuffer:
-      if (!frame.plan.run[kRsm] && frame.plan.run[kInject]) RsmPass::record_skipped(cmd, *rsm_maps);
-      gbuffer.record(cmd, frame.gpu, frame.draw_order, *targets, frame_uniforms);
+      gbuffer.record(cmd, frame.gpu, frame.draw_order, targets->camera, frame_uniforms);
       break;
     case kInject:
+      if (cascade == 0 && !frame.plan.run[kRsm]) RsmPass::record_skipped(cmd, *rsm_maps);
       inject.record(cmd, cascade, lpv_uniforms, frame.plan.run[kRsm] ? &*rsm_maps : nullptr, vpls_per_view_side(lpv),
                     frame.gpu, *volumes, lpv.injection);
       break;
     case kGeometryVolume:
-      geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, *targets,
+      // The camera's surfels, drawn once for every cascade (and timed with the first).
+      if (cascade == 0 && lpv.occlusion_from_camera)
+        gbuffer.record(cmd, frame.gpu, frame.draw_order, targets->surfels, frame_uniforms);
+      else if (cascade == 0)
+        GBufferPass::record_unused(cmd, targets->surfels);
+      geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, targets->surfels,
                       {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.w,
-                       frame.lpv.gpu.sizes.z, lpv.injection, frame.lpv.bounces},
+                       lpv.injection, frame.lpv.bounces},
                       *volumes);
       break;
     case kPropagate:
@@ -606,13 +615,12 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
                        *volumes);
       break;
     case kForward:
-      forward.record(cmd, frame.gpu, frame.draw_order, *targets, direct_light(frame), frame.request.output.tonemap);
+      forward.record(cmd, frame.gpu, frame.draw_order, *targets, direct_light(frame), indirect_light(frame),
+                     frame.request.output.tonemap);
       break;
     case kShade:
       shade.record(cmd, frame.gpu, *targets,
-                   {direct_light(frame), lpv_uniforms, *volumes,
-                    frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u,
-                    gpu_view(frame.request.output.view),
+                   {direct_light(frame), indirect_light(frame), gpu_view(frame.request.output.view),
                     (frame.readback & kReadbackLinear ? gpu::SHADE_OUTPUT_LINEAR : 0u) |
                         (frame.readback & kReadbackDisplay ? gpu::SHADE_OUTPUT_DISPLAY : 0u),
                     frame.request.output.tonemap});

@@ -3,7 +3,7 @@
 // A surfel of area A with normal n blocks the fraction A / s^2 * max(0, <n, -w>) of light
 // travelling in direction w across a cell face of side s: one-sided, since a two-sided
 // surfel cancels in 2-band SH (LPV annotations 5.1). Surfels come from the RSMs (every light
-// view) and from the camera's G-buffer; each source has its own accumulators, so the same
+// view) and from the camera's surfel G-buffer; each source has its own accumulators, so the same
 // wall seen by both is not counted twice (the resolve takes the stronger source per corner).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
@@ -17,6 +17,7 @@ layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2DArray rsm_position;
 layout(set = 0, binding = 2, rgba32f) uniform readonly image2DArray rsm_normal;
 layout(set = 0, binding = 3, rgba32f) uniform readonly image2DArray rsm_flux;
+// The camera's surfel G-buffer (FrameTargets::surfels): a texel per stride x stride pixels.
 layout(set = 0, binding = 4, rgba32f) uniform readonly image2D g_position;
 layout(set = 0, binding = 5, rgba16f) uniform readonly image2D g_normal;
 layout(set = 0, binding = 6, rgba16f) uniform readonly image2D g_albedo;
@@ -86,10 +87,10 @@ void main() {
       albedo = decode_albedo(n.w);
     }
   } else {
-    // Every stride-th pixel of the camera's G-buffer, standing for stride^2 pixels.
+    // A texel of the camera's surfel G-buffer, standing for stride^2 pixels of the image.
     uint stride = lpv.sizes.z;
     ivec2 size = imageSize(g_position);
-    ivec2 pixel = ivec2(id.xy * stride + stride / 2u);
+    ivec2 pixel = ivec2(id.xy);
     if (pixel.x < size.x && pixel.y < size.y) {
       vec4 p = imageLoad(g_position, pixel);
       found = p.w != 0.0;

@@ -47,50 +47,7 @@ layout(set = 0, binding = 12, rgba32f) uniform readonly imageBuffer accumulated_
 layout(std430, set = 0, binding = 13) writeonly buffer Display { uint display_pixels[]; };
 #include "shared/direct_light.glsl"
 #include "shared/display_encode.glsl"
-
-// Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units) onto a
-// surface with normal n: trilinear between cell centres, then E = <I, cosine lobe of -n> / s^2
-// (a cell's intensity per unit face area is the radiance that crosses it). q is clamped to
-// the centres of the border cells, so the filter never mixes in the next cascade, stacked
-// above this one in the same buffers.
-vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
-  GpuLpvCascade g = lpv.cascades[c];
-  ivec3 last = ivec3(g.dims.xyz) - 1;
-  vec3 t = clamp(q - 0.5, vec3(0.0), vec3(last));  // in units of cell centres
-  ivec3 low = ivec3(t);
-  vec3 f = t - vec3(low);
-  ivec3 high = min(low + 1, last);
-  vec4 lobe = sh_cosine_lobe(-n);
-  vec3 e = vec3(0.0);
-  for (uint corner = 0u; corner < 8u; ++corner) {
-    bvec3 up = bvec3(corner & 1u, corner & 2u, corner & 4u);
-    vec3 w3 = mix(1.0 - f, f, up);
-    int cell = lpv_accumulated_texel(mix(low, high, up), c, g.dims.xyz);
-    e += (w3.x * w3.y * w3.z) * vec3(dot(imageLoad(accumulated_r, cell), lobe), dot(imageLoad(accumulated_g, cell), lobe),
-                                     dot(imageLoad(accumulated_b, cell), lobe));
-  }
-  return max(e, vec3(0.0)) / (g.origin.w * g.origin.w);
-}
-
-// Indirect irradiance at p: the finest cascade that holds p, handing over to the next coarser
-// one across its border band. Sampled half a cell along the normal, against self-lighting.
-// The loop has no exit on `remaining` reaching 0 (the coarser cascades then add 0): with a
-// data-dependent exit it is not unrolled, and the single-cascade default shaded 30% slower.
-vec3 indirect_irradiance(vec3 p, vec3 n) {
-  vec3 e = vec3(0.0);
-  float remaining = 1.0;
-  for (uint c = 0u; c < CASCADES; ++c) {
-    GpuLpvCascade g = lpv.cascades[c];
-    vec3 q = lpv_grid_position(g, p + 0.5 * g.origin.w * n);
-    float inside = lpv_inside_distance(g, q);
-    if (inside < 0.0) continue;
-    float w = c + 1u == CASCADES ? 1.0 : clamp(inside / LPV_BLEND_CELLS, 0.0, 1.0);
-    if (w == 0.0) continue;
-    e += remaining * w * cascade_irradiance(c, q, n);
-    remaining *= 1.0 - w;
-  }
-  return e;
-}
+#include "shared/lpv_irradiance.glsl"
 
 // The grid itself: mean intensity per unit face area (W/(m^2 sr)) of the nearest cell of the
 // finest cascade holding p, so cells show as blocks.

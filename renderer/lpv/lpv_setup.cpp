@@ -8,15 +8,6 @@
 namespace renderer {
 namespace {
 
-// The geometry volume takes about this many rows of surfels from the camera's G-buffer and
-// from each RSM (enough: 256 rows gave the same errors against the reference, docs/lpv.md).
-constexpr std::uint32_t kGeometrySurfelRows = 128;
-
-// Every how many pixels (each way) a geometry volume source of `rows` rows gives a surfel.
-std::uint32_t surfel_stride(std::uint32_t rows) {
-  return std::max(1u, (rows + kGeometrySurfelRows / 2) / kGeometrySurfelRows);
-}
-
 float max_component(glm::vec3 v) { return std::max({v.x, v.y, v.z}); }
 
 // The origin that centres a grid of `dims` cells of `cell` metres on `centre`, on the lattice
@@ -26,6 +17,10 @@ glm::vec3 snapped_origin(glm::vec3 centre, glm::uvec3 dims, float cell, glm::vec
 }
 
 }  // namespace
+
+std::uint32_t surfel_stride(std::uint32_t rows) {
+  return std::max(1u, (rows + kGeometrySurfelRows / 2) / kGeometrySurfelRows);
+}
 
 std::vector<CascadePlacement> place_cascades(const api::Lpv& lpv, const scene::Bounds& bounds, glm::vec3 focus) {
   const glm::uvec3 dims = lpv.grid;

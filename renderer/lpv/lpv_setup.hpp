@@ -45,6 +45,13 @@ struct LpvSetup {
   std::vector<gpu::GpuRsmView> rsm_views;
 };
 
+// The geometry volume takes about this many rows of surfels from the camera and from each
+// RSM (enough: 256 rows gave the same errors against the reference, docs/lpv.md).
+inline constexpr std::uint32_t kGeometrySurfelRows = 128;
+
+// Every how many pixels (each way) a geometry volume source of `rows` rows gives a surfel.
+std::uint32_t surfel_stride(std::uint32_t rows);
+
 // VPLs per side of each light view: the RSM's texels, merged vpl_downsample^2 at a time.
 inline std::uint32_t vpls_per_view_side(const api::Lpv& lpv) { return lpv.rsm_resolution / lpv.vpl_downsample; }
 

@@ -17,26 +17,31 @@ ForwardPass::ForwardPass(const vkx::Device& device, const TextureSetLayout& text
       vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | fragment),
       vkx::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),  // shadow maps
       vkx::binding(2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),          // lights
-      vkx::binding(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment)};         // shadow views
+      vkx::binding(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),          // shadow views
+      vkx::binding(4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),          // LPV
+      vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),    // accumulated SH: red,
+      vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),    // green
+      vkx::binding(7, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment)};   // and blue
   layout_.draw_sets = {textures.handle()};
   layout_.push_constant_bytes = sizeof(gpu::GpuDrawMaterial);
   layout_.push_constant_stages = fragment;
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
 }
 
-const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const DirectLightInputs& in,
-                                           std::uint32_t curve) const {
-  // Bits 0-1: the material variant; 2-3: the tone curve; above: the lights (11 bits).
-  const std::uint32_t key = (direct_light_key(in) << 4) | (curve << 2) | variant.index();
+const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const DirectLightInputs& direct,
+                                           std::uint32_t cascades, std::uint32_t curve) const {
+  // Bits 0-1: the material variant; 2-3: the tone curve; 4-6: the cascades (at most 4); above:
+  // the lights (11 bits).
+  const std::uint32_t key = (direct_light_key(direct) << 7) | (cascades << 4) | (curve << 2) | variant.index();
   return pipelines_.get(key, [&] {
     vkx::GraphicsPipelineDesc g;
     g.vertex_spirv = spirv_gbuffer_vert;
     g.fragment_spirv = spirv_forward_frag;
-    g.fragment_specialization = {variant.double_sided, variant.textured, in.light_kinds, specialised_light_count(in),
-                                 curve};
+    g.fragment_specialization = {variant.double_sided,      variant.textured, direct.light_kinds,
+                                 specialised_light_count(direct), curve,        cascades};
     g.vertex_input = scene_vertex_input();
     g.color_formats = {FrameTargets::kDisplayFormat};
-    g.depth_format = FrameTargets::kDepthFormat;
+    g.depth_format = GBuffer::kDepthFormat;
     // As the G-buffer: counter-clockwise front faces, back faces culled unless double-sided.
     g.cull_mode = variant.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
     g.front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
@@ -45,25 +50,30 @@ const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const Direct
 }
 
 void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
-                         const FrameTargets& targets, const DirectLightInputs& in, api::Tonemap tone_curve) const {
+                         const FrameTargets& targets, const DirectLightInputs& direct,
+                         const IndirectLightInputs& indirect, api::Tonemap tone_curve) const {
   const std::uint32_t curve = gpu_tone_curve(tone_curve);
-  for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
-    vkx::DescriptorWriter(pipeline(variant, in, curve).descriptor_set())
-        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.frame.handle())
-        .image(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, in.atlas.depth.view(),
+  auto pipeline_for = [&](MaterialVariant variant) -> const vkx::Pipeline& {
+    return pipeline(variant, direct, indirect.cascades, curve);
+  };
+  for (MaterialVariant variant : scene.variants_in_use) {  // before any is bound
+    vkx::DescriptorWriter writer(pipeline_for(variant).descriptor_set());
+    bind_indirect_light(writer, 4, indirect)
+        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.frame.handle())
+        .image(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, direct.atlas.depth.view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, shadow_sampler_.handle())
-        .buffer(2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.lights.handle())
-        .buffer(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.shadow_views.handle())
+        .buffer(2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.lights.handle())
+        .buffer(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.shadow_views.handle())
         .apply(device_.handle());
+  }
   const std::array<const vkx::Image*, 1> colors{&targets.display_target};
-  vkx::prepare_attachments(cmd, colors, &targets.depth);
+  vkx::prepare_attachments(cmd, colors, &targets.camera.depth);
   const std::array<VkImageView, 1> views{targets.display_target.view()};
   // Opaque black where nothing is drawn, as the shading encodes a pixel without a surface.
-  vkx::begin_cleared_rendering(device_, cmd, views, targets.depth.view(), {targets.width, targets.height}, false,
+  vkx::begin_cleared_rendering(device_, cmd, views, targets.camera.depth.view(), {targets.width, targets.height}, false,
                                vkx::ClearColors::all, 1.0f);
   scene.draw_all(
-      cmd, [&](MaterialVariant variant) -> const vkx::Pipeline& { return pipeline(variant, in, curve); },
-      [&](const scene::Draw& draw) { return scene.draw_material(draw); }, order);
+      cmd, pipeline_for, [&](const scene::Draw& draw) { return scene.draw_material(draw); }, order);
   device_.cmd_end_rendering(cmd);
 
   // Into host memory, rows top to bottom as the shading writes the display image.

@@ -1,7 +1,7 @@
-// The forward pass: the camera's view of the scene shaded with direct light while it is
-// rasterised, straight into the 8-bit display image (shaders/forward.frag). It replaces the
-// G-buffer and the shading for frames that need neither indirect light nor a linear image;
-// the planner decides (plan_shading in frame_plan.hpp).
+// The forward pass: the camera's view of the scene shaded with direct and indirect light while
+// it is rasterised, straight into the 8-bit display image (shaders/forward.frag). It replaces
+// the G-buffer and the shading for frames that show the final or direct view and need no
+// linear image; the planner decides (plan_shading in frame_plan.hpp).
 #pragma once
 
 #include "api/render_request.hpp"
@@ -9,6 +9,7 @@
 #include "renderer/gpu_scene.hpp"
 #include "renderer/material_textures.hpp"
 #include "renderer/passes/direct_light_inputs.hpp"
+#include "renderer/passes/indirect_light_inputs.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
 namespace renderer {
@@ -21,12 +22,14 @@ class ForwardPass {
   // straight into targets.display_readback for the host (the frame's readback has nothing
   // left to copy of it).
   void record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
-              const FrameTargets& targets, const DirectLightInputs& in, api::Tonemap tone_curve) const;
+              const FrameTargets& targets, const DirectLightInputs& direct, const IndirectLightInputs& indirect,
+              api::Tonemap tone_curve) const;
 
  private:
-  // One pipeline per material variant and specialisation of the light code and tone curve,
-  // made on first use.
-  const vkx::Pipeline& pipeline(MaterialVariant variant, const DirectLightInputs& in, std::uint32_t curve) const;
+  // One pipeline per material variant, specialisation of the light code, cascade count and
+  // tone curve, made on first use.
+  const vkx::Pipeline& pipeline(MaterialVariant variant, const DirectLightInputs& direct, std::uint32_t cascades,
+                                std::uint32_t curve) const;
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;
   vkx::PipelineVariants pipelines_;

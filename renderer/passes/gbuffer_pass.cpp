@@ -25,8 +25,8 @@ vkx::GraphicsPipelineDesc gbuffer_pipeline(MaterialVariant variant) {
   g.fragment_spirv = spirv_gbuffer_frag;
   g.fragment_specialization = {variant.double_sided, variant.textured};
   g.vertex_input = scene_vertex_input();
-  g.color_formats = {FrameTargets::kPositionFormat, FrameTargets::kNormalFormat, FrameTargets::kAlbedoFormat};
-  g.depth_format = FrameTargets::kDepthFormat;
+  g.color_formats = {GBuffer::kPositionFormat, GBuffer::kNormalFormat, GBuffer::kAlbedoFormat};
+  g.depth_format = GBuffer::kDepthFormat;
   // Counter-clockwise front faces as in glTF: the projection's Y flip and Vulkan's
   // Y-down framebuffer cancel, so the winding arrives as it was authored.
   g.cull_mode = variant.double_sided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT;
@@ -42,23 +42,30 @@ GBufferPass::GBufferPass(const vkx::Device& device, const TextureSetLayout& text
 }
 
 void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
-                         const FrameTargets& targets, const vkx::Buffer& frame) const {
+                         const GBuffer& target, const vkx::Buffer& frame) const {
   for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
     vkx::DescriptorWriter(pipelines_.get(variant).descriptor_set())
         .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.handle())
         .apply(device_.handle());
-  const std::array<const vkx::Image*, 3> colors{&targets.position, &targets.normal, &targets.albedo};
-  vkx::prepare_attachments(cmd, colors, &targets.depth);
-  const std::array<VkImageView, 3> views{targets.position.view(), targets.normal.view(), targets.albedo.view()};
+  const std::array<const vkx::Image*, 3> colors{&target.position, &target.normal, &target.albedo};
+  vkx::prepare_attachments(cmd, colors, &target.depth);
+  const std::array<VkImageView, 3> views{target.position.view(), target.normal.view(), target.albedo.view()};
   // Position's w = 0 marks pixels with no surface; normal and albedo are read only elsewhere.
-  vkx::begin_cleared_rendering(device_, cmd, views, targets.depth.view(), {targets.width, targets.height}, false,
+  vkx::begin_cleared_rendering(device_, cmd, views, target.depth.view(), {target.width, target.height}, false,
                                vkx::ClearColors::first);
+  vkCmdSetViewport(cmd, 0, 1, &target.viewport);
   scene.draw_all(
       cmd, [&](MaterialVariant variant) -> const vkx::Pipeline& { return pipelines_.get(variant); },
       [&](const scene::Draw& draw) { return scene.draw_material(draw); }, order);
   device_.cmd_end_rendering(cmd);
 
   vkx::colors_to_compute(cmd, colors);
+}
+
+void GBufferPass::record_unused(VkCommandBuffer cmd, const GBuffer& target) {
+  for (const vkx::Image* image : {&target.position, &target.normal, &target.albedo})
+    vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
 }
 
 }  // namespace renderer

@@ -13,10 +13,14 @@ class GBufferPass {
  public:
   GBufferPass(const vkx::Device& device, const TextureSetLayout& textures);
 
-  // `frame` holds a gpu::GpuFrame; `order`: the scene's camera_order. Leaves the colour
-  // targets ready for compute sampling.
-  void record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order,
-              const FrameTargets& targets, const vkx::Buffer& frame) const;
+  // Draws the camera's view into `target` through its viewport. `frame` holds a
+  // gpu::GpuFrame; `order`: the scene's camera_order. Leaves the colour targets ready for
+  // compute reads.
+  void record(VkCommandBuffer cmd, const GpuScene& scene, std::span<const std::uint32_t> order, const GBuffer& target,
+              const vkx::Buffer& frame) const;
+  // Leaves `target`'s colour images, not drawn this frame, in the layout compute passes bind
+  // them with (their contents undefined: no pass reads them then).
+  static void record_unused(VkCommandBuffer cmd, const GBuffer& target);
 
  private:
   const vkx::Device& device_;

@@ -29,7 +29,7 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
 }
 
 void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
-                                const RsmMaps& maps, const FrameTargets& camera, const GeometrySources& sources,
+                                const RsmMaps& maps, const GBuffer& camera, const GeometrySources& sources,
                                 const LpvVolumes& volumes) const {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
@@ -77,9 +77,8 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
   }
   if (sources.camera) {
     inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA});
-    const std::uint32_t s = sources.camera_stride;
-    vkCmdDispatch(cmd, vkx::group_count(vkx::group_count(camera.width, s), gpu::LPV_VPL_GROUP),
-                  vkx::group_count(vkx::group_count(camera.height, s), gpu::LPV_VPL_GROUP), 1);
+    vkCmdDispatch(cmd, vkx::group_count(camera.width, gpu::LPV_VPL_GROUP),
+                  vkx::group_count(camera.height, gpu::LPV_VPL_GROUP), 1);
   }
   vkx::compute_barrier(cmd);
   const glm::uvec3 d = volumes.dims;

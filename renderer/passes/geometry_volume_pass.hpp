@@ -1,5 +1,5 @@
-// LPV geometry volume for one cascade: surfels from the RSMs and from the camera's G-buffer
-// add one-sided blocking potentials to the cell corners (lpv_geometry_inject.comp); each corner
+// LPV geometry volume for one cascade: surfels from the RSMs and from the camera's surfel
+// G-buffer (FrameTargets::surfels, drawn by the GBufferPass) add one-sided blocking potentials to the cell corners (lpv_geometry_inject.comp); each corner
 // keeps its stronger source (lpv_geometry_corners.comp); the corners become the blocking of
 // every cell face (lpv_geometry_resolve.comp).
 #pragma once
@@ -13,9 +13,8 @@ namespace renderer {
 
 struct GeometrySources {
   bool rsm = true;     // surfels of every rsm_stride-th RSM texel (each way)
-  bool camera = true;  // surfels of every camera_stride-th G-buffer pixel (each way)
+  bool camera = true;  // surfels of every texel of the camera's surfel G-buffer
   std::uint32_t rsm_stride = 1;
-  std::uint32_t camera_stride = 1;
   api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
   bool bounces = false;  // the blockers' albedo is splatted and resolved too (it serves bounces only)
 };
@@ -25,7 +24,7 @@ class GeometryVolumePass {
   explicit GeometryVolumePass(const vkx::Device& device);
 
   void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
-              const FrameTargets& camera, const GeometrySources& sources, const LpvVolumes& volumes) const;
+              const GBuffer& camera_surfels, const GeometrySources& sources, const LpvVolumes& volumes) const;
 
  private:
   const vkx::Device& device_;

@@ -23,9 +23,9 @@ const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
   const std::uint32_t curve = in.outputs & gpu::SHADE_OUTPUT_DISPLAY ? gpu_tone_curve(in.tone_curve) : gpu::TONEMAP_NONE;
   // Bits 0-2: the view (VIEW_* < 8); 3-5: the cascades (at most 4); 6-7: the outputs; 8-9:
   // the tone curve; above: the lights (11 bits).
-  const std::uint32_t key = (light_key << 10) | (curve << 8) | (in.outputs << 6) | (in.cascades << 3) | in.view;
+  const std::uint32_t key = (light_key << 10) | (curve << 8) | (in.outputs << 6) | (in.indirect.cascades << 3) | in.view;
   return variants_.get(key, [&] {
-    const std::uint32_t constants[] = {in.cascades,  in.view, in.direct.light_kinds, specialised_light_count(in.direct),
+    const std::uint32_t constants[] = {in.indirect.cascades, in.view, in.direct.light_kinds, specialised_light_count(in.direct),
                                        in.outputs, curve};
     return vkx::Pipeline(device_, layout_, spirv_shade_comp, constants);
   });
@@ -37,20 +37,17 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const vkx::Pipeline& pipeline = variant(in);
-  vkx::DescriptorWriter(pipeline.descriptor_set())
+  vkx::DescriptorWriter writer(pipeline.descriptor_set());
+  bind_indirect_light(writer, 9, in.indirect)
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.direct.frame.handle())
-      .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.position.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.albedo.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.position.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.albedo.view(), VK_IMAGE_LAYOUT_GENERAL)
       .image(4, sampled, in.direct.atlas.depth.view(), read, shadow_sampler_.handle())
       .buffer(5, storage, in.direct.lights.handle())
       .buffer(6, storage, in.direct.shadow_views.handle())
       .buffer(7, storage, scene.materials.handle())
       .buffer(8, storage, targets.linear.handle())
-      .buffer(9, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.lpv.handle())
-      .texel_buffer(10, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, in.volumes.accumulated[0].view())
-      .texel_buffer(11, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, in.volumes.accumulated[1].view())
-      .texel_buffer(12, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, in.volumes.accumulated[2].view())
       .buffer(13, storage, targets.display.handle())
       .apply(device_.handle());
 

@@ -5,8 +5,8 @@
 #include "api/render_request.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_scene.hpp"
-#include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/passes/direct_light_inputs.hpp"
+#include "renderer/passes/indirect_light_inputs.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 
 #include <cstdint>
@@ -15,9 +15,7 @@ namespace renderer {
 
 struct ShadeInputs {
   DirectLightInputs direct;        // views without direct light: no light kinds, count 0
-  const vkx::Buffer& lpv;          // gpu::GpuLpv
-  const LpvVolumes& volumes;       // the cascades' accumulated SH (not read without indirect light)
-  std::uint32_t cascades;          // of indirect light to shade (0: the LPV did not run)
+  IndirectLightInputs indirect;
   std::uint32_t view;              // gpu::VIEW_*
   std::uint32_t outputs;           // gpu::SHADE_OUTPUT_* bits: the images to write
   api::Tonemap tone_curve;         // of the display image

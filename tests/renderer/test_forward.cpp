@@ -1,7 +1,8 @@
-// The forward pass (direct light shaded while rasterising, straight into the 8-bit image)
-// against the G-buffer and deferred shading it stands in for: the same picture within one
-// level of 8 bits, on every built-in scene (spot, point and directional lights, their shadow
-// maps), with textured, double-sided and emissive materials, and with every tone curve.
+// The forward pass (direct and indirect light shaded while rasterising, straight into the
+// 8-bit image) against the G-buffer and deferred shading it stands in for: the same picture
+// within one level of 8 bits, on every built-in scene (spot, point and directional lights,
+// their shadow maps, the LPV's indirect light with one and three cascades), with textured,
+// double-sided and emissive materials, and with every tone curve.
 #include "gltf_builder.hpp"
 #include "gpu_test.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 
 namespace {
@@ -24,8 +26,10 @@ bool ran(const renderer::RenderResult& r, const std::string& pass) {
 }
 
 // Renders `request` twice: reading back only the 8-bit image (the forward pass) and a linear
-// image too (the deferred shading, which writes both), and compares the 8-bit images.
-void expect_same_picture(const scene::Scene& scene, const api::RenderRequest& request) {
+// image too (the deferred shading, which writes both), and compares the 8-bit images: a level
+// apart in at most `differing_percent` of the bytes.
+void expect_same_picture(const scene::Scene& scene, const api::RenderRequest& request,
+                         std::size_t differing_percent = 1) {
   auto& r = gpu_test::renderer();
   const auto forward = r.render(scene, request, renderer::kReadbackDisplay);
   const auto deferred = r.render(scene, request, renderer::kReadbackDisplay | renderer::kReadbackLinear);
@@ -48,8 +52,10 @@ void expect_same_picture(const scene::Scene& scene, const api::RenderRequest& re
   // The deferred shading reads its normal and albedo back from 16-bit floats, the forward
   // pass has them in full precision: a level apart here and there, no more.
   EXPECT_LE(largest, 1);
-  EXPECT_LE(differing, a.size() / 100);
+  EXPECT_LE(differing, a.size() * differing_percent / 100);
   EXPECT_GT(lit, a.size() / 8) << "too little of the picture is lit to compare";
+  std::printf("%s, %s: %.2f%% of the bytes a level apart\n", scene.name.c_str(),
+              api::to_string(request.output.view).c_str(), 100.0 * double(differing) / double(a.size()));
 }
 
 api::RenderRequest direct_png(api::View view, std::uint32_t size = 96) {
@@ -69,6 +75,15 @@ TEST_F(Forward, SamePictureAsTheDeferredShadingOnEveryBuiltinScene) {
     api::RenderRequest direct = direct_png(api::View::direct);
     direct.lpv.enabled = true;  // the direct view needs no indirect light either way
     expect_same_picture(scene, direct);
+    // The indirect light's lookup, half a cell along the normal and with the normal's cosine
+    // lobe, takes the rounding of the stored normal too: 1.4% of sun-courtyard's bytes a level
+    // apart (measured; 0.0% with direct light only), at most 0.53% in the other scenes.
+    api::RenderRequest indirect = direct_png(api::View::final_);
+    indirect.lpv.enabled = true;
+    expect_same_picture(scene, indirect, 2);
+    indirect.lpv.cascades = 3;
+    indirect.plan = api::PlanMode::exact;  // all three, where the planner might drop some
+    expect_same_picture(scene, indirect, 2);
   }
 }
 

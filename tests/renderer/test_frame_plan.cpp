@@ -181,7 +181,7 @@ using renderer::kGBuffer;
 using renderer::kReadback;
 using renderer::kShade;
 
-TEST(PlanShading, ForwardOnlyForDirectLightPicturesReadBackIn8Bits) {
+TEST(PlanShading, ForwardForFinalAndDirectPicturesReadBackIn8Bits) {
   api::RenderRequest direct_only;
   direct_only.lpv.enabled = false;
   renderer::FramePlan p = plan(direct_only, cornell().lights, cornell());
@@ -205,12 +205,18 @@ TEST(PlanShading, ForwardOnlyForDirectLightPicturesReadBackIn8Bits) {
   EXPECT_FALSE(p.run[kForward]);
   EXPECT_NE(p.reason[kForward].find("albedo"), std::string::npos) << p.reason[kForward];
 
-  const api::RenderRequest with_lpv;  // the defaults: indirect light
+  const api::RenderRequest with_lpv;  // the defaults: indirect light, shaded forward too
   p = plan(with_lpv, cornell().lights, cornell());
   ASSERT_TRUE(p.run[renderer::kInject]);
   renderer::plan_shading(p, api::View::final_, true);
+  EXPECT_TRUE(p.run[kForward]);
+  EXPECT_FALSE(p.run[kGBuffer] || p.run[kShade]);
+
+  api::RenderRequest indirect = with_lpv;
+  indirect.output.view = api::View::indirect;
+  p = plan(indirect, cornell().lights, cornell());
+  renderer::plan_shading(p, api::View::indirect, true);
   EXPECT_FALSE(p.run[kForward]);
-  EXPECT_TRUE(p.run[kGBuffer] && p.run[kShade]);
   EXPECT_NE(p.reason[kForward].find("indirect"), std::string::npos) << p.reason[kForward];
 }
 

@@ -1,0 +1,31 @@
+// What a pass that shades indirect light reads (shaders/shared/lpv_irradiance.glsl): the LPV's
+// parameters and the cascades' accumulated SH, and the cascade count the shader is
+// specialised on.
+#pragma once
+
+#include "renderer/lpv/lpv_volumes.hpp"
+#include "renderer/vulkan/pipeline.hpp"
+#include "renderer/vulkan/resources.hpp"
+
+#include <cstdint>
+
+namespace renderer {
+
+struct IndirectLightInputs {
+  const vkx::Buffer& lpv;     // gpu::GpuLpv
+  const LpvVolumes& volumes;  // the cascades' accumulated SH (not read without indirect light)
+  std::uint32_t cascades;     // of indirect light to shade (0: the LPV did not run)
+};
+
+// Binds in.lpv at `first` and the accumulated red, green and blue SH at the next three
+// bindings, as lpv_irradiance.glsl's includers declare them. Bound even when the shader has
+// no indirect light (CASCADES = 0), since the bindings are still declared.
+inline vkx::DescriptorWriter& bind_indirect_light(vkx::DescriptorWriter& writer, std::uint32_t first,
+                                                  const IndirectLightInputs& in) {
+  writer.buffer(first, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.lpv.handle());
+  for (std::uint32_t c = 0; c < 3; ++c)
+    writer.texel_buffer(first + 1 + c, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, in.volumes.accumulated[c].view());
+  return writer;
+}
+
+}  // namespace renderer
