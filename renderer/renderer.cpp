@@ -336,13 +336,15 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);
   const auto rsm_view_bytes = lpv_setup.rsm_views.size() * sizeof(gpu::GpuRsmView);
   ensure_upload_capacity(device, frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  // Uniform buffers of the forward pass too, sized for the most a frame may have.
+  // Uniform buffers of the forward and RSM passes too, sized for the most a frame may have.
   const VkBufferUsageFlags both = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
   ensure_upload_capacity(device, light_buffer, std::max(light_bytes, gpu::SHADE_MAX_LIGHTS * sizeof(gpu::GpuLight)), both);
   ensure_upload_capacity(device, shadow_view_buffer, std::max(view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(glm::mat4)),
                          both);
   ensure_upload_capacity(device, lpv_uniforms, sizeof(lpv_setup.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  ensure_upload_capacity(device, rsm_view_buffer, rsm_view_bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  ensure_upload_capacity(device, rsm_view_buffer,
+                         std::max(rsm_view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::GpuRsmView)),
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   frame_uniforms.write(&frame, sizeof(frame));
   lpv_uniforms.write(&lpv_setup.gpu, sizeof(lpv_setup.gpu));  // read only by frames with indirect light
   if (light_bytes) light_buffer.write(light_setup.lights.data(), light_bytes);

@@ -11,12 +11,14 @@ layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 
-layout(std430, set = 0, binding = 0) readonly buffer Views { GpuRsmView views[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Materials { GpuMaterial materials[]; };
+// Uniform buffers and the draw's material as push constants, not storage buffers: lavapipe
+// loads a fragment shader's storage buffer lane by lane even at an address all lanes share
+// (as in forward.frag). The buffers are sized for the most views and lights a frame may have.
+layout(std140, set = 0, binding = 0) uniform Views { GpuRsmView views[SHADE_MAX_SHADOW_VIEWS]; };
+layout(std140, set = 0, binding = 1) uniform Lights { GpuLight lights[SHADE_MAX_LIGHTS]; };
 layout(set = 1, binding = 0) uniform sampler2D base_color_texture;  // read when TEXTURED
 layout(constant_id = 0) const bool TEXTURED = false;
-layout(push_constant) uniform Draw { uint view; uint material; } draw;
+layout(push_constant) uniform Draw { GpuDrawMaterial material; uint view; } draw;
 
 layout(location = 0) out vec4 out_position;  // xyz: world position; w: 1 (0 = nothing seen)
 layout(location = 1) out vec4 out_normal;    // xyz: unit normal; w: albedo as 8-bit RGB code
@@ -34,7 +36,7 @@ float albedo_code(vec3 albedo) {
 void main() {
   GpuRsmView view = views[draw.view];
   GpuLight light = lights[view.info.x];
-  GpuMaterial material = materials[draw.material];
+  GpuMaterial material = draw.material.material;
   vec3 n = normalize(in_normal);
   vec3 albedo = material.base_color.rgb;
   if (TEXTURED) albedo *= texture(base_color_texture, in_uv).rgb;

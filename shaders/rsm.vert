@@ -7,8 +7,8 @@ layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 
-layout(std430, set = 0, binding = 0) readonly buffer Views { GpuRsmView views[]; };
-layout(push_constant) uniform Draw { uint view; uint material; } draw;
+layout(std140, set = 0, binding = 0) uniform Views { GpuRsmView views[SHADE_MAX_SHADOW_VIEWS]; };
+layout(push_constant) uniform Draw { GpuDrawMaterial material; uint view; } draw;
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;

@@ -5,21 +5,23 @@
 #include "shaders/rsm.vert.h"
 
 #include <array>
+#include <cstddef>
 
 namespace renderer {
 namespace {
 
+// The push constants of rsm.vert and rsm.frag: the draw's material, then the view (layer).
 struct DrawConstants {
+  gpu::GpuDrawMaterial material;
   std::uint32_t view;
-  std::uint32_t material;
 };
+static_assert(offsetof(DrawConstants, view) == sizeof(gpu::GpuDrawMaterial), "as std430 lays out the push constants");
 
 vkx::PipelineLayoutDesc rsm_layout(const TextureSetLayout& textures) {
   const VkShaderStageFlags vs_fs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   vkx::PipelineLayoutDesc layout;
-  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vs_fs),
-                     vkx::binding(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT),
-                     vkx::binding(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
+  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vs_fs),
+                     vkx::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
   layout.draw_sets = {textures.handle()};
   layout.push_constant_bytes = sizeof(DrawConstants);
   layout.push_constant_stages = vs_fs;
@@ -52,9 +54,8 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
                      const vkx::Buffer& lights) const {
   for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
     vkx::DescriptorWriter(pipelines_.get(rsm_variant(variant)).descriptor_set())
-        .buffer(0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, views.handle())
-        .buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, lights.handle())
-        .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.materials.handle())
+        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, views.handle())
+        .buffer(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, lights.handle())
         .apply(device_.handle());
   const std::array<const vkx::Image*, 3> colors{&maps.position, &maps.normal, &maps.flux};
   vkx::prepare_attachments(cmd, colors, &maps.depth);
@@ -65,7 +66,7 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
                                  {maps.resolution, maps.resolution}, false);
     scene.draw_all(
         cmd, [&](MaterialVariant variant) -> const vkx::Pipeline& { return pipelines_.get(rsm_variant(variant)); },
-        [&](const scene::Draw& draw) { return DrawConstants{layer, draw.material}; });
+        [&](const scene::Draw& draw) { return DrawConstants{scene.draw_material(draw), layer}; });
     device_.cmd_end_rendering(cmd);
   }
   vkx::colors_to_compute(cmd, colors);

@@ -280,11 +280,13 @@ void Device::create_device() {
                              "(shaderInt64, shaderBufferInt64Atomics, shaderSubgroupExtendedTypes, subgroup "
                              "arithmetic and shuffles in compute, at least 4 lanes), which the LPV passes need "
                              "for deterministic accumulation and propagation");
-  // The forward pass reads every shadow view of a frame from one uniform buffer.
-  const VkDeviceSize uniform_range = gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::mat4);
+  // The forward pass reads every shadow view of a frame from one uniform buffer, the RSM
+  // pass every RSM view (as many: six a light at most).
+  const VkDeviceSize uniform_range = gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::GpuRsmView);
+  static_assert(sizeof(gpu::GpuRsmView) >= sizeof(gpu::mat4), "the RSM views' buffer is the larger");
   if (properties.properties.limits.maxUniformBufferRange < uniform_range)
     throw std::runtime_error("device '" + info_.name + "' binds uniform buffers of at most " +
-                             std::to_string(properties.properties.limits.maxUniformBufferRange) + " bytes; the forward " +
+                             std::to_string(properties.properties.limits.maxUniformBufferRange) + " bytes; the RSM " +
                              "pass needs " + std::to_string(uniform_range));
   VkPhysicalDeviceFeatures features10{};
   features10.shaderInt64 = VK_TRUE;
