@@ -77,6 +77,10 @@ Comparison compare_with(const api::BenchResults& base, const api::BenchResults& 
       cc.outcome = CaseOutcome::skipped;
       cc.detail = k->status == api::BenchCaseStatus::skipped ? reason_of("candidate", *k) : reason_of("baseline", b);
     } else {
+      for (const api::BenchMetric& metric : b.metrics)
+        if (!k->metric(metric.name)) cc.only_in_baseline.push_back(metric.name);
+      for (const api::BenchMetric& metric : k->metrics)
+        if (!b.metric(metric.name)) cc.only_in_candidate.push_back(metric.name);
       for (const api::BenchMetric& metric : b.metrics) {
         const std::optional<MetricVerdict> verdict =
             judge(metric, k->metric(metric.name), paired, options.thresholds);
@@ -186,6 +190,8 @@ nlohmann::json to_json(const Comparison& comparison) {
                      {"outcome", to_string(c.outcome)},
                      {"detail", c.detail},
                      {"candidate_failed", c.candidate_failed},
+                     {"only_in_baseline", c.only_in_baseline},
+                     {"only_in_candidate", c.only_in_candidate},
                      {"image", to_json(c.image)},
                      {"metrics", std::move(metrics)}});
   }

@@ -38,6 +38,10 @@ struct CaseComparison {
   std::string detail;  // why it was not compared
   bool candidate_failed = false;
   std::vector<MetricVerdict> metrics;  // the baseline's metrics that the candidate has too
+  // Metrics one side has and the other not: passes the planner ran in only one of the builds
+  // (a method replaced, such as gbuffer and shade by forward), in each side's order.
+  std::vector<std::string> only_in_baseline;
+  std::vector<std::string> only_in_candidate;
   ImageCheck image;
 };
 

@@ -103,6 +103,24 @@ TEST(BenchComparison, APassSlowerIsReportedAndGatesOnlyWhenAskedTo) {
   EXPECT_TRUE(bench::compare_runs(base, cand, strict).regression());
 }
 
+// A candidate that shades another way runs other passes: those have no pairs to judge, and
+// are listed instead of dropped.
+TEST(BenchComparison, MetricsOnlyOneSideHasAreListed) {
+  api::BenchResults base = results("base", gradient(1.0f), kTimes);
+  api::BenchResults cand = results("cand", gradient(1.0f), kTimes);
+  base.cases[0].metrics.push_back({"pass.gbuffer", kTimes});
+  base.cases[0].metrics.push_back({"pass.shade", kTimes});
+  cand.cases[0].metrics.push_back({"pass.forward", kTimes});
+  const bench::Comparison c = bench::compare_runs(base, cand, {});
+  ASSERT_EQ(c.cases.size(), 1u);
+  EXPECT_EQ(c.cases[0].metrics.size(), 2u);  // gpu_ms and wall_ms, judged
+  EXPECT_EQ(c.cases[0].only_in_baseline, (std::vector<std::string>{"pass.gbuffer", "pass.shade"}));
+  EXPECT_EQ(c.cases[0].only_in_candidate, (std::vector<std::string>{"pass.forward"}));
+  const nlohmann::json j = bench::to_json(c);
+  EXPECT_EQ(j["cases"][0]["only_in_candidate"], nlohmann::json::array({"pass.forward"}));
+  EXPECT_FALSE(c.regression());
+}
+
 TEST(BenchComparison, FailuresAndMissingCases) {
   const api::BenchResults base = results("base", gradient(1.0f), kTimes);
   api::BenchResults cand = results("cand", gradient(1.0f), kTimes);

@@ -51,6 +51,14 @@ TextTable table(const Comparison& c, bool everything) {
       row({v.metric, format("%.3f", v.baseline_ms), format("%.3f", v.candidate_ms), format("%.3f", v.ratio), interval,
            format("%.2g", v.p), to_string(v.verdict) + (informational(c, v) ? "*" : "")});
     }
+    // What ran changed: always shown, since such metrics have no verdict to show them by.
+    const auto names = [](const std::vector<std::string>& metrics) {
+      std::string text;
+      for (const std::string& m : metrics) text += (text.empty() ? "" : ", ") + m;
+      return text;
+    };
+    if (!cc.only_in_baseline.empty()) row({"baseline only", "", "", "", "", "", names(cc.only_in_baseline)});
+    if (!cc.only_in_candidate.empty()) row({"candidate only", "", "", "", "", "", names(cc.only_in_candidate)});
     const bool image_matters = cc.image.verdict == ImageVerdict::changed || cc.image.verdict == ImageVerdict::not_compared;
     if (everything || image_matters) row({"image", "", "", "", "", "", to_string(cc.image.verdict) + ": " + cc.image.detail});
   }
