@@ -8,13 +8,6 @@ vkx::Image color_target(const vkx::Device& device, VkFormat format, std::uint32_
                              VK_IMAGE_ASPECT_COLOR_BIT});
 }
 
-// How many blocks of `stride` pixels along an image `pixels` wide have their sampled pixel
-// (stride / 2 into the block) inside it; at least one, so that the image exists (a texel
-// outside the view is left empty).
-std::uint32_t sampled_blocks(std::uint32_t pixels, std::uint32_t stride) {
-  return pixels > stride / 2 ? (pixels - stride / 2 - 1) / stride + 1 : 1;
-}
-
 }  // namespace
 
 GBuffer::GBuffer(const vkx::Device& device, std::uint32_t w, std::uint32_t h, VkViewport vp)
@@ -26,20 +19,26 @@ GBuffer::GBuffer(const vkx::Device& device, std::uint32_t w, std::uint32_t h, Vk
       albedo(color_target(device, kAlbedoFormat, w, h)),
       depth(device, {kDepthFormat, w, h, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT}) {}
 
-GBuffer camera_surfels(const vkx::Device& device, std::uint32_t width, std::uint32_t height, std::uint32_t stride) {
-  // The view spans width / stride texels; shifted so that texel i's centre, i + 1/2, falls on
-  // the centre of pixel stride i + stride / 2: (i + 1/2 - origin) stride = stride i + stride / 2 + 1/2.
+SurfelSampling surfel_sampling(std::uint32_t width, std::uint32_t height, std::uint32_t stride) {
+  // Blocks along `pixels` whose sampled pixel, stride / 2 into the block, is inside the image.
+  const auto blocks = [stride](std::uint32_t pixels) {
+    return pixels > stride / 2 ? (pixels - stride / 2 - 1) / stride + 1 : 1;
+  };
+  // The view spans pixels / stride texels, shifted so that texel i's centre falls on pixel
+  // stride i + stride / 2's: (i + 1/2 - origin) stride = stride i + stride / 2 + 1/2.
   const float s = float(stride);
   const float origin = 0.5f - (float(stride / 2) + 0.5f) / s;
-  const VkViewport viewport{origin, origin, float(width) / s, float(height) / s, 0.0f, 1.0f};
-  return GBuffer(device, sampled_blocks(width, stride), sampled_blocks(height, stride), viewport);
+  return {blocks(width), blocks(height), VkViewport{origin, origin, float(width) / s, float(height) / s, 0.0f, 1.0f}};
 }
 
 FrameTargets::FrameTargets(const vkx::Device& device, std::uint32_t w, std::uint32_t h, std::uint32_t surfel_stride)
     : width(w),
       height(h),
       camera(device, w, h, VkViewport{0.0f, 0.0f, float(w), float(h), 0.0f, 1.0f}),
-      surfels(camera_surfels(device, w, h, surfel_stride)),
+      surfels([&] {
+        const SurfelSampling sampling = surfel_sampling(w, h, surfel_stride);
+        return GBuffer(device, sampling.width, sampling.height, sampling.viewport);
+      }()),
       display_target(device, {kDisplayFormat, w, h, 1,
                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                               VK_IMAGE_ASPECT_COLOR_BIT}) {

@@ -27,10 +27,16 @@ struct GBuffer {
   vkx::Image depth;
 };
 
-// The texels of the camera's surfel G-buffer for an image of `width` x `height` pixels: one
-// per `stride` x `stride` block, sampling the view where the image's pixel
-// (stride i + stride / 2, stride j + stride / 2) has its centre.
-GBuffer camera_surfels(const vkx::Device& device, std::uint32_t width, std::uint32_t height, std::uint32_t stride);
+// The camera's surfel G-buffer for an image of `width` x `height` pixels: a texel per
+// `stride` x `stride` block, as many as have their sampled pixel inside the image (at least
+// one), and the viewport that puts texel (i, j)'s centre on the centre of the image's pixel
+// (stride i + stride / 2, stride j + stride / 2).
+struct SurfelSampling {
+  std::uint32_t width;
+  std::uint32_t height;
+  VkViewport viewport;
+};
+SurfelSampling surfel_sampling(std::uint32_t width, std::uint32_t height, std::uint32_t stride);
 
 struct FrameTargets {
   static constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_UNORM;  // the forward pass's target

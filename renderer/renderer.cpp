@@ -602,11 +602,12 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
                     frame.gpu, *volumes, lpv.injection);
       break;
     case kGeometryVolume:
-      // The camera's surfels, drawn once for every cascade (and timed with the first).
-      if (cascade == 0 && lpv.occlusion_from_camera)
-        gbuffer.record(cmd, frame.gpu, frame.draw_order, targets->surfels, frame_uniforms);
-      else if (cascade == 0)
-        GBufferPass::record_unused(cmd, targets->surfels);
+      if (cascade == 0) {  // the camera's surfels, drawn once for every cascade (timed with the first)
+        if (lpv.occlusion_from_camera)
+          gbuffer.record(cmd, frame.gpu, frame.draw_order, targets->surfels, frame_uniforms);
+        else
+          GBufferPass::record_unused(cmd, targets->surfels);
+      }
       geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, targets->surfels,
                       {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.w,
                        lpv.injection, frame.lpv.bounces},

@@ -3,8 +3,9 @@
 // A surfel of area A with normal n blocks the fraction A / s^2 * max(0, <n, -w>) of light
 // travelling in direction w across a cell face of side s: one-sided, since a two-sided
 // surfel cancels in 2-band SH (LPV annotations 5.1). Surfels come from the RSMs (every light
-// view) and from the camera's surfel G-buffer; each source has its own accumulators, so the same
-// wall seen by both is not counted twice (the resolve takes the stronger source per corner).
+// view) and from the camera's surfel G-buffer; each source has its own accumulators, so the
+// same wall seen by both is not counted twice (the resolve takes the stronger source per
+// corner).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"

@@ -256,10 +256,14 @@ void main() {
     Sender next_y[2] = Sender[2](shuffle_sender(here, lower_lane.y), shuffle_sender(here, upper_lane.y));
     // Each neighbour's light enters through the face the two cells share: the +axis face of
     // the lower one.
-    gather(g, pick_sender(on_lower_edge.x, beyond_x, next_x[0], lower_inside.x), 0, 1.0, load_face(left, 0, udims), blocking_on);
-    gather(g, pick_sender(on_upper_edge.x, beyond_x, next_x[1], upper_inside.x), 0, -1.0, load_face(cell, 0, udims), blocking_on);
-    gather(g, pick_sender(on_lower_edge.y, beyond_y, next_y[0], lower_inside.y), 1, 1.0, load_face(front, 1, udims), blocking_on);
-    gather(g, pick_sender(on_upper_edge.y, beyond_y, next_y[1], upper_inside.y), 1, -1.0, load_face(cell, 1, udims), blocking_on);
+    Sender left_sender = pick_sender(on_lower_edge.x, beyond_x, next_x[0], lower_inside.x);
+    Sender right_sender = pick_sender(on_upper_edge.x, beyond_x, next_x[1], upper_inside.x);
+    Sender front_sender = pick_sender(on_lower_edge.y, beyond_y, next_y[0], lower_inside.y);
+    Sender back_sender = pick_sender(on_upper_edge.y, beyond_y, next_y[1], upper_inside.y);
+    gather(g, left_sender, 0, 1.0, load_face(left, 0, udims), blocking_on);
+    gather(g, right_sender, 0, -1.0, load_face(cell, 0, udims), blocking_on);
+    gather(g, front_sender, 1, 1.0, load_face(front, 1, udims), blocking_on);
+    gather(g, back_sender, 1, -1.0, load_face(cell, 1, udims), blocking_on);
     gather(g, below, 2, 1.0, face_below, blocking_on);
     gather(g, above, 2, -1.0, face_above, blocking_on);
 

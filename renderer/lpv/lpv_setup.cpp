@@ -8,6 +8,10 @@
 namespace renderer {
 namespace {
 
+// The geometry volume takes about this many rows of surfels from the camera and from each
+// RSM (enough: 256 rows gave the same errors against the reference, docs/lpv.md).
+constexpr std::uint32_t kGeometrySurfelRows = 128;
+
 float max_component(glm::vec3 v) { return std::max({v.x, v.y, v.z}); }
 
 // The origin that centres a grid of `dims` cells of `cell` metres on `centre`, on the lattice

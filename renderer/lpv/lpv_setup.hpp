@@ -45,11 +45,8 @@ struct LpvSetup {
   std::vector<gpu::GpuRsmView> rsm_views;
 };
 
-// The geometry volume takes about this many rows of surfels from the camera and from each
-// RSM (enough: 256 rows gave the same errors against the reference, docs/lpv.md).
-inline constexpr std::uint32_t kGeometrySurfelRows = 128;
-
-// Every how many pixels (each way) a geometry volume source of `rows` rows gives a surfel.
+// Every how many pixels (each way) a geometry volume source of `rows` rows (the camera's
+// image, an RSM) gives a surfel: about 128 rows of surfels from each.
 std::uint32_t surfel_stride(std::uint32_t rows);
 
 // VPLs per side of each light view: the RSM's texels, merged vpl_downsample^2 at a time.

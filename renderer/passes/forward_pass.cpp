@@ -37,8 +37,8 @@ const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const Direct
     vkx::GraphicsPipelineDesc g;
     g.vertex_spirv = spirv_gbuffer_vert;
     g.fragment_spirv = spirv_forward_frag;
-    g.fragment_specialization = {variant.double_sided,      variant.textured, direct.light_kinds,
-                                 specialised_light_count(direct), curve,        cascades};
+    g.fragment_specialization = {variant.double_sided, variant.textured, direct.light_kinds,
+                                 specialised_light_count(direct), curve, cascades};
     g.vertex_input = scene_vertex_input();
     g.color_formats = {FrameTargets::kDisplayFormat};
     g.depth_format = GBuffer::kDepthFormat;

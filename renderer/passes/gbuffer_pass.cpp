@@ -52,8 +52,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
   const std::array<VkImageView, 3> views{target.position.view(), target.normal.view(), target.albedo.view()};
   // Position's w = 0 marks pixels with no surface; normal and albedo are read only elsewhere.
   vkx::begin_cleared_rendering(device_, cmd, views, target.depth.view(), {target.width, target.height}, false,
-                               vkx::ClearColors::first);
-  vkCmdSetViewport(cmd, 0, 1, &target.viewport);
+                               vkx::ClearColors::first, 0.0f, &target.viewport);
   scene.draw_all(
       cmd, [&](MaterialVariant variant) -> const vkx::Pipeline& { return pipelines_.get(variant); },
       [&](const scene::Draw& draw) { return scene.draw_material(draw); }, order);
@@ -63,9 +62,8 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
 }
 
 void GBufferPass::record_unused(VkCommandBuffer cmd, const GBuffer& target) {
-  for (const vkx::Image* image : {&target.position, &target.normal, &target.albedo})
-    vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+  const std::array<const vkx::Image*, 3> colors{&target.position, &target.normal, &target.albedo};
+  vkx::undrawn_to_compute(cmd, colors);
 }
 
 }  // namespace renderer

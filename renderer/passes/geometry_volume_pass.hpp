@@ -1,7 +1,8 @@
 // LPV geometry volume for one cascade: surfels from the RSMs and from the camera's surfel
-// G-buffer (FrameTargets::surfels, drawn by the GBufferPass) add one-sided blocking potentials to the cell corners (lpv_geometry_inject.comp); each corner
-// keeps its stronger source (lpv_geometry_corners.comp); the corners become the blocking of
-// every cell face (lpv_geometry_resolve.comp).
+// G-buffer (FrameTargets::surfels, drawn by the GBufferPass) add one-sided blocking
+// potentials to the cell corners (lpv_geometry_inject.comp); each corner keeps its stronger
+// source (lpv_geometry_corners.comp); the corners become the blocking of every cell face
+// (lpv_geometry_resolve.comp).
 #pragma once
 
 #include "api/render_request.hpp"

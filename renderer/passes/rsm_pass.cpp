@@ -73,9 +73,8 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
 }
 
 void RsmPass::record_skipped(VkCommandBuffer cmd, const RsmMaps& maps) {
-  for (const vkx::Image* image : {&maps.position, &maps.normal, &maps.flux})
-    vkx::transition(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+  const std::array<const vkx::Image*, 3> colors{&maps.position, &maps.normal, &maps.flux};
+  vkx::undrawn_to_compute(cmd, colors);
 }
 
 }  // namespace renderer

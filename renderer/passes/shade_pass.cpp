@@ -23,9 +23,10 @@ const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
   const std::uint32_t curve = in.outputs & gpu::SHADE_OUTPUT_DISPLAY ? gpu_tone_curve(in.tone_curve) : gpu::TONEMAP_NONE;
   // Bits 0-2: the view (VIEW_* < 8); 3-5: the cascades (at most 4); 6-7: the outputs; 8-9:
   // the tone curve; above: the lights (11 bits).
-  const std::uint32_t key = (light_key << 10) | (curve << 8) | (in.outputs << 6) | (in.indirect.cascades << 3) | in.view;
+  const std::uint32_t cascades = in.indirect.cascades;
+  const std::uint32_t key = (light_key << 10) | (curve << 8) | (in.outputs << 6) | (cascades << 3) | in.view;
   return variants_.get(key, [&] {
-    const std::uint32_t constants[] = {in.indirect.cascades, in.view, in.direct.light_kinds, specialised_light_count(in.direct),
+    const std::uint32_t constants[] = {cascades,   in.view, in.direct.light_kinds, specialised_light_count(in.direct),
                                        in.outputs, curve};
     return vkx::Pipeline(device_, layout_, spirv_shade_comp, constants);
   });

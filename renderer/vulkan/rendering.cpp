@@ -23,9 +23,15 @@ void colors_to_compute(VkCommandBuffer cmd, std::span<const Image* const> colors
                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
 }
 
+void undrawn_to_compute(VkCommandBuffer cmd, std::span<const Image* const> colors) {
+  for (const Image* image : colors)
+    transition(cmd, *image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+}
+
 void begin_cleared_rendering(const Device& device, VkCommandBuffer cmd, std::span<const VkImageView> colors,
                              VkImageView depth, VkExtent2D extent, bool store_depth, ClearColors clear,
-                             float clear_alpha) {
+                             float clear_alpha, const VkViewport* viewport) {
   std::vector<VkRenderingAttachmentInfoKHR> color_attachments(colors.size());
   for (std::size_t i = 0; i < colors.size(); ++i) {
     VkRenderingAttachmentInfoKHR& a = color_attachments[i];
@@ -51,8 +57,8 @@ void begin_cleared_rendering(const Device& device, VkCommandBuffer cmd, std::spa
   info.pColorAttachments = color_attachments.data();
   info.pDepthAttachment = depth ? &depth_attachment : nullptr;
   device.cmd_begin_rendering(cmd, &info);
-  const VkViewport viewport{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
-  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  const VkViewport whole{0.0f, 0.0f, float(extent.width), float(extent.height), 0.0f, 1.0f};
+  vkCmdSetViewport(cmd, 0, 1, viewport ? viewport : &whole);
   vkCmdSetScissor(cmd, 0, 1, &area);
 }
 

@@ -1,6 +1,7 @@
 // The CPU-side maths of a frame: lights after edits, camera planes, shadow views.
 #include "api/request_error.hpp"
 #include "renderer/frame_setup.hpp"
+#include "renderer/frame_targets.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 
@@ -138,6 +139,35 @@ TEST(SetupLights, RadiantValueIsColourTimesIntensity) {
 // The grid's largest buffer decides which grids a device binds (lavapipe: 128 MiB storage
 // buffers): the geometry volume's corner sums, 2 sources x 8 int64 per corner of the
 // (n + 1)^3 lattice, are the largest, and 100^3 is the most that fits (docs/lpv.md).
+// The camera's surfel G-buffer samples the image's pixels (stride i + stride / 2), as the
+// geometry volume did from the full G-buffer: each texel's centre, carried through its
+// viewport into the image's pixel coordinates, lands on that pixel's centre, and there is a
+// texel for every such pixel inside the image and none past it.
+TEST(SurfelSampling, TexelCentresFallOnTheSampledPixels) {
+  struct Case {
+    std::uint32_t width, height, stride;
+  };
+  for (const Case c : {Case{512, 512, 4}, Case{256, 256, 2}, Case{129, 67, 1}, Case{1000, 3, 8}, Case{3, 1000, 8},
+                       Case{515, 130, 3}}) {
+    SCOPED_TRACE(std::to_string(c.width) + "x" + std::to_string(c.height) + " stride " + std::to_string(c.stride));
+    const renderer::SurfelSampling s = renderer::surfel_sampling(c.width, c.height, c.stride);
+    // Framebuffer x = viewport.x + X * viewport.width / width for image pixel coordinate X.
+    const auto check_axis = [&](std::uint32_t texels, std::uint32_t pixels, float origin, float extent) {
+      for (std::uint32_t i = 0; i < texels; ++i) {
+        const float image_x = (float(i) + 0.5f - origin) * float(pixels) / extent;
+        const std::uint32_t sampled = c.stride * i + c.stride / 2;
+        EXPECT_NEAR(image_x, float(sampled) + 0.5f, 1e-3f) << "texel " << i;
+        if (pixels > c.stride / 2) EXPECT_LT(sampled, pixels) << "texel " << i;
+      }
+      if (pixels > c.stride / 2) EXPECT_GE(c.stride * texels + c.stride / 2, pixels) << "a texel is missing";
+    };
+    check_axis(s.width, c.width, s.viewport.x, s.viewport.width);
+    check_axis(s.height, c.height, s.viewport.y, s.viewport.height);
+  }
+  // An image narrower than half a block still gets a texel (outside the view: left empty).
+  EXPECT_EQ(renderer::surfel_sampling(1, 1, 4).width, 1u);
+}
+
 TEST(LpvVolumes, LargestBufferIsTheCornerSumsAndBoundsTheGridAt100Cells) {
   constexpr std::uint64_t kLavapipeRange = 128ull << 20;
   EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 1), 101ull * 101 * 101 * 128);
