@@ -35,7 +35,9 @@ using lpv_real = float;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 #endif
+using glm::abs;
 using glm::dot;
+using glm::max;
 using glm::normalize;
 #define LPV_FUNC inline
 #define LPV_CONST_F inline constexpr lpv_real
@@ -88,41 +90,35 @@ LPV_FUNC vec4 sh_diffuse_emitter(vec3 n, lpv_real phi) { return sh_cosine_lobe(n
 // centre is 1 cell ahead and half a cell to the side.
 LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead + lpv_real(0.5) * side); }
 
-LPV_FUNC lpv_real lpv_positive(lpv_real x) { return x > 0.0f ? x : 0.0f; }
-
-// Sum of the positive parts of A + (2 p + q) / sqrt(5) over the four sign pairs of p = +-bi,
-// q = +-bj: the side faces of the two neighbours along axis i whose normals lie along axis j.
-LPV_FUNC lpv_real lpv_positive_side_faces(lpv_real mean, lpv_real bi, lpv_real bj) {
-  const lpv_real k = LPV_INV_SQRT5;
-  return lpv_positive(mean + k * (2.0f * bi + bj)) + lpv_positive(mean + k * (2.0f * bi - bj)) +
-         lpv_positive(mean + k * (-2.0f * bi + bj)) + lpv_positive(mean + k * (-2.0f * bi - bj));
-}
-
 // Propagation sends a cell's light to its 6 neighbours through 5 faces each: 30 faces with
 // flux Omega_f * I(w_f). Their sum is the cell's flux, but a 2-band SH has negative lobes, so
 // some face fluxes can be negative: sent as they are they are unphysical, clamped they add
 // energy, and occluded they add energy too (a blocked negative flux is a gain). So each cell
 // sends only its positive face fluxes, all scaled by this factor, which makes them sum to the
 // cell's flux again: energy is conserved exactly and nothing negative travels. 1 when no
-// face is negative (|linear part| <= constant part), 0 for a cell with no positive flux.
-// Written out per face (I(w) = A + B.w with A = c0 s0, B = c1 (-s3, -s1, s2)) rather than as
-// loops over directions: lavapipe runs dynamically indexed vectors one lane at a time.
+// face is negative, 0 for a cell with no positive flux.
+//
+// Closed form rather than 30 clamped faces (propagation runs it for every cell and channel, and
+// lavapipe runs every line for every lane). With I(w) = A + B.w (A = c0 s0, B = c1 (-s3, -s1,
+// s2)), the faces come in opposite pairs with values A +- u: the far faces along axis a
+// (u = B_a) and the side faces (u = (2 B_i +- B_j) / sqrt(5), i != j: 12 pairs). For A > 0 a
+// pair's positive parts sum to 2A + max(|u| - A, 0), so the positive fluxes are the cell's
+// flux, A (6 Omega_f + 24 Omega_s), plus an excess that is zero exactly when no face is
+// negative. Over the signs, |2 B_i +- B_j| takes the values 2|B_i| + |B_j| and |2|B_i| - |B_j||.
 LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) {
-  lpv_real mean = SH_C0 * sh.x;
-  lpv_real bx = -SH_C1 * sh.w;
-  lpv_real by = -SH_C1 * sh.y;
-  lpv_real bz = SH_C1 * sh.z;
-  if (mean <= 0.0f) return 0.0f;
-  if (bx * bx + by * by + bz * bz <= mean * mean) return 1.0f;
-  lpv_real far_faces = lpv_positive(mean + bx) + lpv_positive(mean - bx) + lpv_positive(mean + by) +
-                    lpv_positive(mean - by) + lpv_positive(mean + bz) + lpv_positive(mean - bz);
-  lpv_real side_faces = lpv_positive_side_faces(mean, bx, by) + lpv_positive_side_faces(mean, bx, bz) +
-                     lpv_positive_side_faces(mean, by, bx) + lpv_positive_side_faces(mean, by, bz) +
-                     lpv_positive_side_faces(mean, bz, bx) + lpv_positive_side_faces(mean, bz, by);
-  lpv_real positive = LPV_FAR_FACE_SOLID_ANGLE * far_faces + LPV_SIDE_FACE_SOLID_ANGLE * side_faces;
-  // The sum of all 30 face fluxes: the linear parts cancel between opposite faces.
-  lpv_real total = mean * (6.0f * LPV_FAR_FACE_SOLID_ANGLE + 24.0f * LPV_SIDE_FACE_SOLID_ANGLE);
-  return positive > total ? total / positive : 1.0f;
+  const lpv_real mean = SH_C0 * sh.x;
+  const vec3 b = abs(vec3(-SH_C1 * sh.w, -SH_C1 * sh.y, SH_C1 * sh.z));
+  const vec3 twice = (2.0f * LPV_INV_SQRT5) * b;  // 2 |B_i| / sqrt(5)
+  const vec3 next = LPV_INV_SQRT5 * vec3(b.y, b.z, b.x);  // |B_j| / sqrt(5), j = i + 1
+  const vec3 prev = LPV_INV_SQRT5 * vec3(b.z, b.x, b.y);  // j = i + 2
+  const vec3 zero = vec3(0.0f);
+  const vec3 far_excess = max(b - mean, zero);
+  const vec3 side_excess = max(twice + next - mean, zero) + max(abs(twice - next) - mean, zero) +
+                           max(twice + prev - mean, zero) + max(abs(twice - prev) - mean, zero);
+  const lpv_real excess = LPV_FAR_FACE_SOLID_ANGLE * (far_excess.x + far_excess.y + far_excess.z) +
+                          LPV_SIDE_FACE_SOLID_ANGLE * (side_excess.x + side_excess.y + side_excess.z);
+  const lpv_real total = mean * (6.0f * LPV_FAR_FACE_SOLID_ANGLE + 24.0f * LPV_SIDE_FACE_SOLID_ANGLE);
+  return mean > 0.0f ? total / (total + excess) : lpv_real(0.0f);
 }
 
 // What a cell sends, in the form propagation reads it: I(w) = A + sqrt(5) <P, w>, stored as
