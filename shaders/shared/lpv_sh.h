@@ -105,9 +105,15 @@ LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead
 // pair's positive parts sum to 2A + max(|u| - A, 0), so the positive fluxes are the cell's
 // flux, A (6 Omega_f + 24 Omega_s), plus an excess that is zero exactly when no face is
 // negative. Over the signs, |2 B_i +- B_j| takes the values 2|B_i| + |B_j| and |2|B_i| - |B_j||.
+// No face is negative when |B| <= A (each |u| is at most |B|, by Cauchy-Schwarz): that test
+// returns first, since Mesa 25's lavapipe skips code that no lane of a subgroup runs, and in a
+// propagated grid whole subgroups of cells pass it (propagation 19.7 -> 17.6 ms at 32^3 x 32;
+// Mesa 22.3 runs both sides and lost 2%).
 LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) {
   const lpv_real mean = SH_C0 * sh.x;
   const vec3 b = abs(vec3(-SH_C1 * sh.w, -SH_C1 * sh.y, SH_C1 * sh.z));
+  if (!(mean > 0.0f)) return 0.0f;
+  if (dot(b, b) <= mean * mean) return 1.0f;
   const vec3 twice = (2.0f * LPV_INV_SQRT5) * b;  // 2 |B_i| / sqrt(5)
   const vec3 next = LPV_INV_SQRT5 * vec3(b.y, b.z, b.x);  // |B_j| / sqrt(5), j = i + 1
   const vec3 prev = LPV_INV_SQRT5 * vec3(b.z, b.x, b.y);  // j = i + 2
@@ -118,7 +124,7 @@ LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) {
   const lpv_real excess = LPV_FAR_FACE_SOLID_ANGLE * (far_excess.x + far_excess.y + far_excess.z) +
                           LPV_SIDE_FACE_SOLID_ANGLE * (side_excess.x + side_excess.y + side_excess.z);
   const lpv_real total = mean * (6.0f * LPV_FAR_FACE_SOLID_ANGLE + 24.0f * LPV_SIDE_FACE_SOLID_ANGLE);
-  return mean > 0.0f ? total / (total + excess) : lpv_real(0.0f);
+  return total / (total + excess);
 }
 
 // What a cell sends, in the form propagation reads it: I(w) = A + sqrt(5) <P, w>, stored as
