@@ -559,8 +559,8 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv, bool with_geometry
   };
   std::vector<glm::vec4> channels[3];
   for (int c = 0; c < 3; ++c) channels[c] = read_back_volume(volumes->accumulated[c], volumes->accumulated[c].texels());
-  if (with_geometry_volume) {
-    const glm::uvec3 d = lpv.cascades.back().dims;
+  if (with_geometry_volume) {  // the blocking SH, the faces' first 3 texels a cell (lpv_face_texel)
+    const glm::uvec3 d = volumes->dims;
     snapshot.faces = read_back_volume(volumes->faces, 3 * std::size_t(d.x) * d.y * d.z);
   }
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {

@@ -4,9 +4,10 @@
 # Renders the request with lpv-render under `perf record`, then again under gdb, stopped at
 # the first vkDestroyPipeline (the shaders' machine code still mapped, at the same addresses:
 # both runs have address randomisation off), disassembles the pages that got samples and
-# prints (1) the samples by instruction mnemonic and (2) the TOP (default 8) hottest
-# instructions with the code before them. perf cannot name JIT functions, so tell shaders
-# apart by what the code does (or by profiling a request that runs only the pass you want).
+# prints (1) the samples by instruction mnemonic, (2) by range of adjacent code pages, which
+# mostly tells functions apart, and (3) the TOP (default 8) hottest instructions with the code
+# before them. perf cannot name JIT functions, so tell shaders apart by what the code does
+# (or by profiling a request that runs only the pass you want).
 # A sample lands on the instruction after the one that stalled, so each sample is counted
 # for the instruction before it: `lock` heading the list means contended atomics, for example.
 # Needs perf and gdb (developer tools, not in scripts/install-deps.sh) and a built lpv-render.
@@ -98,6 +99,16 @@ if jit < 0.5 * sum(counts.values()):
     print("warning: most JIT samples fell outside the disassembled instructions: the code may not be at "
           "the same addresses in the gdb run, so these shares are not to be trusted")
 print("by instruction: " + "  ".join(f"{k} {100 * v / jit:.1f}%" for k, v in by_mnemonic.most_common(24)))
+# Adjacent pages of JIT code are most often one function: a shader, or a function the shaders
+# call (Mesa 25 calls one for every texel fetch, say), so a range's share tells them apart.
+ranges = [tuple(int(x, 16) for x in line.split(",")) for line in open(f"{work}/ranges")]
+in_range = collections.Counter()
+for address, c in counts.items():
+    for start, end in ranges:
+        if start <= address < end:
+            in_range[(start, end)] += c
+ranged = sum(in_range.values())
+print("by code range: " + "  ".join(f"0x{s:x}-0x{e:x} {100 * v / ranged:.0f}%" for (s, e), v in in_range.most_common(8)))
 for i, c in blamed.most_common(top):
     print(f"\n{100 * c / total:.2f}% at 0x{code[i][0]:x}:")
     for j in range(max(0, i - 6), min(len(code), i + 2)):

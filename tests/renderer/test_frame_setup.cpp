@@ -1,4 +1,5 @@
-// The CPU-side maths of a frame: lights after edits, camera planes, shadow views.
+// The CPU-side maths of a frame: lights after edits, camera planes, shadow views, the camera
+// surfels' sampling and the LPV volumes' largest buffer.
 #include "api/request_error.hpp"
 #include "renderer/frame_setup.hpp"
 #include "renderer/frame_targets.hpp"
@@ -136,9 +137,6 @@ TEST(SetupLights, RadiantValueIsColourTimesIntensity) {
   EXPECT_EQ(glm::vec3(setup.lights[0].radiant), glm::vec3(8.0f, 4.0f, 0.0f));
 }
 
-// The grid's largest buffer decides which grids a device binds (lavapipe: 128 MiB storage
-// buffers): the geometry volume's corner sums, 2 sources x 8 int64 per corner of the
-// (n + 1)^3 lattice, are the largest, and 100^3 is the most that fits (docs/lpv.md).
 // The camera's surfel G-buffer samples the image's pixels (stride i + stride / 2), as the
 // geometry volume did from the full G-buffer: each texel's centre, carried through its
 // viewport into the image's pixel coordinates, lands on that pixel's centre, and there is a
@@ -168,6 +166,9 @@ TEST(SurfelSampling, TexelCentresFallOnTheSampledPixels) {
   EXPECT_EQ(renderer::surfel_sampling(1, 1, 4).width, 1u);
 }
 
+// The grid's largest buffer decides which grids a device binds (lavapipe: 128 MiB storage
+// buffers): the geometry volume's corner sums, 2 sources x 8 int64 per corner of the
+// (n + 1)^3 lattice, are the largest, and 100^3 is the most that fits (docs/lpv.md).
 TEST(LpvVolumes, LargestBufferIsTheCornerSumsAndBoundsTheGridAt100Cells) {
   constexpr std::uint64_t kLavapipeRange = 128ull << 20;
   EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 1), 101ull * 101 * 101 * 128);
