@@ -32,7 +32,8 @@ for p in "${PACKAGES[@]}"; do
 done
 
 # lavapipe from Mesa 25 or later: Mesa 22.3 (Debian 12's own) runs the same shaders 10% to
-# 20% slower, its compute dispatches cost 40 us against 28 (docs/lpv.md, "The driver").
+# 20% slower, its compute dispatches cost 46 us against 28 (bench/ab-drivers.sh; docs/lpv.md,
+# "The driver").
 # Debian 12 has it in bookworm-backports, Debian's own archive; Debian 13 in its main suite.
 MESA_MIN=25
 codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")

@@ -107,8 +107,8 @@ LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead
 // negative. Over the signs, |2 B_i +- B_j| takes the values 2|B_i| + |B_j| and |2|B_i| - |B_j||.
 // No face is negative when |B| <= A (each |u| is at most |B|, by Cauchy-Schwarz): that test
 // returns first, since Mesa 25's lavapipe skips code that no lane of a subgroup runs, and in a
-// propagated grid whole subgroups of cells pass it (propagation 19.7 -> 17.6 ms at 32^3 x 32;
-// Mesa 22.3 runs both sides and lost 2%).
+// propagated grid whole subgroups of cells pass it: without it the closed form was slower
+// than the 30 faces on Mesa 25 (docs/lpv.md, "Targets", has the numbers and commands).
 LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) {
   const lpv_real mean = SH_C0 * sh.x;
   const vec3 b = abs(vec3(-SH_C1 * sh.w, -SH_C1 * sh.y, SH_C1 * sh.z));
