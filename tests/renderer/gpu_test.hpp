@@ -37,6 +37,11 @@ float brightest(const image::RgbaF32Image& image);
 float largest_difference(const image::RgbaF32Image& a, const image::RgbaF32Image& b);
 double rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& b);
 
+// When $LPV_TEST_ARTIFACTS names a directory, writes `image` there as NAME.pfm (linear, for
+// any PFM viewer): the images behind a comparison, to look at when it fails on a driver or
+// machine other than the one at hand. Does nothing otherwise.
+void save_artifact(const std::string& name, const image::RgbaF32Image& image);
+
 // The pixel whose centre is nearest to where `world` projects with `camera`.
 glm::uvec2 project_to_pixel(const api::Camera& camera, const scene::Scene& scene, std::uint32_t width,
                             std::uint32_t height, glm::vec3 world);

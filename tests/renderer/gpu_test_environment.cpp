@@ -1,7 +1,12 @@
 #include "gpu_test.hpp"
 
+#include "renderer/image/file_io.hpp"
+#include "renderer/image/pfm.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <memory>
 
 namespace gpu_test {
@@ -68,6 +73,13 @@ double rmse(const image::RgbaF32Image& a, const image::RgbaF32Image& b) {
   for (std::size_t i = 0; i < a.pixels.size(); ++i)
     if (i % 4 != 3) sum += double(a.pixels[i] - b.pixels[i]) * double(a.pixels[i] - b.pixels[i]);
   return std::sqrt(sum / double(a.pixels.size() / 4 * 3));
+}
+
+void save_artifact(const std::string& name, const image::RgbaF32Image& image) {
+  const char* dir = std::getenv("LPV_TEST_ARTIFACTS");
+  if (!dir || !*dir) return;
+  std::filesystem::create_directories(dir);
+  image::write_file_atomically(std::filesystem::path(dir) / (name + ".pfm"), image::encode_pfm(image));
 }
 
 glm::uvec2 project_to_pixel(const api::Camera& camera, const scene::Scene& scene, std::uint32_t width,
