@@ -90,13 +90,18 @@ double grid_difference(const lpv_ref::GridD& a, const lpv_ref::GridD& b) {
 
 // The GPU computes in float (24-bit significands: 6e-8 relative per rounding) and sums in
 // 64-bit fixed point at injection (2^-60 of the scene's flux bound per unit: exact for this
-// purpose). A coefficient of the injected grid is a sum of lobes each a few float operations
-// deep, and after 6 iterations every coefficient has been through about 6 x 30 face terms and
-// their scaling: float rounding bounds the difference from exact arithmetic at about
-// 200 x 6e-8 = 1.2e-5 of the largest coefficient, and it is usually far smaller since the
-// roundings do not all go one way. The bounds below are that estimate; the measured values
-// are printed.
-constexpr double kInjectedGridTolerance = 1e-6;
+// purpose).
+// - Injection: a VPL's trilinear weights come from the fraction of its grid coordinate
+//   q = (p - origin) / cell, up to 8 here, whose roundings are absolute: a subtraction and
+//   an offset at half an ulp of 8 (2^-20 = 9.5e-7) each, and a division that Vulkan lets be
+//   2.5 ulp (lavapipe rounds it correctly; NVIDIA does not: 9.8e-7 measured there against
+//   2.8e-7 here). About 4 ulp of 8 per axis and three axes in a weight: 1e-5 of each
+//   VPL's share of a coefficient.
+// - Propagation: after 6 iterations every coefficient has been through about 6 x 30 face
+//   terms and their scaling, about 200 x 6e-8 = 1.2e-5 of the largest coefficient, usually
+//   far smaller since the roundings do not all go one way.
+// The measured values are printed.
+constexpr double kInjectedGridTolerance = 1e-5;
 constexpr double kPropagatedGridTolerance = 1.2e-5;
 
 std::vector<lpv_ref::Vpl> vpls_of(const renderer::LpvSnapshot& snap) {
