@@ -98,7 +98,7 @@ struct Renderer::Impl {
         forward(device, texture_layout),
         inject(device),
         geometry(device),
-        propagate(device),
+        propagate(device, options.propagate_column),
         shade(device),
         timer(device),
         scene_source(std::move(options.scenes)),

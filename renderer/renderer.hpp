@@ -66,6 +66,9 @@ struct RendererOptions {
   // Host and device memory of the scenes kept resident between requests; the least recently
   // used are evicted beyond it (the scene being rendered always stays).
   std::uint64_t scene_cache_bytes = 1ull << 30;
+  // Cells each propagation invocation walks along z; 0: by device, 8 on a CPU and 2 on a GPU
+  // (LpvPropagatePass). Tests set it to run the GPU's choice on lavapipe.
+  std::uint32_t propagate_column = 0;
 };
 
 struct SceneCacheStats {

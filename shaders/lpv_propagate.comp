@@ -10,7 +10,7 @@
 // blocks part of the light (none in the first, where the injecting surface would block itself).
 //
 // Speed (lavapipe runs each invocation as one lane of an 8-wide SIMD program):
-// - Each invocation walks a column of LPV_PROPAGATE_COLUMN cells along z, so the cells below
+// - Each invocation walks a column of COLUMN_LENGTH cells along z, so the cells below
 //   and above, and the face below, are carried from one step to the next instead of loaded
 //   again, and the flux statistics are summed in the column and added once.
 // - A subgroup's columns form a block (4x2 for 8 lanes, see column_of_lane), so a cell's
@@ -54,6 +54,7 @@ layout(push_constant) uniform Push { uint cascade; uint stats_record; uint itera
 // iteration on), and with them the light the blockers reflect (bounces: 2).
 layout(constant_id = 0) const bool OCCLUDED = false;
 layout(constant_id = 1) const bool BOUNCES = false;
+layout(constant_id = 2) const uint COLUMN_LENGTH = LPV_PROPAGATE_COLUMN_CPU;
 
 #include "shared/lpv_grid_flux.glsl"
 
@@ -212,8 +213,8 @@ void main() {
   // store nothing.
   bool in_grid = all(lessThan(column, udims.xy));
   ivec2 xy = min(ivec2(column), dims.xy - 1);
-  int z_begin = int(gl_WorkGroupID.z * LPV_PROPAGATE_COLUMN);
-  int z_end = min(z_begin + int(LPV_PROPAGATE_COLUMN), dims.z);
+  int z_begin = int(gl_WorkGroupID.z * COLUMN_LENGTH);
+  int z_end = min(z_begin + int(COLUMN_LENGTH), dims.z);
   uint source = (push.iteration + 1u) & 1u;  // iteration 1 reads grid 0 and writes grid 1
   uint target = push.iteration & 1u;
   float blocking_on = push.iteration >= 2u ? 1.0 : 0.0;

@@ -9,7 +9,8 @@ namespace renderer {
 
 class LpvPropagatePass {
  public:
-  explicit LpvPropagatePass(const vkx::Device& device);
+  // `column_length`: cells each invocation walks along z; 0 chooses by device (the .cpp says how).
+  LpvPropagatePass(const vkx::Device& device, std::uint32_t column_length = 0);
 
   // Expects the injected grid in the first half of volumes.grids, and the geometry volume's
   // faces when `occlusion` (they block light; with `bounces`, they reflect what they block).
@@ -25,6 +26,7 @@ class LpvPropagatePass {
   const vkx::Pipeline& variant(Variant v, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
   const vkx::Device& device_;
+  std::uint32_t column_length_;  // the shader's COLUMN_LENGTH
   vkx::PipelineLayoutDesc layout_;
   vkx::PipelineVariants variants_;
 };

@@ -108,9 +108,11 @@ struct GpuFrame {
 
 LPV_CONST LPV_MAX_CASCADES = 4u;
 LPV_CONST LPV_GROUP = 4u;         // grid passes: work groups of 4 x 4 x 4 cells
-// Propagation: work groups of 8 x 8 invocations, each walking a column of 8 cells along z.
+// Propagation: work groups of 8 x 8 invocations, each walking a column of cells along z: 8 on
+// a CPU device, 2 on a GPU (a specialization constant; LpvPropagatePass says why).
 LPV_CONST LPV_PROPAGATE_GROUP = 8u;
-LPV_CONST LPV_PROPAGATE_COLUMN = 8u;
+LPV_CONST LPV_PROPAGATE_COLUMN_CPU = 8u;
+LPV_CONST LPV_PROPAGATE_COLUMN_GPU = 2u;
 // Flux statistics: each sum (a cascade's VPL flux, or its grid's after a step) is a record of
 // LPV_FLUX_SLOTS slots of one 64-byte cache line each (int64 R, G, B, then padding). A work
 // group adds to slot (its index mod LPV_FLUX_SLOTS) and the host sums the slots: the two

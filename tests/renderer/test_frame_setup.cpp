@@ -155,9 +155,13 @@ TEST(SurfelSampling, TexelCentresFallOnTheSampledPixels) {
         const float image_x = (float(i) + 0.5f - origin) * float(pixels) / extent;
         const std::uint32_t sampled = c.stride * i + c.stride / 2;
         EXPECT_NEAR(image_x, float(sampled) + 0.5f, 1e-3f) << "texel " << i;
-        if (pixels > c.stride / 2) EXPECT_LT(sampled, pixels) << "texel " << i;
+        if (pixels > c.stride / 2) {
+          EXPECT_LT(sampled, pixels) << "texel " << i;
+        }
       }
-      if (pixels > c.stride / 2) EXPECT_GE(c.stride * texels + c.stride / 2, pixels) << "a texel is missing";
+      if (pixels > c.stride / 2) {
+        EXPECT_GE(c.stride * texels + c.stride / 2, pixels) << "a texel is missing";
+      }
     };
     check_axis(s.width, c.width, s.viewport.x, s.viewport.width);
     check_axis(s.height, c.height, s.viewport.y, s.viewport.height);
