@@ -10,6 +10,10 @@ namespace {
 // also offsets its lookups along the normal (see shade.comp).
 constexpr float kSlopeBias = 1.5f;
 
+// The stages that sample the maps: the deferred shading (compute) and the forward pass
+// (fragment), which may follow in the same command buffer.
+constexpr VkPipelineStageFlags kReaders = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
+
 }  // namespace
 
 ShadowPass::ShadowPass(const vkx::Device& device) : device_(device) {
@@ -42,13 +46,12 @@ void ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, const Shadow
   }
   vkx::transition(cmd, atlas.depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                  VK_ACCESS_SHADER_READ_BIT);
+                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, kReaders, VK_ACCESS_SHADER_READ_BIT);
 }
 
 void ShadowPass::record_skipped(VkCommandBuffer cmd, const ShadowAtlas& atlas) {
   vkx::transition(cmd, atlas.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                  VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+                  VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, kReaders, VK_ACCESS_SHADER_READ_BIT);
 }
 
 }  // namespace renderer

@@ -90,6 +90,7 @@ VkInstance create_plain_instance(bool validation, const void* next) {
   if (validation) {
     layers.push_back(kValidationLayer);
     extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);  // the layer's own
   }
   VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO, next};
   ci.pApplicationInfo = &app;
@@ -188,13 +189,21 @@ void Device::create_instance(bool validation) {
   if (validation && !has_layer(kValidationLayer))
     throw std::runtime_error(std::string("validation requested but ") + kValidationLayer +
                              " is not installed (Debian package vulkan-validationlayers)");
+  // Synchronization validation too: lavapipe runs a command buffer's work in order, so a
+  // missing barrier changes nothing there and shows only on a GPU that overlaps passes;
+  // the layer finds it on any device (a barrier left out of propagation: 5 hazards at once).
+  static const VkValidationFeatureEnableEXT kEnables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = kEnables;
   VkDebugUtilsMessengerCreateInfoEXT messenger{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   messenger.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
   messenger.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                           VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messenger.pfnUserCallback = &Device::on_debug_message;
   messenger.pUserData = this;
-  instance_ = create_plain_instance(validation, validation ? &messenger : nullptr);
+  features.pNext = &messenger;  // the instance's own messenger, for its creation and destruction
+  instance_ = create_plain_instance(validation, validation ? &features : nullptr);
   if (validation) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));

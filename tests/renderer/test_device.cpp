@@ -2,6 +2,7 @@
 // pipeline cache file that survives restarts and corruption.
 #include "gpu_test.hpp"
 
+#include "renderer/vulkan/resources.hpp"
 #include "renderer/vulkan/vk_check.hpp"
 
 #include <filesystem>
@@ -70,6 +71,25 @@ TEST(PipelineCache, IsWrittenOnExitAndACorruptFileIsIgnored) {
   std::filesystem::remove_all(dir);
 }
 
+// The GPU tests fail on any validation message; this one checks that the layer is looking,
+// synchronization included. Two writes to one buffer with no barrier between them may
+// overlap on a GPU, though lavapipe runs them in order.
+TEST(Validation, ReportsTwoWritesWithoutABarrierBetweenThem) {
+  vkx::Device& device = gpu_test::device();
+  device.clear_validation_messages();
+  {
+    vkx::Buffer buffer(device, 256, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vkx::MemoryUse::gpu_only);
+    device.run_once([&](VkCommandBuffer cmd) {
+      vkCmdFillBuffer(cmd, buffer.handle(), 0, VK_WHOLE_SIZE, 0u);
+      vkCmdFillBuffer(cmd, buffer.handle(), 0, VK_WHOLE_SIZE, 1u);
+    });
+  }
+  const auto messages = device.validation_messages();
+  device.clear_validation_messages();
+  ASSERT_FALSE(messages.empty()) << "no validation message: is synchronization validation on?";
+  EXPECT_NE(messages.front().find("SYNC-HAZARD-WRITE-AFTER-WRITE"), std::string::npos) << messages.front();
+}
+
 class EdgeScenes : public gpu_test::GpuTest {};
 
 TEST_F(EdgeScenes, EmptySceneWithoutLightsRendersBlackAndSkipsShadows) {
@@ -91,6 +111,19 @@ TEST_F(EdgeScenes, ZeroIntensityLightGivesBlackLitViewAndNoShadowMap) {
   const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear);
   for (std::size_t i = 0; i < result.linear.pixels.size(); i += 4) ASSERT_EQ(result.linear.pixels[i], 0.0f);
   EXPECT_FALSE(result.stats.passes[0].ran);
+}
+
+// A PNG is shaded by the forward pass, which samples the shadow maps in its fragment shader;
+// with the shadow pass skipped, the maps' layout transition is recorded just before it in
+// the same command buffer and must reach the fragment stage (synchronization validation
+// said so on the glTF corpus when it reached compute only).
+TEST_F(EdgeScenes, ForwardPassAfterASkippedShadowPassIsSynchronized) {
+  api::RenderRequest request;
+  request.output.width = request.output.height = 32;
+  request.shadows.enabled = false;
+  const auto result = gpu_test::renderer().render(request, renderer::kReadbackDisplay);
+  EXPECT_FALSE(result.stats.passes[0].ran);
+  EXPECT_EQ(result.display.pixels.size(), 32u * 32u * 4u);
 }
 
 TEST_F(EdgeScenes, ResolutionChangesBetweenRequestsReuseNothingStale) {
