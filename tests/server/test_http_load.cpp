@@ -104,7 +104,9 @@ TEST(LoadClientGone, AClientThatLeavesDoesNotHoldTheQueue) {
   // The queue (capacity 1) frees while the slow render still runs: another client gets in.
   ASSERT_TRUE(wait_for_metric(server, "lpv_render_queue_depth", 0));
   EXPECT_EQ(metric(server, "lpv_renders_in_flight"), 1) << "the slow render should still be running";
-  EXPECT_EQ(metric(server, "lpv_renders_total{outcome=\"client_gone\"}"), 1);
+  // The job leaves the queue before its handler counts the outcome (another thread): a
+  // reader in between saw 0 on the H100 machine's 16 cores.
+  EXPECT_TRUE(wait_for_metric(server, "lpv_renders_total{outcome=\"client_gone\"}", 1));
   const auto next = server.client()->Post("/v1/render", R"({"output": {"width": 32, "height": 32}})",
                                           "application/json");
   ASSERT_TRUE(next);
