@@ -6,7 +6,10 @@
 #define STBI_ONLY_PNG
 #include <stb/stb_image.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <stdexcept>
 
 namespace server_test {
 namespace {
@@ -33,6 +36,16 @@ const char* type_name(const nlohmann::json& j) {
 }
 
 }  // namespace
+
+std::string slow_render(httplib::Client& http, double seconds) {
+  nlohmann::json request = {{"output", {{"width", kSlowRenderSize}, {"height", kSlowRenderSize}}},
+                            {"lpv", {{"enabled", false}}}};
+  const auto timed = http.Post("/v1/render", request.dump(), "application/json");
+  if (!timed || timed->status != 200) throw std::runtime_error("slow_render: the timing render failed");
+  const double frame_ms = nlohmann::json::parse(timed->get_header_value("X-Render-Stats"))["wall_ms"]["median"];
+  request["repeat"] = std::clamp(int(std::ceil(seconds * 1000.0 / std::max(frame_ms, 1e-3))), 1, 100);
+  return request.dump();
+}
 
 std::optional<ImageSize> png_size(const std::string& bytes) {
   int width = 0, height = 0, channels = 0;

@@ -40,16 +40,13 @@ double elapsed_ms(Work&& work) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// A render that keeps a worker busy for a while on lavapipe (about a second: 60 direct-light
-// frames at 1024^2, about 15 ms each; the server's default --max-repeat is 100), for tests
-// that need a render in flight. Direct light only, so its duration does not follow the cost
-// of the LPV settings. At 40 frames of 512^2, once the direct frame fell from 10 to 4 ms, it
-// ended after about 160 ms, before LoadClientGone's impatient client (100 ms) had left, and
-// that test failed on a fast day.
-inline constexpr int kSlowRenderSize = 1024;
-inline const std::string kSlowRender = R"({"output": {"width": )" + std::to_string(kSlowRenderSize) +
-                                       R"(, "height": )" + std::to_string(kSlowRenderSize) +
-                                       R"(}, "lpv": {"enabled": false}, "repeat": 60})";
+// A render that keeps the server's worker busy for about `seconds`, on lavapipe or a GPU,
+// for tests that need a render in flight: direct-light frames of kSlowRenderSize^2 (so its
+// duration does not follow the LPV settings), as many as one frame timed on this server
+// says fill the time, at most the default --max-repeat (100). A fixed count was tuned to
+// lavapipe and ended within LoadClientGone's 100 ms on an H100.
+inline constexpr int kSlowRenderSize = 2048;
+std::string slow_render(httplib::Client& http, double seconds = 1.0);
 
 // Every key of `example` is in `actual` with a value of the same JSON type, recursively;
 // array elements of `actual` are compared with the example's first element.

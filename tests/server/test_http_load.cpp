@@ -76,8 +76,9 @@ TEST(LoadOverload, ManyClientsGetOnly200Or503AndTheServerStaysHealthy) {
 
 TEST(LoadDeadline, ARenderThatCannotStartInTimeGets504) {
   ServerProcess server({"--queue", "4"});
+  const std::string slow_request = slow_render(*server.client());
   auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post("/v1/render", kSlowRender, "application/json");
+    return server.client()->Post("/v1/render", slow_request, "application/json");
   });
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight", 1));
   const auto late = server.client()->Post("/v1/render", {{"X-Deadline-Ms", "50"}},
@@ -91,8 +92,9 @@ TEST(LoadDeadline, ARenderThatCannotStartInTimeGets504) {
 
 TEST(LoadClientGone, AClientThatLeavesDoesNotHoldTheQueue) {
   ServerProcess server({"--queue", "1"});
+  const std::string slow_request = slow_render(*server.client());
   auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post("/v1/render", kSlowRender, "application/json");
+    return server.client()->Post("/v1/render", slow_request, "application/json");
   });
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight", 1));
   {
@@ -116,8 +118,9 @@ TEST(LoadClientGone, AClientThatLeavesDoesNotHoldTheQueue) {
 
 TEST(LoadShutdown, SigtermDuringARenderFinishesItAndExitsZero) {
   ServerProcess server;
+  const std::string slow_request = slow_render(*server.client());
   auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post("/v1/render", kSlowRender, "application/json");
+    return server.client()->Post("/v1/render", slow_request, "application/json");
   });
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight", 1));
   ASSERT_EQ(kill(server.pid(), SIGTERM), 0);

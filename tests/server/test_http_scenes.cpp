@@ -236,8 +236,9 @@ TEST(HttpScenes, ADeletedSceneIsNotRenderedFromAWorkersCache) {
 
   // A render of it waits behind a slow one while the scene is deleted: it got past the
   // check before queueing, so the worker must see the deletion itself.
+  const std::string slow_request = slow_render(*server.client());
   auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post("/v1/render", kSlowRender, "application/json");
+    return server.client()->Post("/v1/render", slow_request, "application/json");
   });
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight 1"));
   auto queued = std::async(std::launch::async, [&] { return render(*server.client(), id); });
