@@ -132,7 +132,7 @@ options (each also read from the environment variable in brackets; a flag wins):
                          (67108864) [LPV_SERVER_MAX_REFERENCE_PATHS]
   -h, --help             this text
 
-Vulkan: LPV_DEVICE, LPV_VALIDATION, LPV_PIPELINE_CACHE as for lpv-render.
+Vulkan: LPV_DEVICE, LPV_VALIDATION, LPV_VALIDATION_SYNC, LPV_PIPELINE_CACHE as for lpv-render.
 SIGINT or SIGTERM: stop accepting, finish the renders in flight, exit 0.
 exit status: 0 after a clean shutdown, 2 bad usage, 1 failure (device, bind)
 )";

@@ -19,10 +19,12 @@ struct DeviceOptions {
   // that index of the enumeration; anything else is a case-insensitive substring of the name.
   std::string selector;
   bool validation = false;  // Khronos validation layer; every message is recorded
+  // With validation, the layer's synchronization validation too (device.cpp says why).
+  bool synchronization_validation = true;
   std::filesystem::path pipeline_cache_file;  // empty: the cache lives only in memory
 
-  // LPV_DEVICE, LPV_VALIDATION=1 and LPV_PIPELINE_CACHE (a file, or "off"); the cache
-  // defaults to $XDG_CACHE_HOME/lpv-render (or ~/.cache/lpv-render).
+  // LPV_DEVICE, LPV_VALIDATION=1, LPV_VALIDATION_SYNC=0 and LPV_PIPELINE_CACHE (a file, or
+  // "off"); the cache defaults to $XDG_CACHE_HOME/lpv-render (or ~/.cache/lpv-render).
   static DeviceOptions from_environment();
 };
 
@@ -77,7 +79,7 @@ class Device {
   static VKAPI_ATTR VkBool32 VKAPI_CALL on_debug_message(VkDebugUtilsMessageSeverityFlagBitsEXT,
                                                          VkDebugUtilsMessageTypeFlagsEXT,
                                                          const VkDebugUtilsMessengerCallbackDataEXT*, void*);
-  void create_instance(bool validation);
+  void create_instance(bool validation, bool synchronization_validation);
   void pick_physical_device(const std::string& selector);
   void create_device();
   void load_pipeline_cache();

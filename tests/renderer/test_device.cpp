@@ -5,6 +5,7 @@
 #include "renderer/vulkan/resources.hpp"
 #include "renderer/vulkan/vk_check.hpp"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -69,6 +70,22 @@ TEST(PipelineCache, IsWrittenOnExitAndACorruptFileIsIgnored) {
     EXPECT_EQ(renderer.render(request).display.pixels.size(), 16u * 16u * 4u);
   }
   std::filesystem::remove_all(dir);
+}
+
+TEST(DeviceOptions, SynchronizationValidationIsOnUnlessTheEnvironmentSaysZero) {
+  const char* saved = std::getenv("LPV_VALIDATION_SYNC");
+  const std::string restore = saved ? saved : "";
+  ::unsetenv("LPV_VALIDATION_SYNC");
+  EXPECT_TRUE(vkx::DeviceOptions::from_environment().synchronization_validation);
+  ::setenv("LPV_VALIDATION_SYNC", "0", 1);
+  EXPECT_FALSE(vkx::DeviceOptions::from_environment().synchronization_validation);
+  ::setenv("LPV_VALIDATION_SYNC", "1", 1);
+  EXPECT_TRUE(vkx::DeviceOptions::from_environment().synchronization_validation);
+  if (saved) {
+    ::setenv("LPV_VALIDATION_SYNC", restore.c_str(), 1);
+  } else {
+    ::unsetenv("LPV_VALIDATION_SYNC");
+  }
 }
 
 // The GPU tests fail on any validation message; this one checks that the layer is looking,

@@ -20,13 +20,15 @@ options:
                          '/'); its buffers and images may be embedded or in files
                          next to it. The request must not name a scene then.
   --device NAME|INDEX    Vulkan device (default: $LPV_DEVICE, else lavapipe)
-  --validation           enable the Khronos validation layer ($LPV_VALIDATION=1)
+  --validation           enable the Khronos validation layer ($LPV_VALIDATION=1), with
+                         its synchronization validation unless $LPV_VALIDATION_SYNC=0
   --list-devices         list Vulkan devices and exit
   --list-scenes          list built-in scenes and exit
   -q, --quiet            no summary on standard error
   -h, --help             this text
 
-environment: LPV_DEVICE, LPV_VALIDATION, LPV_PIPELINE_CACHE (a file, or "off")
+environment: LPV_DEVICE, LPV_VALIDATION, LPV_VALIDATION_SYNC, LPV_PIPELINE_CACHE (a file,
+             or "off")
 exit status:
   0  success
   1  rendering failure (device, output file, validation messages)
