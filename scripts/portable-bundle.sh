@@ -28,8 +28,13 @@ stage="$(mktemp -d "${TMPDIR:-/tmp}/lpv-portable.XXXXXX")"
 trap 'rm -rf "$stage"' EXIT
 mkdir -p "$stage/lib" "$stage/layers"
 
-# The tracked sources as they are in the working tree (the tests' scripts, web/, bench/, api/).
-git -C "$root" ls-files -z | (cd "$root" && tar --null -T - -cf -) | tar -xf - -C "$stage"
+# The tracked sources as they are in the working tree (the tests' scripts, web/, bench/, api/);
+# outside a git checkout (a Docker image), the tree but its builds.
+if git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  git -C "$root" ls-files -z | (cd "$root" && tar --null -T - -cf -) | tar -xf - -C "$stage"
+else
+  tar -C "$root" --exclude='./build*' --exclude=./node_modules --exclude=./data -cf - . | tar -xf - -C "$stage"
+fi
 
 # The build without its objects.
 cp -a "$build" "$stage/build"
