@@ -49,7 +49,7 @@ BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cel
   using vec3 = typename M::vec3;
   BasicGrid<Vec4> grid(dims);
   for (const Vpl& v : vpls) {
-    const vec3 q = (vec3(v.position) + vec3(v.normal) * real(offset_cells * cell_size) - vec3(origin)) / real(cell_size);
+    const vec3 q = injection_point<vec3>(v, origin, cell_size, offset_cells);
     if (glm::any(glm::lessThan(q, vec3(0))) || glm::any(glm::greaterThan(q, vec3(dims)))) continue;
     if (nearest) {
       const glm::ivec3 cell = glm::min(glm::ivec3(q), dims - 1);

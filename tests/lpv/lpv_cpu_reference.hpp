@@ -35,6 +35,14 @@ struct Vpl {
   glm::vec3 flux;    // W
 };
 
+// Where a VPL lands in a grid (cell units from `origin`), moved offset_cells along its normal,
+// in the precision of `Vec3` (glm::vec3 or glm::dvec3).
+template <class Vec3>
+Vec3 injection_point(const Vpl& v, glm::vec3 origin, float cell_size, float offset_cells) {
+  using real = typename Vec3::value_type;
+  return (Vec3(v.position) + Vec3(v.normal) * real(offset_cells * cell_size) - Vec3(origin)) / real(cell_size);
+}
+
 // Each VPL, moved offset_cells along its normal, adds Phi/pi * cosine lobe to the 8 cells
 // around it, with trilinear weights (shares outside the grid to its border cells), or with
 // `nearest` to the one cell it lands in (lpv.injection "nearest").

@@ -119,12 +119,10 @@ std::vector<lpv_ref::Vpl> vpls_of(const renderer::LpvSnapshot& snap) {
 // along their normal), in cells: the nearest-cell choice is a tie there, which any rounding
 // may break either way.
 double closest_to_a_cell_face(const std::vector<lpv_ref::Vpl>& vpls, const renderer::LpvSnapshot::Cascade& c,
-                              double offset_cells) {
+                              float offset_cells) {
   double closest = 0.5;
   for (const lpv_ref::Vpl& v : vpls) {
-    const glm::dvec3 q =
-        (glm::dvec3(v.position) + glm::dvec3(v.normal) * (offset_cells * c.cell_size) - glm::dvec3(c.origin)) /
-        double(c.cell_size);
+    const glm::dvec3 q = lpv_ref::injection_point<glm::dvec3>(v, c.origin, c.cell_size, offset_cells);
     for (int a = 0; a < 3; ++a) closest = std::min(closest, std::abs(q[a] - std::round(q[a])));
   }
   return closest;
