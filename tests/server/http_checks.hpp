@@ -1,11 +1,14 @@
 // What the HTTP tests check again and again: error bodies, images, timing headers.
 #pragma once
 
+#include "server_process.hpp"
+
 #include <gtest/gtest.h>
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <future>
 #include <map>
 #include <optional>
 #include <string>
@@ -40,13 +43,14 @@ double elapsed_ms(Work&& work) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// A render that keeps the server's worker busy for about `seconds`, on lavapipe or a GPU,
-// for tests that need a render in flight: direct-light frames of kSlowRenderSize^2 (so its
-// duration does not follow the LPV settings), as many as one frame timed on this server
-// says fill the time, at most the default --max-repeat (100). A fixed count was tuned to
-// lavapipe and ended within LoadClientGone's 100 ms on an H100.
+// Starts, on another thread, a render that keeps the server's worker busy for about
+// `seconds` on lavapipe or a GPU, for tests that need a render in flight; its answer when it
+// ends. Direct-light frames of kSlowRenderSize^2 (so its duration does not follow the LPV
+// settings), as many as a warm frame timed on this server first says fill the time, at most
+// the default --max-repeat (100). A fixed count was tuned to lavapipe and ended within
+// LoadClientGone's 100 ms on an H100.
 inline constexpr int kSlowRenderSize = 2048;
-std::string slow_render(httplib::Client& http, double seconds = 1.0);
+std::future<httplib::Result> start_slow_render(const ServerProcess& server, double seconds = 1.0);
 
 // Every key of `example` is in `actual` with a value of the same JSON type, recursively;
 // array elements of `actual` are compared with the example's first element.

@@ -76,10 +76,7 @@ TEST(LoadOverload, ManyClientsGetOnly200Or503AndTheServerStaysHealthy) {
 
 TEST(LoadDeadline, ARenderThatCannotStartInTimeGets504) {
   ServerProcess server({"--queue", "4"});
-  const std::string slow_request = slow_render(*server.client());
-  auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post("/v1/render", slow_request, "application/json");
-  });
+  auto slow = start_slow_render(server);
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight", 1));
   const auto late = server.client()->Post("/v1/render", {{"X-Deadline-Ms", "50"}},
                                            R"({"output": {"width": 32, "height": 32}})", "application/json");
@@ -92,10 +89,7 @@ TEST(LoadDeadline, ARenderThatCannotStartInTimeGets504) {
 
 TEST(LoadClientGone, AClientThatLeavesDoesNotHoldTheQueue) {
   ServerProcess server({"--queue", "1"});
-  const std::string slow_request = slow_render(*server.client());
-  auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post("/v1/render", slow_request, "application/json");
-  });
+  auto slow = start_slow_render(server);
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight", 1));
   {
     // Waits 100 ms for an answer, then closes the connection while its job is queued.
@@ -118,10 +112,7 @@ TEST(LoadClientGone, AClientThatLeavesDoesNotHoldTheQueue) {
 
 TEST(LoadShutdown, SigtermDuringARenderFinishesItAndExitsZero) {
   ServerProcess server;
-  const std::string slow_request = slow_render(*server.client());
-  auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post("/v1/render", slow_request, "application/json");
-  });
+  auto slow = start_slow_render(server);
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight", 1));
   ASSERT_EQ(kill(server.pid(), SIGTERM), 0);
   const auto r = slow.get();

@@ -236,10 +236,7 @@ TEST(HttpScenes, ADeletedSceneIsNotRenderedFromAWorkersCache) {
 
   // A render of it waits behind a slow one while the scene is deleted: it got past the
   // check before queueing, so the worker must see the deletion itself.
-  const std::string slow_request = slow_render(*server.client());
-  auto slow = std::async(std::launch::async, [&] {
-    return server.client()->Post("/v1/render", slow_request, "application/json");
-  });
+  auto slow = start_slow_render(server);
   ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight 1"));
   auto queued = std::async(std::launch::async, [&] { return render(*server.client(), id); });
   ASSERT_TRUE(wait_for_metric(server, "lpv_render_queue_depth 1"));
