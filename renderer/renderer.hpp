@@ -67,7 +67,8 @@ struct RendererOptions {
   // used are evicted beyond it (the scene being rendered always stays).
   std::uint64_t scene_cache_bytes = 1ull << 30;
   // Cells each propagation invocation walks along z; 0: by device, 8 on a CPU and 2 on a GPU
-  // (LpvPropagatePass). Tests set it to run the GPU's choice on lavapipe.
+  // (LpvPropagatePass). lpv-render's --propagate-column sets it, for measuring; tests, to run
+  // the GPU's choice on lavapipe.
   std::uint32_t propagate_column = 0;
 };
 

@@ -19,7 +19,8 @@ struct IterationConstants {
 // (8 measured best there, docs/lpv.md). A GPU needs invocations instead: columns of 8 give a
 // 32^3 grid 4096 of them, a fraction of what one GPU runs at once, and each walks 8 cells of
 // dependent loads. On an H100, columns of 2 propagate 32^3 x 8 in 0.075 ms against 0.173,
-// 64^3 x 8 in 0.260 against 0.321; 1 is no faster at 32^3 and slower at 64^3.
+// 64^3 x 8 in 0.260 against 0.321; 1 is no faster at 32^3 and slower at 64^3
+// (lpv-render --propagate-column, docs/lpv.md "On a real GPU").
 std::uint32_t device_column_length(const vkx::Device& device) {
   return device.info().type == VK_PHYSICAL_DEVICE_TYPE_CPU ? gpu::LPV_PROPAGATE_COLUMN_CPU
                                                            : gpu::LPV_PROPAGATE_COLUMN_GPU;

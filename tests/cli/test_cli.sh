@@ -60,6 +60,16 @@ check "unknown option shows usage" grep -q "usage: lpv-render" err.txt
 run does-not-exist.json
 check "missing request file exits 2" test "$rc" -eq 2
 
+# The propagation's column length changes how the work is cut, not the image.
+echo '{"output": {"width": 64, "height": 64, "format": "pfm"}, "lpv": {"grid": [13, 10, 9]}, "plan": "exact"}' >col.json
+run col.json -o col-default.pfm -q
+run col.json -o col-2.pfm -q --propagate-column 2
+check "--propagate-column 2 exits 0" test "$rc" -eq 0
+check "--propagate-column 2 gives the same image" cmp -s col-default.pfm col-2.pfm
+run --propagate-column 0
+check "--propagate-column 0 exits 2" test "$rc" -eq 2
+check "--propagate-column 0 is explained" grep -q "1 to 64" err.txt
+
 run --device no-such-gpu
 check "unknown device exits 1" test "$rc" -eq 1
 check "unknown device lists devices" grep -q "devices:" err.txt

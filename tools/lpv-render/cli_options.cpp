@@ -1,6 +1,7 @@
 #include "cli_options.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <string_view>
 
 namespace cli {
@@ -20,6 +21,8 @@ options:
                          '/'); its buffers and images may be embedded or in files
                          next to it. The request must not name a scene then.
   --device NAME|INDEX    Vulkan device (default: $LPV_DEVICE, else lavapipe)
+  --propagate-column N   cells each propagation invocation walks along z, 1 to 64 (for
+                         measuring; default: 8 on a CPU device, 2 on a GPU)
   --validation           enable the Khronos validation layer ($LPV_VALIDATION=1), with
                          its synchronization validation unless $LPV_VALIDATION_SYNC=0
   --list-devices         list Vulkan devices and exit
@@ -74,6 +77,13 @@ Options parse(int argc, char** argv) {
       }
     } else if (arg == "--device") {
       o.device = value(arg);
+    } else if (arg == "--propagate-column") {
+      const std::string v = value(arg);
+      unsigned n = 0;
+      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+      if (ec != std::errc() || end != v.data() + v.size() || n < 1 || n > 64)
+        throw UsageError("--propagate-column takes a whole number from 1 to 64, not '" + v + "'");
+      o.propagate_column = n;
     } else if (arg == "--validation") {
       o.validation = true;
     } else if (arg == "--list-devices") {

@@ -1,6 +1,7 @@
 // Command line of lpv-render.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -14,6 +15,7 @@ struct Options {
   std::optional<std::string> scene;         // a built-in scene; overrides the request's scene
   std::optional<std::string> scene_file;    // a .gltf/.glb file to render instead of a named scene
   std::optional<std::string> device;        // overrides LPV_DEVICE
+  std::uint32_t propagate_column = 0;       // RendererOptions::propagate_column (0: by device)
   bool validation = false;
   bool list_devices = false;
   bool list_scenes = false;

@@ -124,7 +124,7 @@ int run(int argc, char** argv) {
   if (options.device) device_options.selector = *options.device;
   if (options.validation) device_options.validation = true;
   vkx::Device device(device_options);
-  renderer::Renderer renderer(device);
+  renderer::Renderer renderer(device, renderer::RendererOptions{.propagate_column = options.propagate_column});
   renderer::RenderResult result;
   if (file_scene) {
     try {
