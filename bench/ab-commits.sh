@@ -15,11 +15,8 @@
 # Exit status: lpv-bench ab's (0 no regression, 1 a metric slower, an image changed or a case
 # failing in the candidate, 2 bad input), 3 when a commit does not build.
 set -euo pipefail
-
-if [ $# -lt 2 ]; then
-  sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2
-  exit 2
-fi
+. "$(dirname "$0")/ab_run.sh"
+ab_need_two_arguments "$#"
 root=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
 baseline=$(git -C "$root" rev-parse --verify "$1^{commit}")
 candidate=$(git -C "$root" rev-parse --verify "$2^{commit}")
@@ -46,15 +43,6 @@ b=$(build "$candidate") || { echo "ab-commits: $candidate does not build" >&2; e
 
 # Both builds run the candidate's suite, read once: the cases a change adds are measured too
 # (a case the baseline cannot run is reported as failed in the baseline, not as a regression).
-case "$suite" in
-  */* | *.json) suite_file=$(realpath "$suite") ;;
-  *) suite_file="$work/src-$candidate/bench/suites/$suite.json" ;;
-esac
-
-results="$work/results"
-mkdir -p "$results"
-status=0
-LPV_BENCH_COMMIT="" "$b/lpv-bench" ab --a "$a/lpv-bench" --b "$b/lpv-bench" "$suite_file" \
-  -o "$results" --report "$results/report.md" "$@" || status=$?
-echo "ab-commits: $baseline (A) against $candidate (B): exit status $status; results in $results" >&2
-exit "$status"
+suite_file=$(ab_suite_file "$suite" "$work/src-$candidate/bench/suites")
+LPV_BENCH_COMMIT="" ab_run "ab-commits: $baseline (A) against $candidate (B)" "$work/results" "$a/lpv-bench" \
+  "$b/lpv-bench" "$suite_file" "$@"

@@ -19,11 +19,8 @@
 # Exit status: lpv-bench ab's (0 no regression, 1 a metric slower or an image changed in B,
 # 2 bad input), 3 when a version cannot be fetched.
 set -euo pipefail
-
-if [ $# -lt 2 ]; then
-  sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2
-  exit 2
-fi
+. "$(dirname "$0")/ab_run.sh"
+ab_need_two_arguments "$#"
 root=$(cd "$(dirname "$0")/.." && pwd)
 version_a=$1
 version_b=$2
@@ -55,13 +52,5 @@ side() {
 a=$(side "$version_a") || { echo "ab-drivers: cannot fetch mesa-vulkan-drivers=$version_a" >&2; exit 3; }
 b=$(side "$version_b") || { echo "ab-drivers: cannot fetch mesa-vulkan-drivers=$version_b" >&2; exit 3; }
 
-case "$suite" in
-  */* | *.json) suite_file=$(realpath "$suite") ;;
-  *) suite_file="$root/bench/suites/$suite.json" ;;
-esac
-results="$work/drivers"
-mkdir -p "$results"
-status=0
-"$b" ab --a "$a" --b "$b" "$suite_file" -o "$results" --report "$results/report.md" "$@" || status=$?
-echo "ab-drivers: mesa $version_a (A) against $version_b (B): exit status $status; results in $results" >&2
-exit "$status"
+ab_run "ab-drivers: mesa $version_a (A) against $version_b (B)" "$work/drivers" "$a" "$b" \
+  "$(ab_suite_file "$suite" "$root/bench/suites")" "$@"
