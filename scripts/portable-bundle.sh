@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Packs a build (default: build/) into one archive that runs on another x86-64 Linux machine
 # without this project's Debian packages, such as a GPU machine with another distribution
-# (docs/testing.md, "On another Vulkan device"): the programs and test binaries, the shared libraries they
-# load (all but the C and C++ runtimes, which a newer distribution has too), the Vulkan
-# loader, the validation layer, the GL vendor-neutral dispatch libraries (libglvnd: NVIDIA's
-# Vulkan driver is a GLX vendor library, and without them its vkCreateInstance is not found;
-# containers often lack them), the glTF corpus and the tracked source files the tests read.
+# (docs/testing.md, "On another Vulkan device"): the programs and test binaries, the shared
+# libraries they load (all but the C and C++ runtimes, which a newer distribution has too),
+# the Vulkan loader, the validation layer, the GL vendor-neutral dispatch libraries
+# (libglvnd: NVIDIA's Vulkan driver is a GLX vendor library, and without them its
+# vkCreateInstance is not found; containers often lack them), the glTF corpus and the
+# tracked source files the tests read.
 #
 #   scripts/portable-bundle.sh [ARCHIVE [BUILD]]   # defaults: build-portable/lpv-portable.tar.xz, build
 #   # on the other machine:
