@@ -31,7 +31,8 @@ void main() {
     for (int c = 0; c < 3; ++c) {
       sh[c] = from_fixed(fixed_pair(imageLoad(injected, texel + 2 * c)), fixed_pair(imageLoad(injected, texel + 2 * c + 1)),
                          1.0 / lpv.scales.x);
-      grids[lpv_grid_texel(cell, c, 0u, g.dims.xyz)] = texel_bits(lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c])));
+      vec4 sent = lpv_sender_form(sh[c]);
+      grids[lpv_grid_texel(cell, c, 0u, g.dims.xyz)] = texel_bits(sent * lpv_sender_outgoing_scale(sent));
       flux[c] = sh_flux(sh[c]);
     }
     int accumulated = lpv_accumulated_texel(cell, push.cascade, g.dims.xyz);

@@ -58,7 +58,12 @@ layout(constant_id = 2) const uint COLUMN_LENGTH = LPV_PROPAGATE_COLUMN_CPU;
 
 #include "shared/lpv_grid_flux.glsl"
 
-const float SQRT5 = 2.2360679775;
+// The gathered lobe weights w (axes' order: constant, x, y, z) as the SH the cell holds,
+// (c0' w_0, -c1' w_y, c1' w_z, -c1' w_x) / pi with the cosine lobe's constants c0', c1', and
+// as what it sends (lpv_sender_form of that SH), a scale per term: (c0 c0', c1 c1' / sqrt(5)
+// (x3)) / pi. Its flux, 2 sqrt(pi) c0' w_0 / pi, is w_0 itself.
+const vec2 LOBE_TO_SH = vec2(SH_COSINE_C0, SH_COSINE_C1) / LPV_PI;
+const vec4 LOBE_TO_SENDER = vec4(SH_C0 * SH_COSINE_C0, vec3(SH_C1 * SH_COSINE_C1 * LPV_INV_SQRT5)) / LPV_PI;
 
 // What a cell sends, per colour channel, in sender form; zero for a cell past the grid's edge.
 struct Sender {
@@ -86,7 +91,7 @@ Sender load_sender(ivec3 cell, uint which, uvec3 dims, float inside) {
 // 0, 1) (the face's blocking potential is B(-w)); (1, 0, 0, 0), all through, when off.
 vec4 face_transmission(vec4 blocking, float on) {
   vec4 g = blocking * on;
-  return vec4(1.0 - SH_C0 * g.x, vec3(-g.w, -g.y, g.z) * (SH_C1 / SQRT5));
+  return vec4(1.0 - SH_C0 * g.x, vec3(-g.w, -g.y, g.z) * (SH_C1 / LPV_SQRT5));
 }
 
 // One channel of a neighbour on axis a, travelling along sigma * a, in the axes' order
@@ -95,7 +100,7 @@ vec4 face_transmission(vec4 blocking, float on) {
 // A + 2 sigma P_a +- P_b, +- P_c), each clamped at zero and times what its blockers let
 // through (t_far, t_side).
 void receive(inout vec4 far, inout vec4 side, vec4 e, float sigma, float t_far, vec4 t_side) {
-  float f = max(e.x + (sigma * SQRT5) * e.y, 0.0) * t_far;
+  float f = max(e.x + (sigma * LPV_SQRT5) * e.y, 0.0) * t_far;
   float shared_term = e.x + (2.0 * sigma) * e.y;
   vec4 s = max(vec4(shared_term + e.z, shared_term - e.z, shared_term + e.w, shared_term - e.w), vec4(0.0)) * t_side;
   far.x += f;
@@ -118,12 +123,12 @@ void reflect_blocked(inout Gathered g, vec4 blocking, vec3 albedo, vec3 w, vec3 
 // The 5 faces a neighbour's light enters through, for bounces: the same values as receive(),
 // in world axes, with the light its blockers stop reflected.
 void reflect_neighbour(inout Gathered g, Sender n, vec4 blocking, vec3 albedo, vec3 a, vec3 b, vec3 c) {
-  vec3 dirs[5] = vec3[5](a, (2.0 * a + b) / SQRT5, (2.0 * a - b) / SQRT5, (2.0 * a + c) / SQRT5, (2.0 * a - c) / SQRT5);
+  vec3 dirs[5] = vec3[5](a, (2.0 * a + b) / LPV_SQRT5, (2.0 * a - b) / LPV_SQRT5, (2.0 * a + c) / LPV_SQRT5, (2.0 * a - c) / LPV_SQRT5);
   for (int f = 0; f < 5; ++f) {
     vec3 w = dirs[f];
     float omega = f == 0 ? LPV_FAR_FACE_SOLID_ANGLE : LPV_SIDE_FACE_SOLID_ANGLE;
     vec3 unblocked;
-    for (int k = 0; k < 3; ++k) unblocked[k] = omega * max(n.e[k].x + SQRT5 * dot(n.e[k].yzw, w), 0.0);
+    for (int k = 0; k < 3; ++k) unblocked[k] = omega * max(n.e[k].x + LPV_SQRT5 * dot(n.e[k].yzw, w), 0.0);
     float blocked = clamp(dot(blocking, sh_basis(-w)), 0.0, 1.0);
     reflect_blocked(g, blocking, albedo, w, unblocked, blocked);
   }
@@ -152,7 +157,7 @@ void gather(inout Gathered g, Sender n, int axis, float sigma, Face face, float 
   float t_far = 1.0;
   vec4 t_side = vec4(1.0);
   if (OCCLUDED) {
-    t_far = clamp(h.x + (sigma * SQRT5) * h.y, 0.0, 1.0);
+    t_far = clamp(h.x + (sigma * LPV_SQRT5) * h.y, 0.0, 1.0);
     float shared_term = h.x + (2.0 * sigma) * h.y;
     t_side = clamp(vec4(shared_term + h.z, shared_term - h.z, shared_term + h.w, shared_term - h.w), 0.0, 1.0);
   }
@@ -273,13 +278,14 @@ void main() {
       int accumulated = lpv_accumulated_texel(cell, push.cascade, udims);
       vec4 sh[3];
       for (int c = 0; c < 3; ++c) {
-        // Lobe weights (1, n) summed over the faces, into the SH basis's order and scale.
+        // Lobe weights (1, n) summed over the faces.
         vec4 w = LPV_FAR_FACE_SOLID_ANGLE * g.far[c] + LPV_SIDE_FACE_SOLID_ANGLE * g.side[c] + g.reflected[c];
-        sh[c] = vec4(w.x * SH_COSINE_C0, vec3(-w.z, w.w, -w.y) * SH_COSINE_C1) / LPV_PI;
-        // What this cell sends in the next iteration: its SH times the outgoing scale, so that
-        // its face fluxes, negative ones dropped, add up to its flux (see lpv_outgoing_scale).
-        grid_store[texel + c] = texel_bits(lpv_sender_form(sh[c] * lpv_outgoing_scale(sh[c])));
-        column_flux[c] += sh_flux(sh[c]);
+        sh[c] = vec4(w.x, -w.z, w.w, -w.y) * LOBE_TO_SH.xyyy;
+        // What this cell sends in the next iteration, times the outgoing scale, so that its
+        // face fluxes, negative ones dropped, add up to its flux (see lpv_outgoing_scale).
+        vec4 sent = w * LOBE_TO_SENDER;
+        grid_store[texel + c] = texel_bits(sent * lpv_sender_outgoing_scale(sent));
+        column_flux[c] += w.x;
       }
       accumulated_store_r[accumulated] = texel_bits(imageLoad(accumulated_r, accumulated) + sh[0]);
       accumulated_store_g[accumulated] = texel_bits(imageLoad(accumulated_g, accumulated) + sh[1]);

@@ -64,6 +64,7 @@ LPV_CONST_F LPV_SIDE_FACE_SOLID_ANGLE = 0.4234313544;
 
 LPV_CONST_F LPV_PI = 3.14159265358979;
 LPV_CONST_F LPV_SQRT_PI = 1.7724538509;
+LPV_CONST_F LPV_SQRT5 = 2.2360679775;
 LPV_CONST_F LPV_INV_SQRT5 = 0.4472135955;  // 1 / sqrt(5)
 
 // The basis functions in direction d (unit).
@@ -90,6 +91,14 @@ LPV_FUNC vec4 sh_diffuse_emitter(vec3 n, lpv_real phi) { return sh_cosine_lobe(n
 // centre is 1 cell ahead and half a cell to the side.
 LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead + lpv_real(0.5) * side); }
 
+// What a cell sends, in the form propagation reads it: I(w) = A + sqrt(5) <P, w>, stored as
+// (A, P) with A = c0 s0 and P = c1 (-s3, -s1, s2) / sqrt(5) (axes x, y, z). The value on a
+// neighbour's far face, A + sqrt(5) P_a, and on its side faces, A + 2 P_a +- P_b, then take
+// one shared term and an addition each.
+LPV_FUNC vec4 lpv_sender_form(vec4 sh) {
+  return vec4(SH_C0 * sh.x, -SH_C1 * LPV_INV_SQRT5 * sh.w, -SH_C1 * LPV_INV_SQRT5 * sh.y, SH_C1 * LPV_INV_SQRT5 * sh.z);
+}
+
 // Propagation sends a cell's light to its 6 neighbours through 5 faces each: 30 faces with
 // flux Omega_f * I(w_f). Their sum is the cell's flux, but a 2-band SH has negative lobes, so
 // some face fluxes can be negative: sent as they are they are unphysical, clamped they add
@@ -99,26 +108,27 @@ LPV_FUNC vec3 lpv_face_direction(vec3 ahead, vec3 side) { return normalize(ahead
 // face is negative, 0 for a cell with no positive flux.
 //
 // Closed form rather than 30 clamped faces (propagation runs it for every cell and channel, and
-// lavapipe runs every line for every lane). With I(w) = A + B.w (A = c0 s0, B = c1 (-s3, -s1,
-// s2)), the faces come in opposite pairs with values A +- u: the far faces along axis a
-// (u = B_a) and the side faces (u = (2 B_i +- B_j) / sqrt(5), i != j: 12 pairs). For A > 0 a
+// lavapipe runs every line for every lane), on the sender form e = (A, P) (lpv_sender_form),
+// where the faces come in opposite pairs with values A +- u: the far faces along axis a
+// (u = sqrt(5) P_a) and the side faces (u = 2 P_i +- P_j, i != j: 12 pairs). For A > 0 a
 // pair's positive parts sum to 2A + max(|u| - A, 0), so the positive fluxes are the cell's
 // flux, A (6 Omega_f + 24 Omega_s), plus an excess that is zero exactly when no face is
-// negative. Over the signs, |2 B_i +- B_j| takes the values 2|B_i| + |B_j| and |2|B_i| - |B_j||.
-// No face is negative when |B| <= A (each |u| is at most |B|, by Cauchy-Schwarz): that test
-// returns first, since Mesa 25's lavapipe skips code that no lane of a subgroup runs, and in a
-// propagated grid whole subgroups of cells pass it: without it the closed form was slower
-// than the 30 faces on Mesa 25 (docs/lpv.md, "Targets", has the numbers and commands).
-LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) {
-  const lpv_real mean = SH_C0 * sh.x;
-  const vec3 b = abs(vec3(-SH_C1 * sh.w, -SH_C1 * sh.y, SH_C1 * sh.z));
+// negative. Over the signs, |2 P_i +- P_j| takes the values 2|P_i| + |P_j| and |2|P_i| - |P_j||.
+// No face is negative when sqrt(5) |P| <= A (each |u| is at most sqrt(5) |P|, by
+// Cauchy-Schwarz): that test returns first, since Mesa 25's lavapipe skips code that no lane of
+// a subgroup runs, and in a propagated grid whole subgroups of cells pass it: without it the
+// closed form was slower than the 30 faces on Mesa 25 (docs/lpv.md, "Targets", has the
+// numbers and commands).
+LPV_FUNC lpv_real lpv_sender_outgoing_scale(vec4 e) {
+  const lpv_real mean = e.x;
+  const vec3 p = abs(vec3(e.y, e.z, e.w));
   if (!(mean > 0.0f)) return 0.0f;
-  if (dot(b, b) <= mean * mean) return 1.0f;
-  const vec3 twice = (2.0f * LPV_INV_SQRT5) * b;  // 2 |B_i| / sqrt(5)
-  const vec3 next = LPV_INV_SQRT5 * vec3(b.y, b.z, b.x);  // |B_j| / sqrt(5), j = i + 1
-  const vec3 prev = LPV_INV_SQRT5 * vec3(b.z, b.x, b.y);  // j = i + 2
+  if (5.0f * dot(p, p) <= mean * mean) return 1.0f;
+  const vec3 twice = lpv_real(2) * p;
+  const vec3 next = vec3(p.y, p.z, p.x);  // |P_j|, j = i + 1
+  const vec3 prev = vec3(p.z, p.x, p.y);  // j = i + 2
   const vec3 zero = vec3(0.0f);
-  const vec3 far_excess = max(b - mean, zero);
+  const vec3 far_excess = max(LPV_SQRT5 * p - mean, zero);
   const vec3 side_excess = max(twice + next - mean, zero) + max(abs(twice - next) - mean, zero) +
                            max(twice + prev - mean, zero) + max(abs(twice - prev) - mean, zero);
   const lpv_real excess = LPV_FAR_FACE_SOLID_ANGLE * (far_excess.x + far_excess.y + far_excess.z) +
@@ -127,13 +137,8 @@ LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) {
   return total / (total + excess);
 }
 
-// What a cell sends, in the form propagation reads it: I(w) = A + sqrt(5) <P, w>, stored as
-// (A, P) with A = c0 s0 and P = c1 (-s3, -s1, s2) / sqrt(5) (axes x, y, z). The value on a
-// neighbour's far face, A + sqrt(5) P_a, and on its side faces, A + 2 P_a +- P_b, then take
-// one shared term and an addition each.
-LPV_FUNC vec4 lpv_sender_form(vec4 sh) {
-  return vec4(SH_C0 * sh.x, -SH_C1 * LPV_INV_SQRT5 * sh.w, -SH_C1 * LPV_INV_SQRT5 * sh.y, SH_C1 * LPV_INV_SQRT5 * sh.z);
-}
+// The same for an SH vector.
+LPV_FUNC lpv_real lpv_outgoing_scale(vec4 sh) { return lpv_sender_outgoing_scale(lpv_sender_form(sh)); }
 
 #ifdef __cplusplus
 }  // namespace gpu or gpu_double
