@@ -7,6 +7,9 @@
 // the lighting in about a third of the time the compute shading takes, and the frame writes
 // one 4-byte target instead of the G-buffer's 32 bytes a pixel and reads none of it back.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_shuffle : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"

@@ -6,6 +6,9 @@
 // its own saves that pass's reading back of the linear image: 1.9 ms of a 512^2 frame on
 // lavapipe, and a PNG frame writes no linear image at all.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_shuffle : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"

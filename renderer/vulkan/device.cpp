@@ -280,16 +280,20 @@ void Device::create_device() {
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
   VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
   vkGetPhysicalDeviceProperties2(physical_, &properties);
-  // Subgroup shuffles sum the splats of a subgroup before its atomics (lpv_splat.glsl).
-  const VkSubgroupFeatureFlags subgroup_needs = VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
+  // Subgroup shuffles sum the splats of a subgroup before its atomics (lpv_splat.glsl), and
+  // share the cells of the indirect light's lookup between pixels (lpv_irradiance.glsl, in the
+  // compute shading and the forward pass's fragment shader).
+  const VkSubgroupFeatureFlags subgroup_needs =
+      VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT;
+  const VkShaderStageFlags subgroup_stages = VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   // Propagation lays a subgroup's lanes out as a block of columns at least 2 wide each way.
   const bool subgroup_ops = (subgroup.supportedOperations & subgroup_needs) == subgroup_needs &&
-                            (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) && subgroup.subgroupSize >= 4;
+                            (subgroup.supportedStages & subgroup_stages) == subgroup_stages && subgroup.subgroupSize >= 4;
   if (!supported.features.shaderInt64 || !supported12.shaderBufferInt64Atomics ||
       !supported12.shaderSubgroupExtendedTypes || !subgroup_ops)
     throw std::runtime_error("device '" + info_.name + "' lacks 64-bit integer atomics or subgroup sums of them "
                              "(shaderInt64, shaderBufferInt64Atomics, shaderSubgroupExtendedTypes, subgroup "
-                             "arithmetic and shuffles in compute, at least 4 lanes), which the LPV passes need "
+                             "arithmetic, votes and shuffles in compute and fragment shaders, at least 4 lanes), which the LPV passes need "
                              "for deterministic accumulation and propagation");
   // The forward pass reads every shadow view of a frame from one uniform buffer, the RSM
   // pass every RSM view (as many: six a light at most).

@@ -4,15 +4,26 @@
 //   CASCADES (uint)   the cascades of indirect light (a specialization constant, so the
 //                     cascade loop has a constant length and is unrolled),
 //   lpv (GpuLpv), accumulated_r, accumulated_g, accumulated_b (imageBuffer, rgba32f;
-//                     lpv_accumulated_texel's layout), and includes lpv_sh.h and lpv_grid.glsl.
+//                     lpv_accumulated_texel's layout), and includes lpv_sh.h and lpv_grid.glsl,
+//                     and enables GL_KHR_shader_subgroup_arithmetic, _vote and _shuffle.
 #ifndef LPV_IRRADIANCE_GLSL
 #define LPV_IRRADIANCE_GLSL
+
+// The intensity of one cell, per channel, against a cosine lobe.
+vec3 cell_irradiance(vec4 r, vec4 g, vec4 b, vec4 lobe) { return vec3(dot(r, lobe), dot(g, lobe), dot(b, lobe)); }
 
 // Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units) onto a
 // surface with normal n: trilinear between cell centres, then E = <I, cosine lobe of -n> / s^2
 // (a cell's intensity per unit face area is the radiance that crosses it). q is clamped to
 // the centres of the border cells, so the filter never mixes in the next cascade, stacked
 // above this one in the same buffers.
+//
+// Neighbouring pixels mostly filter the same 8 cells (a cell spans many pixels). When every
+// lane of the subgroup does, and all lanes run, lane k loads corner k mod 8 and the others
+// take it by shuffle: 3 texel loads a lane instead of 24. lavapipe runs a texel load as a call
+// over the lanes, a shuffle by a constant lane as one permute, and branches for real on a
+// condition every lane shares (Mesa 25). The values and the sums are the same either way, so
+// the picture is too, bit for bit.
 vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   GpuLpvCascade g = lpv.cascades[c];
   ivec3 last = ivec3(g.dims.xyz) - 1;
@@ -22,12 +33,23 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   ivec3 high = min(low + 1, last);
   vec4 lobe = sh_cosine_lobe(-n);
   vec3 e = vec3(0.0);
-  for (uint corner = 0u; corner < 8u; ++corner) {
-    bvec3 up = bvec3(corner & 1u, corner & 2u, corner & 4u);
-    vec3 w3 = mix(1.0 - f, f, up);
-    int cell = lpv_accumulated_texel(mix(low, high, up), c, g.dims.xyz);
-    e += (w3.x * w3.y * w3.z) * vec3(dot(imageLoad(accumulated_r, cell), lobe), dot(imageLoad(accumulated_g, cell), lobe),
-                                     dot(imageLoad(accumulated_b, cell), lobe));
+  if (gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize && subgroupAllEqual(low)) {
+    uint mine = gl_SubgroupInvocationID & 7u;
+    int cell = lpv_accumulated_texel(mix(low, high, bvec3(mine & 1u, mine & 2u, mine & 4u)), c, g.dims.xyz);
+    vec4 r = imageLoad(accumulated_r, cell), gr = imageLoad(accumulated_g, cell), b = imageLoad(accumulated_b, cell);
+    for (uint corner = 0u; corner < 8u; ++corner) {
+      vec3 w3 = mix(1.0 - f, f, bvec3(corner & 1u, corner & 2u, corner & 4u));
+      e += (w3.x * w3.y * w3.z) *
+           cell_irradiance(subgroupShuffle(r, corner), subgroupShuffle(gr, corner), subgroupShuffle(b, corner), lobe);
+    }
+  } else {
+    for (uint corner = 0u; corner < 8u; ++corner) {
+      bvec3 up = bvec3(corner & 1u, corner & 2u, corner & 4u);
+      vec3 w3 = mix(1.0 - f, f, up);
+      int cell = lpv_accumulated_texel(mix(low, high, up), c, g.dims.xyz);
+      e += (w3.x * w3.y * w3.z) *
+           cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell), imageLoad(accumulated_b, cell), lobe);
+    }
   }
   return max(e, vec3(0.0)) / (g.origin.w * g.origin.w);
 }

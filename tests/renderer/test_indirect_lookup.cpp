@@ -1,0 +1,120 @@
+// The shading's lookup of the indirect light (shaders/shared/lpv_irradiance.glsl) against the
+// same maths on the host: every pixel of the `indirect` view equals albedo / pi times the
+// irradiance from the read-back accumulated grids at the pixel's surface point. The point,
+// normal and albedo come from the `depth`, `normal` and `albedo` views of the same camera.
+// The lookup shares the 8 cells between the lanes of a subgroup when all of them filter the
+// same ones, and loads them itself otherwise; a coarse grid at 256^2 takes the shared path
+// for most pixels, a fine one mostly the other, so both are held to the host's numbers.
+#include "gpu_test.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
+
+#define LPV_SH_DOUBLE
+#include "shaders/shared/lpv_sh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+class IndirectLookup : public gpu_test::GpuTest {};
+
+constexpr std::uint32_t kSize = 256;
+
+// Irradiance at p (normal n) from one cascade, as cascade_irradiance computes it: trilinear
+// between cell centres (clamped to the border cells' centres), then <I, cosine lobe of -n> / s^2.
+glm::dvec3 cascade_irradiance(const renderer::LpvSnapshot::Cascade& c, glm::dvec3 q, glm::dvec3 n) {
+  const glm::dvec3 last = glm::dvec3(c.dims) - 1.0;
+  const glm::dvec3 t = glm::clamp(q - 0.5, glm::dvec3(0.0), last);
+  const glm::uvec3 low(t);
+  const glm::dvec3 f = t - glm::dvec3(low);
+  const glm::uvec3 high = glm::min(low + 1u, c.dims - 1u);
+  const glm::dvec4 lobe = gpu_double::sh_cosine_lobe(-n);
+  glm::dvec3 e(0.0);
+  for (unsigned corner = 0; corner < 8; ++corner) {
+    const glm::bvec3 up(corner & 1u, corner & 2u, corner & 4u);
+    const glm::uvec3 cell(up.x ? high.x : low.x, up.y ? high.y : low.y, up.z ? high.z : low.z);
+    const double w = (up.x ? f.x : 1.0 - f.x) * (up.y ? f.y : 1.0 - f.y) * (up.z ? f.z : 1.0 - f.z);
+    const std::size_t index = cell.x + std::size_t(c.dims.x) * (cell.y + std::size_t(c.dims.y) * cell.z);
+    for (int k = 0; k < 3; ++k) e[k] += w * glm::dot(glm::dvec4(c.accumulated[3 * index + k]), lobe);
+  }
+  const double s = c.cell_size;
+  return glm::max(e, glm::dvec3(0.0)) / (s * s);
+}
+
+// Irradiance at p as indirect_irradiance computes it: the finest cascade holding p + s/2 n,
+// handing over to the next coarser one across its border band of 2 cells.
+glm::dvec3 indirect_irradiance(const renderer::LpvSnapshot& lpv, glm::dvec3 p, glm::dvec3 n) {
+  glm::dvec3 e(0.0);
+  double remaining = 1.0;
+  for (std::size_t i = 0; i < lpv.cascades.size(); ++i) {
+    const auto& c = lpv.cascades[i];
+    const glm::dvec3 q = (p + 0.5 * double(c.cell_size) * n - glm::dvec3(c.origin)) / double(c.cell_size);
+    const glm::dvec3 to_max = glm::dvec3(c.dims) - q;
+    const double inside = std::min({q.x, q.y, q.z, to_max.x, to_max.y, to_max.z});
+    if (inside < 0.0) continue;
+    const double w = i + 1 == lpv.cascades.size() ? 1.0 : std::clamp(inside / 2.0, 0.0, 1.0);
+    e += remaining * w * cascade_irradiance(c, q, n);
+    remaining *= 1.0 - w;
+  }
+  return e;
+}
+
+api::RenderRequest view_request(api::View view, glm::uvec3 grid, std::uint32_t cascades) {
+  api::RenderRequest r;
+  r.output.width = r.output.height = kSize;
+  r.output.format = api::ImageFormat::pfm;
+  r.output.view = view;
+  r.plan = api::PlanMode::exact;
+  r.lpv.grid = grid;
+  r.lpv.cascades = cascades;
+  return r;
+}
+
+void expect_lookup_matches_the_host(glm::uvec3 grid, std::uint32_t cascades) {
+  auto& renderer = gpu_test::renderer();
+  const auto indirect = renderer.render(view_request(api::View::indirect, grid, cascades),
+                                        renderer::kReadbackLinear | renderer::kReadbackLpv);
+  const auto depth = renderer.render(view_request(api::View::depth, grid, cascades)).linear;
+  const auto normal = renderer.render(view_request(api::View::normal, grid, cascades)).linear;
+  const auto albedo = renderer.render(view_request(api::View::albedo, grid, cascades)).linear;
+  ASSERT_EQ(indirect.lpv.cascades.size(), cascades);
+  gpu_test::save_artifact("indirect_lookup", indirect.linear);
+
+  const scene::Scene& scene = renderer.scene("cornell-box");
+  const auto camera = renderer::setup_camera(scene.camera, scene.bounds, 1.0f);
+  const glm::dmat4 unproject = glm::inverse(glm::dmat4(camera.view_proj));
+  double brightest = 0.0, worst = 0.0;
+  std::size_t surface_pixels = 0;
+  for (std::uint32_t y = 0; y < kSize; ++y) {
+    for (std::uint32_t x = 0; x < kSize; ++x) {
+      if (indirect.linear.pixels[(std::size_t(y) * kSize + x) * 4 + 3] == 0.0f) continue;  // no surface
+      ++surface_pixels;
+      // The pixel centre's ray, and the point on it at the depth view's distance along the view axis.
+      const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / double(kSize) * 2.0 - 1.0;
+      const glm::dvec4 far_point = unproject * glm::dvec4(ndc, 1.0, 1.0);
+      const glm::dvec3 ray = glm::normalize(glm::dvec3(far_point) / far_point.w - glm::dvec3(camera.position));
+      const double distance = camera.near + gpu_test::pixel(depth, x, y).x * double(camera.far - camera.near);
+      const glm::dvec3 p = glm::dvec3(camera.position) + ray * (distance / glm::dot(ray, glm::dvec3(camera.forward)));
+      const glm::dvec3 n = glm::normalize(glm::dvec3(gpu_test::pixel(normal, x, y)) * 2.0 - 1.0);
+      const glm::dvec3 expected =
+          glm::dvec3(gpu_test::pixel(albedo, x, y)) / double(gpu_test::kPi) * indirect_irradiance(indirect.lpv, p, n);
+      const glm::dvec3 got(gpu_test::pixel(indirect.linear, x, y));
+      brightest = std::max({brightest, expected.r, expected.g, expected.b});
+      worst = std::max(worst, glm::length(got - expected) / std::sqrt(3.0));
+    }
+  }
+  std::printf("grid %u, %u cascade(s): %zu surface pixels, largest difference %.2e of the brightest %.3e\n", grid.x,
+              cascades, surface_pixels, worst / brightest, brightest);
+  ASSERT_GT(surface_pixels, kSize * kSize / 2);
+  ASSERT_GT(brightest, 0.0) << "no indirect light to compare";
+  // The host's point is the depth view's, which is rounded differently from the G-buffer's
+  // (about 1e-6 of the distance); a wrong cell or weight is a difference of percents.
+  EXPECT_LT(worst, 1e-4 * brightest);
+}
+
+TEST_F(IndirectLookup, CoarseGridMostPixelsShareTheirCells) { expect_lookup_matches_the_host(glm::uvec3(8), 1); }
+
+TEST_F(IndirectLookup, FineGridsAndTwoCascades) { expect_lookup_matches_the_host(glm::uvec3(24, 32, 16), 2); }
+
+}  // namespace
