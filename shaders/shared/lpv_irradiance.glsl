@@ -9,8 +9,13 @@
 #ifndef LPV_IRRADIANCE_GLSL
 #define LPV_IRRADIANCE_GLSL
 
+// Which of the 8 cells around a point corner k is: one step up along x, y, z for bits 0, 1, 2.
+bvec3 corner_step(uint k) { return bvec3(k & 1u, k & 2u, k & 4u); }
+
 // The intensity of one cell, per channel, against a cosine lobe.
-vec3 cell_irradiance(vec4 r, vec4 g, vec4 b, vec4 lobe) { return vec3(dot(r, lobe), dot(g, lobe), dot(b, lobe)); }
+vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
+  return vec3(dot(red, lobe), dot(green, lobe), dot(blue, lobe));
+}
 
 // Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units) onto a
 // surface with normal n: trilinear between cell centres, then E = <I, cosine lobe of -n> / s^2
@@ -34,21 +39,19 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   vec4 lobe = sh_cosine_lobe(-n);
   vec3 e = vec3(0.0);
   if (gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize && subgroupAllEqual(low)) {
-    uint mine = gl_SubgroupInvocationID & 7u;
-    int cell = lpv_accumulated_texel(mix(low, high, bvec3(mine & 1u, mine & 2u, mine & 4u)), c, g.dims.xyz);
-    vec4 r = imageLoad(accumulated_r, cell), gr = imageLoad(accumulated_g, cell), b = imageLoad(accumulated_b, cell);
+    int mine = lpv_accumulated_texel(mix(low, high, corner_step(gl_SubgroupInvocationID & 7u)), c, g.dims.xyz);
+    vec4 red = imageLoad(accumulated_r, mine), green = imageLoad(accumulated_g, mine), blue = imageLoad(accumulated_b, mine);
     for (uint corner = 0u; corner < 8u; ++corner) {
-      vec3 w3 = mix(1.0 - f, f, bvec3(corner & 1u, corner & 2u, corner & 4u));
-      e += (w3.x * w3.y * w3.z) *
-           cell_irradiance(subgroupShuffle(r, corner), subgroupShuffle(gr, corner), subgroupShuffle(b, corner), lobe);
+      vec3 w3 = mix(1.0 - f, f, corner_step(corner));
+      e += (w3.x * w3.y * w3.z) * cell_irradiance(subgroupShuffle(red, corner), subgroupShuffle(green, corner),
+                                                  subgroupShuffle(blue, corner), lobe);
     }
   } else {
     for (uint corner = 0u; corner < 8u; ++corner) {
-      bvec3 up = bvec3(corner & 1u, corner & 2u, corner & 4u);
-      vec3 w3 = mix(1.0 - f, f, up);
-      int cell = lpv_accumulated_texel(mix(low, high, up), c, g.dims.xyz);
-      e += (w3.x * w3.y * w3.z) *
-           cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell), imageLoad(accumulated_b, cell), lobe);
+      vec3 w3 = mix(1.0 - f, f, corner_step(corner));
+      int cell = lpv_accumulated_texel(mix(low, high, corner_step(corner)), c, g.dims.xyz);
+      e += (w3.x * w3.y * w3.z) * cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell),
+                                                  imageLoad(accumulated_b, cell), lobe);
     }
   }
   return max(e, vec3(0.0)) / (g.origin.w * g.origin.w);
