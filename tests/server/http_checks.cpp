@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <regex>
 #include <stdexcept>
+#include <thread>
 
 namespace server_test {
 namespace {
@@ -102,6 +104,24 @@ std::map<std::string, double> parse_server_timing(const std::string& header) {
     return ::testing::AssertionFailure() << "expected code '" << code << "' and field '" << field << "', got "
                                          << result->body;
   return ::testing::AssertionSuccess();
+}
+
+double metric(const ServerProcess& server, const std::string& series) {
+  const auto r = server.client()->Get("/metrics");
+  if (!r || r->status != 200) return -1;
+  const std::regex line("(^|\n)" + std::regex_replace(series, std::regex(R"([{}\[\]().+*?^$|\\])"), R"(\$&)") +
+                        " ([0-9.e+-]+)");
+  std::smatch m;
+  return std::regex_search(r->body, m, line) ? std::stod(m[2]) : 0.0;
+}
+
+bool wait_for_metric(const ServerProcess& server, const std::string& series, double value) {
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (std::chrono::steady_clock::now() < give_up) {
+    if (metric(server, series) == value) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return false;
 }
 
 ::testing::AssertionResult has_shape_of(const nlohmann::json& example, const nlohmann::json& actual) {

@@ -52,6 +52,14 @@ double elapsed_ms(Work&& work) {
 inline constexpr int kSlowRenderSize = 2048;
 std::future<httplib::Result> start_slow_render(const ServerProcess& server, double seconds = 1.0);
 
+// The value of the /metrics series `series` (a name with its labels, exactly as the server
+// writes it): 0 when the series is absent, -1 when /metrics does not answer 200.
+double metric(const ServerProcess& server, const std::string& series);
+
+// Polls /metrics until `series` has `value` or 30 s pass: for counters and gauges that a
+// server thread updates after the response a test waited on.
+bool wait_for_metric(const ServerProcess& server, const std::string& series, double value);
+
 // Every key of `example` is in `actual` with a value of the same JSON type, recursively;
 // array elements of `actual` are compared with the example's first element.
 ::testing::AssertionResult has_shape_of(const nlohmann::json& example, const nlohmann::json& actual);

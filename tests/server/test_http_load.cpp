@@ -10,30 +10,10 @@
 #include <atomic>
 #include <future>
 #include <mutex>
-#include <regex>
 #include <thread>
 
 namespace server_test {
 namespace {
-
-double metric(ServerProcess& server, const std::string& series) {
-  const auto r = server.client()->Get("/metrics");
-  if (!r || r->status != 200) return -1;
-  const std::regex line("(^|\n)" + std::regex_replace(series, std::regex(R"([{}\[\]().+*?^$|\\])"), R"(\$&)") +
-                        " ([0-9.e+-]+)");
-  std::smatch m;
-  return std::regex_search(r->body, m, line) ? std::stod(m[2]) : 0.0;
-}
-
-// Polls until `series` reaches `value` or 30 s pass.
-bool wait_for_metric(ServerProcess& server, const std::string& series, double value) {
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (std::chrono::steady_clock::now() < give_up) {
-    if (metric(server, series) == value) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return false;
-}
 
 TEST(LoadOverload, ManyClientsGetOnly200Or503AndTheServerStaysHealthy) {
   ServerProcess server({"--queue", "2", "--threads", "32"});

@@ -214,17 +214,6 @@ TEST(HttpScenes, TheSameBytesTwiceAreOneScene) {
   EXPECT_TRUE(renders_png(render(*http, id)));
 }
 
-// Polls /metrics for up to 30 s until it has the line `series_and_value`.
-bool wait_for_metric(const ServerProcess& server, const std::string& series_and_value) {
-  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (std::chrono::steady_clock::now() < give_up) {
-    const auto r = server.client()->Get("/metrics");
-    if (r && r->body.find("\n" + series_and_value + "\n") != std::string::npos) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return false;
-}
-
 TEST(HttpScenes, ADeletedSceneIsNotRenderedFromAWorkersCache) {
   ServerProcess server;
   auto http = server.client();
@@ -237,9 +226,9 @@ TEST(HttpScenes, ADeletedSceneIsNotRenderedFromAWorkersCache) {
   // A render of it waits behind a slow one while the scene is deleted: it got past the
   // check before queueing, so the worker must see the deletion itself.
   auto slow = start_slow_render(server);
-  ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight 1"));
+  ASSERT_TRUE(wait_for_metric(server, "lpv_renders_in_flight", 1));
   auto queued = std::async(std::launch::async, [&] { return render(*server.client(), id); });
-  ASSERT_TRUE(wait_for_metric(server, "lpv_render_queue_depth 1"));
+  ASSERT_TRUE(wait_for_metric(server, "lpv_render_queue_depth", 1));
   ASSERT_EQ(http->Delete("/v1/scenes/" + id)->status, 204);
   EXPECT_TRUE(is_json_error(queued.get(), 404, "scene_not_found", "scene"));
   EXPECT_EQ(slow.get()->status, 200);
