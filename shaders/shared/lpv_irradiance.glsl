@@ -23,12 +23,14 @@ vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
 // the centres of the border cells, so the filter never mixes in the next cascade, stacked
 // above this one in the same buffers.
 //
-// Neighbouring pixels mostly filter the same 8 cells (a cell spans many pixels). When every
-// lane of the subgroup does, and all lanes run, lane k loads corner k mod 8 and the others
-// take it by shuffle: 3 texel loads a lane instead of 24. lavapipe runs a texel load as a call
-// over the lanes, a shuffle by a constant lane as one permute, and branches for real on a
-// condition every lane shares (Mesa 25). The values and the sums are the same either way, so
-// the picture is too, bit for bit.
+// Neighbouring pixels mostly filter the same 8 cells (a cell spans many pixels), or one of two
+// sets of 8 where the subgroup's pixels straddle a cell's boundary. When every lane of the
+// subgroup filters set A or set B (the lowest corners of the subgroup's smallest and largest
+// texel index) and all lanes run, lane k loads corner k mod 8 of both sets and every lane
+// takes its 8 corners from them by shuffles: 6 texel loads a lane instead of 24. lavapipe runs
+// a texel load as a call over the lanes, a shuffle by a constant lane as one permute, and
+// branches for real on a condition every lane shares (Mesa 25). The values and the sums are
+// the same either way, so the picture is too, bit for bit.
 vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   GpuLpvCascade g = lpv.cascades[c];
   ivec3 last = ivec3(g.dims.xyz) - 1;
@@ -38,13 +40,26 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   ivec3 high = min(low + 1, last);
   vec4 lobe = sh_cosine_lobe(-n);
   vec3 e = vec3(0.0);
-  if (gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize && subgroupAllEqual(low)) {
-    int mine = lpv_accumulated_texel(mix(low, high, corner_step(gl_SubgroupInvocationID & 7u)), c, g.dims.xyz);
-    vec4 red = imageLoad(accumulated_r, mine), green = imageLoad(accumulated_g, mine), blue = imageLoad(accumulated_b, mine);
+  int key = lpv_accumulated_texel(low, c, g.dims.xyz);
+  int key_a = subgroupMin(key), key_b = subgroupMax(key);
+  bool all_run = gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize;
+  if (all_run && subgroupAll(key == key_a || key == key_b)) {
+    ivec3 low_a = subgroupShuffle(low, subgroupMin(key == key_a ? gl_SubgroupInvocationID : gl_SubgroupSize));
+    ivec3 low_b = subgroupShuffle(low, subgroupMin(key == key_b ? gl_SubgroupInvocationID : gl_SubgroupSize));
+    bvec3 step = corner_step(gl_SubgroupInvocationID & 7u);
+    int mine_a = lpv_accumulated_texel(mix(low_a, min(low_a + 1, last), step), c, g.dims.xyz);
+    int mine_b = lpv_accumulated_texel(mix(low_b, min(low_b + 1, last), step), c, g.dims.xyz);
+    vec4 red_a = imageLoad(accumulated_r, mine_a), green_a = imageLoad(accumulated_g, mine_a),
+         blue_a = imageLoad(accumulated_b, mine_a);
+    vec4 red_b = imageLoad(accumulated_r, mine_b), green_b = imageLoad(accumulated_g, mine_b),
+         blue_b = imageLoad(accumulated_b, mine_b);
+    bool in_a = key == key_a;
     for (uint corner = 0u; corner < 8u; ++corner) {
       vec3 w3 = mix(1.0 - f, f, corner_step(corner));
-      e += (w3.x * w3.y * w3.z) * cell_irradiance(subgroupShuffle(red, corner), subgroupShuffle(green, corner),
-                                                  subgroupShuffle(blue, corner), lobe);
+      vec4 red = in_a ? subgroupShuffle(red_a, corner) : subgroupShuffle(red_b, corner);
+      vec4 green = in_a ? subgroupShuffle(green_a, corner) : subgroupShuffle(green_b, corner);
+      vec4 blue = in_a ? subgroupShuffle(blue_a, corner) : subgroupShuffle(blue_b, corner);
+      e += (w3.x * w3.y * w3.z) * cell_irradiance(red, green, blue, lobe);
     }
   } else {
     for (uint corner = 0u; corner < 8u; ++corner) {

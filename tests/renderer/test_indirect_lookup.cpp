@@ -2,9 +2,10 @@
 // same maths on the host: every pixel of the `indirect` view equals albedo / pi times the
 // irradiance from the read-back accumulated grids at the pixel's surface point. The point,
 // normal and albedo come from the `depth`, `normal` and `albedo` views of the same camera.
-// The lookup shares the 8 cells between the lanes of a subgroup when all of them filter the
-// same ones, and loads them itself otherwise; a coarse grid at 256^2 takes the shared path
-// for most pixels, a fine one mostly the other, so both are held to the host's numbers.
+// The lookup shares the cells between the lanes of a subgroup when all of them filter one of
+// two sets of 8, and loads them lane by lane otherwise; at 256^2 a coarse grid takes the shared
+// path nearly everywhere (one set, or two across a cell's boundary) and a 64^3 grid, whose
+// cells are 3 to 4 pixels wide, mostly the other, so both are held to the host's numbers.
 #include "gpu_test.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 
@@ -115,6 +116,8 @@ void expect_lookup_matches_the_host(glm::uvec3 grid, std::uint32_t cascades) {
 
 TEST_F(IndirectLookup, CoarseGridMostPixelsShareTheirCells) { expect_lookup_matches_the_host(glm::uvec3(8), 1); }
 
-TEST_F(IndirectLookup, FineGridsAndTwoCascades) { expect_lookup_matches_the_host(glm::uvec3(24, 32, 16), 2); }
+TEST_F(IndirectLookup, UnevenGridAndTwoCascades) { expect_lookup_matches_the_host(glm::uvec3(24, 32, 16), 2); }
+
+TEST_F(IndirectLookup, FineGridMostPixelsLoadTheirOwnCells) { expect_lookup_matches_the_host(glm::uvec3(64), 1); }
 
 }  // namespace
