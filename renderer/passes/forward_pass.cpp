@@ -38,7 +38,7 @@ const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const Direct
     g.vertex_spirv = spirv_gbuffer_vert;
     g.fragment_spirv = spirv_forward_frag;
     g.fragment_specialization = {variant.double_sided, variant.textured, direct.light_kinds,
-                                 specialised_light_count(direct), curve, cascades};
+                                 specialised_light_count(direct), curve, cascades, device_.info().uniform_branches};
     g.vertex_input = scene_vertex_input();
     g.color_formats = {FrameTargets::kDisplayFormat};
     g.depth_format = GBuffer::kDepthFormat;

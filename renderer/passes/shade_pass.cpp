@@ -27,7 +27,7 @@ const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
   const std::uint32_t key = (light_key << 10) | (curve << 8) | (in.outputs << 6) | (cascades << 3) | in.view;
   return variants_.get(key, [&] {
     const std::uint32_t constants[] = {cascades,   in.view, in.direct.light_kinds, specialised_light_count(in.direct),
-                                       in.outputs, curve};
+                                       in.outputs, curve,   device_.info().uniform_branches};
     return vkx::Pipeline(device_, layout_, spirv_shade_comp, constants);
   });
 }

@@ -54,6 +54,7 @@ DeviceInfo describe(VkPhysicalDevice physical) {
   info.type = props.properties.deviceType;
   info.timestamp_period_ns = props.properties.limits.timestampPeriod;
   info.limits = props.properties.limits;
+  info.uniform_branches = runs_uniform_branches(driver.driverID, driver.driverInfo);
   return info;
 }
 
@@ -132,6 +133,14 @@ std::vector<DeviceInfo> Device::enumerate() {
   }
   vkDestroyInstance(instance, nullptr);
   return infos;
+}
+
+bool runs_uniform_branches(VkDriverId driver, const std::string& driver_info) {
+  if (driver != VK_DRIVER_ID_MESA_LLVMPIPE) return true;
+  // lavapipe reports 1 as its driverVersion whatever the release: Mesa's major version is read
+  // from its info, "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)".
+  int major = 0;
+  return std::sscanf(driver_info.c_str(), "Mesa %d", &major) == 1 && major >= 25;
 }
 
 Device::Device(const DeviceOptions& options) : options_(options) {

@@ -37,7 +37,15 @@ struct DeviceInfo {
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
   double timestamp_period_ns = 1.0;
   VkPhysicalDeviceLimits limits{};
+  // Runs only the taken side of a branch whose condition every lane of a subgroup shares.
+  // lavapipe before Mesa 25 runs both sides under a lane mask (measured on 22.3, docs/lpv.md
+  // "The driver"), so a shader's shortcut behind such a branch costs there instead of paying.
+  bool uniform_branches = true;
 };
+
+// DeviceInfo::uniform_branches for a driver: false for lavapipe before Mesa 25 (measured on
+// 22.3 and 25.0 only; a Mesa version it cannot read counts as old).
+bool runs_uniform_branches(VkDriverId driver, const std::string& driver_info);
 
 class Device {
  public:

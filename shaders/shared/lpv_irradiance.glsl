@@ -3,6 +3,8 @@
 // before the include:
 //   CASCADES (uint)   the cascades of indirect light (a specialization constant, so the
 //                     cascade loop has a constant length and is unrolled),
+//   UNIFORM_BRANCHES (bool) whether the device branches for real on a condition every lane
+//                     of a subgroup shares (a specialization constant),
 //   lpv (GpuLpv), accumulated_r, accumulated_g, accumulated_b (imageBuffer, rgba32f;
 //                     lpv_accumulated_texel's layout), and includes lpv_sh.h and lpv_grid.glsl,
 //                     and enables GL_KHR_shader_subgroup_arithmetic, _vote and _shuffle.
@@ -29,8 +31,10 @@ vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
 // texel index) and all lanes run, lane k loads corner k mod 8 of both sets and every lane
 // takes its 8 corners from them by shuffles: 6 texel loads a lane instead of 24. lavapipe runs
 // a texel load as a call over the lanes, a shuffle by a constant lane as one permute, and
-// branches for real on a condition every lane shares (Mesa 25). The values and the sums are
-// the same either way, so the picture is too, bit for bit.
+// branches for real on a condition every lane shares (Mesa 25). A device that runs both sides
+// of such a branch (lavapipe before Mesa 25: the forward pass 2.3 times slower on 22.3) would
+// pay for both paths, so there each lane loads its own (UNIFORM_BRANCHES). The values and the
+// sums are the same either way, so the picture is too, bit for bit.
 vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   GpuLpvCascade g = lpv.cascades[c];
   ivec3 last = ivec3(g.dims.xyz) - 1;
@@ -41,9 +45,14 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   vec4 lobe = sh_cosine_lobe(-n);
   vec3 e = vec3(0.0);
   int key = lpv_accumulated_texel(low, c, g.dims.xyz);
-  int key_a = subgroupMin(key), key_b = subgroupMax(key);
-  bool all_run = gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize;
-  if (all_run && subgroupAll(key == key_a || key == key_b)) {
+  int key_a = key, key_b = key;
+  bool shared_cells = false;
+  if (UNIFORM_BRANCHES) {
+    key_a = subgroupMin(key);
+    key_b = subgroupMax(key);
+    shared_cells = gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize && subgroupAll(key == key_a || key == key_b);
+  }
+  if (shared_cells) {
     ivec3 low_a = subgroupShuffle(low, subgroupMin(key == key_a ? gl_SubgroupInvocationID : gl_SubgroupSize));
     ivec3 low_b = subgroupShuffle(low, subgroupMin(key == key_b ? gl_SubgroupInvocationID : gl_SubgroupSize));
     bvec3 step = corner_step(gl_SubgroupInvocationID & 7u);

@@ -49,6 +49,19 @@ TEST(DeviceSelection, DefaultIsTheCpuDeviceWhenPresent) {
   EXPECT_GE(device.info().api_version, VK_API_VERSION_1_2);
 }
 
+TEST(DeviceInfo, LavapipeBeforeMesa25RunsBothSidesOfAUniformBranch) {
+  EXPECT_TRUE(vkx::runs_uniform_branches(VK_DRIVER_ID_MESA_LLVMPIPE, "Mesa 25.0.7-2~bpo12+1 (LLVM 15.0.6)"));
+  EXPECT_TRUE(vkx::runs_uniform_branches(VK_DRIVER_ID_MESA_LLVMPIPE, "Mesa 26.1.0"));
+  EXPECT_FALSE(vkx::runs_uniform_branches(VK_DRIVER_ID_MESA_LLVMPIPE, "Mesa 22.3.6 (LLVM 15.0.6)"));
+  EXPECT_FALSE(vkx::runs_uniform_branches(VK_DRIVER_ID_MESA_LLVMPIPE, "llvmpipe, version unknown"));
+  EXPECT_TRUE(vkx::runs_uniform_branches(VK_DRIVER_ID_NVIDIA_PROPRIETARY, "580.159.04"));
+  // What this machine's lavapipe says: install-deps.sh installs Mesa 25 or later.
+  const auto& info = gpu_test::device().info();
+  if (info.type == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+    EXPECT_TRUE(info.uniform_branches) << info.driver << ": the shared lookup of the indirect light is off";
+  }
+}
+
 TEST(PipelineCache, IsWrittenOnExitAndACorruptFileIsIgnored) {
   const auto dir = std::filesystem::temp_directory_path() / ("lpv-cache-test-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
