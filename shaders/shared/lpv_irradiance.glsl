@@ -14,6 +14,14 @@
 // Which of the 8 cells around a point corner k is: one step up along x, y, z for bits 0, 1, 2.
 bvec3 corner_step(uint k) { return bvec3(k & 1u, k & 2u, k & 4u); }
 
+// Corner k of set A or of set B, whichever this lane filters. Every lane shuffles both, and
+// only then chooses: a shuffle reads the value of a lane that runs it, and a lane that took
+// the other side of a branch would not.
+vec4 shared_corner(vec4 of_a, vec4 of_b, uint k, bool in_a) {
+  vec4 a = subgroupShuffle(of_a, k), b = subgroupShuffle(of_b, k);
+  return in_a ? a : b;
+}
+
 // The intensity of one cell, per channel, against a cosine lobe.
 vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
   return vec3(dot(red, lobe), dot(green, lobe), dot(blue, lobe));
@@ -65,10 +73,9 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     bool in_a = key == key_a;
     for (uint corner = 0u; corner < 8u; ++corner) {
       vec3 w3 = mix(1.0 - f, f, corner_step(corner));
-      vec4 red = in_a ? subgroupShuffle(red_a, corner) : subgroupShuffle(red_b, corner);
-      vec4 green = in_a ? subgroupShuffle(green_a, corner) : subgroupShuffle(green_b, corner);
-      vec4 blue = in_a ? subgroupShuffle(blue_a, corner) : subgroupShuffle(blue_b, corner);
-      e += (w3.x * w3.y * w3.z) * cell_irradiance(red, green, blue, lobe);
+      e += (w3.x * w3.y * w3.z) * cell_irradiance(shared_corner(red_a, red_b, corner, in_a),
+                                                  shared_corner(green_a, green_b, corner, in_a),
+                                                  shared_corner(blue_a, blue_b, corner, in_a), lobe);
     }
   } else {
     for (uint corner = 0u; corner < 8u; ++corner) {
