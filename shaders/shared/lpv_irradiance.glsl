@@ -56,6 +56,8 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   int key_a = key, key_b = key;
   bool shared_cells = false;
   if (UNIFORM_BRANCHES) {
+    // Each condition of the && is the same in every lane, so the lanes that run the first
+    // all run the subgroup operations after it.
     key_a = subgroupMin(key);
     key_b = subgroupMax(key);
     shared_cells = gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize && subgroupAll(key == key_a || key == key_b);
