@@ -7,9 +7,6 @@
 // the lighting in about a third of the time the compute shading takes, and the frame writes
 // one 4-byte target instead of the G-buffer's 32 bytes a pixel and reads none of it back.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
-#extension GL_KHR_shader_subgroup_vote : require
-#extension GL_KHR_shader_subgroup_shuffle : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
@@ -19,9 +16,6 @@ layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits o
 layout(constant_id = 3) const uint LIGHT_COUNT = SHADE_LIGHTS_FROM_FRAME;
 layout(constant_id = 4) const uint TONE_CURVE = TONEMAP_NONE;
 layout(constant_id = 5) const uint CASCADES = 0u;  // of indirect light; 0: none
-// The device runs only the taken side of a branch every lane of a subgroup agrees on
-// (DeviceInfo::uniform_branches); lpv_irradiance.glsl shares its cells between lanes only then.
-layout(constant_id = 6) const bool UNIFORM_BRANCHES = true;
 
 layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
 layout(set = 0, binding = 1) uniform sampler2DArrayShadow shadow_maps;

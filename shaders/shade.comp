@@ -6,9 +6,6 @@
 // its own saves that pass's reading back of the linear image: 1.9 ms of a 512^2 frame on
 // lavapipe, and a PNG frame writes no linear image at all.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
-#extension GL_KHR_shader_subgroup_vote : require
-#extension GL_KHR_shader_subgroup_shuffle : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
@@ -30,9 +27,6 @@ layout(constant_id = 2) const uint LIGHT_KINDS = LIGHTS_ALL;  // LIGHTS_* bits o
 layout(constant_id = 3) const uint LIGHT_COUNT = SHADE_LIGHTS_FROM_FRAME;
 layout(constant_id = 4) const uint OUTPUTS = SHADE_OUTPUT_LINEAR;  // SHADE_OUTPUT_* bits
 layout(constant_id = 5) const uint TONE_CURVE = TONEMAP_NONE;      // of the display image
-// The device runs only the taken side of a branch every lane of a subgroup agrees on
-// (DeviceInfo::uniform_branches); lpv_irradiance.glsl shares its cells between lanes only then.
-layout(constant_id = 6) const bool UNIFORM_BRANCHES = true;
 
 layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
 layout(set = 0, binding = 1, rgba32f) uniform readonly image2D g_position;

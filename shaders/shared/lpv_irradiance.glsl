@@ -3,13 +3,19 @@
 // before the include:
 //   CASCADES (uint)   the cascades of indirect light (a specialization constant, so the
 //                     cascade loop has a constant length and is unrolled),
-//   UNIFORM_BRANCHES (bool) whether the device branches for real on a condition every lane
-//                     of a subgroup shares (a specialization constant),
 //   lpv (GpuLpv), accumulated_r, accumulated_g, accumulated_b (imageBuffer, rgba32f;
-//                     lpv_accumulated_texel's layout), and includes lpv_sh.h and lpv_grid.glsl,
-//                     and enables GL_KHR_shader_subgroup_arithmetic, _vote and _shuffle.
+//                     lpv_accumulated_texel's layout), and includes lpv_sh.h and lpv_grid.glsl;
+// and leaves specialization constant 6 to this file (UNIFORM_BRANCHES).
 #ifndef LPV_IRRADIANCE_GLSL
 #define LPV_IRRADIANCE_GLSL
+
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_shuffle : require
+
+// The device runs only the taken side of a branch every lane of a subgroup agrees on
+// (DeviceInfo::uniform_branches): the lookup below shares its cells between lanes only then.
+layout(constant_id = 6) const bool UNIFORM_BRANCHES = true;
 
 // Which of the 8 cells around a point corner k is: one step up along x, y, z for bits 0, 1, 2.
 bvec3 corner_step(uint k) { return bvec3(k & 1u, k & 2u, k & 4u); }
