@@ -7,7 +7,7 @@
 // path nearly everywhere (one set, or two across a cell's boundary) and a 64^3 grid, whose
 // cells are 3 to 4 pixels wide, mostly the other, so both are held to the host's numbers.
 #include "gpu_test.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "lpv_snapshot_grid.hpp"
 
 #define LPV_SH_DOUBLE
 #include "shaders/shared/lpv_sh.h"
@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 namespace {
 
@@ -22,22 +23,22 @@ class IndirectLookup : public gpu_test::GpuTest {};
 
 constexpr std::uint32_t kSize = 256;
 
-// Irradiance at p (normal n) from one cascade, as cascade_irradiance computes it: trilinear
-// between cell centres (clamped to the border cells' centres), then <I, cosine lobe of -n> / s^2.
-glm::dvec3 cascade_irradiance(const renderer::LpvSnapshot::Cascade& c, glm::dvec3 q, glm::dvec3 n) {
-  const glm::dvec3 last = glm::dvec3(c.dims) - 1.0;
-  const glm::dvec3 t = glm::clamp(q - 0.5, glm::dvec3(0.0), last);
-  const glm::uvec3 low(t);
+// Irradiance at p (normal n) from one cascade (its accumulated light `grid`), as
+// cascade_irradiance computes it: trilinear between cell centres (clamped to the border
+// cells' centres), then <I, cosine lobe of -n> / s^2.
+glm::dvec3 cascade_irradiance(const renderer::LpvSnapshot::Cascade& c, const lpv_ref::GridD& grid, glm::dvec3 q,
+                              glm::dvec3 n) {
+  const glm::dvec3 t = glm::clamp(q - 0.5, glm::dvec3(0.0), glm::dvec3(grid.dims - 1));
+  const glm::ivec3 low(t);
   const glm::dvec3 f = t - glm::dvec3(low);
-  const glm::uvec3 high = glm::min(low + 1u, c.dims - 1u);
+  const glm::ivec3 high = glm::min(low + 1, grid.dims - 1);
   const glm::dvec4 lobe = gpu_double::sh_cosine_lobe(-n);
   glm::dvec3 e(0.0);
   for (unsigned corner = 0; corner < 8; ++corner) {
     const glm::bvec3 up(corner & 1u, corner & 2u, corner & 4u);
-    const glm::uvec3 cell(up.x ? high.x : low.x, up.y ? high.y : low.y, up.z ? high.z : low.z);
+    const glm::ivec3 cell(up.x ? high.x : low.x, up.y ? high.y : low.y, up.z ? high.z : low.z);
     const double w = (up.x ? f.x : 1.0 - f.x) * (up.y ? f.y : 1.0 - f.y) * (up.z ? f.z : 1.0 - f.z);
-    const std::size_t index = cell.x + std::size_t(c.dims.x) * (cell.y + std::size_t(c.dims.y) * cell.z);
-    for (int k = 0; k < 3; ++k) e[k] += w * glm::dot(glm::dvec4(c.accumulated[3 * index + k]), lobe);
+    for (int k = 0; k < 3; ++k) e[k] += w * glm::dot(grid.at(cell, k), lobe);
   }
   const double s = c.cell_size;
   return glm::max(e, glm::dvec3(0.0)) / (s * s);
@@ -45,7 +46,8 @@ glm::dvec3 cascade_irradiance(const renderer::LpvSnapshot::Cascade& c, glm::dvec
 
 // Irradiance at p as indirect_irradiance computes it: the finest cascade holding p + s/2 n,
 // handing over to the next coarser one across its border band of 2 cells.
-glm::dvec3 indirect_irradiance(const renderer::LpvSnapshot& lpv, glm::dvec3 p, glm::dvec3 n) {
+glm::dvec3 indirect_irradiance(const renderer::LpvSnapshot& lpv, const std::vector<lpv_ref::GridD>& grids,
+                               glm::dvec3 p, glm::dvec3 n) {
   glm::dvec3 e(0.0);
   double remaining = 1.0;
   for (std::size_t i = 0; i < lpv.cascades.size(); ++i) {
@@ -55,7 +57,7 @@ glm::dvec3 indirect_irradiance(const renderer::LpvSnapshot& lpv, glm::dvec3 p, g
     const double inside = std::min({q.x, q.y, q.z, to_max.x, to_max.y, to_max.z});
     if (inside < 0.0) continue;
     const double w = i + 1 == lpv.cascades.size() ? 1.0 : std::clamp(inside / 2.0, 0.0, 1.0);
-    e += remaining * w * cascade_irradiance(c, q, n);
+    e += remaining * w * cascade_irradiance(c, grids[i], q, n);
     remaining *= 1.0 - w;
   }
   return e;
@@ -82,6 +84,8 @@ void expect_lookup_matches_the_host(glm::uvec3 grid, std::uint32_t cascades) {
   ASSERT_EQ(indirect.lpv.cascades.size(), cascades);
   gpu_test::save_artifact("indirect_lookup", indirect.linear);
 
+  std::vector<lpv_ref::GridD> grids;
+  for (const auto& c : indirect.lpv.cascades) grids.push_back(gpu_test::grid_of(c));
   const scene::Scene& scene = renderer.scene("cornell-box");
   const auto camera = renderer::setup_camera(scene.camera, scene.bounds, 1.0f);
   const glm::dmat4 unproject = glm::inverse(glm::dmat4(camera.view_proj));
@@ -99,14 +103,14 @@ void expect_lookup_matches_the_host(glm::uvec3 grid, std::uint32_t cascades) {
       const glm::dvec3 p = glm::dvec3(camera.position) + ray * (distance / glm::dot(ray, glm::dvec3(camera.forward)));
       const glm::dvec3 n = glm::normalize(glm::dvec3(gpu_test::pixel(normal, x, y)) * 2.0 - 1.0);
       const glm::dvec3 expected =
-          glm::dvec3(gpu_test::pixel(albedo, x, y)) / double(gpu_test::kPi) * indirect_irradiance(indirect.lpv, p, n);
+          glm::dvec3(gpu_test::pixel(albedo, x, y)) / double(gpu_test::kPi) * indirect_irradiance(indirect.lpv, grids, p, n);
       const glm::dvec3 got(gpu_test::pixel(indirect.linear, x, y));
       brightest = std::max({brightest, expected.r, expected.g, expected.b});
       worst = std::max(worst, glm::length(got - expected) / std::sqrt(3.0));
     }
   }
-  std::printf("grid %u, %u cascade(s): %zu surface pixels, largest difference %.2e of the brightest %.3e\n", grid.x,
-              cascades, surface_pixels, worst / brightest, brightest);
+  std::printf("grid %ux%ux%u, %u cascade(s): %zu surface pixels, largest difference %.2e of the brightest %.3e\n",
+              grid.x, grid.y, grid.z, cascades, surface_pixels, worst / brightest, brightest);
   ASSERT_GT(surface_pixels, kSize * kSize / 2);
   ASSERT_GT(brightest, 0.0) << "no indirect light to compare";
   // The host's point is the depth view's, which is rounded differently from the G-buffer's

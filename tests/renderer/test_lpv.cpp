@@ -3,6 +3,7 @@
 // must show (indirect light where direct light does not reach, colour bleeding).
 #include "gpu_test.hpp"
 #include "lpv_cpu_reference.hpp"
+#include "lpv_snapshot_grid.hpp"
 #include "renderer/gpu_types.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 
@@ -13,6 +14,8 @@
 #include <memory>
 
 namespace {
+
+using gpu_test::grid_of;
 
 class Lpv : public gpu_test::GpuTest {};
 
@@ -70,13 +73,6 @@ api::RenderRequest small_grid_request(std::uint32_t iterations) {
   r.lpv.iterations = iterations;
   r.lpv.occlusion = false;
   return r;
-}
-
-// The GPU's grid (float) in the double precision of the reference it is measured against.
-lpv_ref::GridD grid_of(const renderer::LpvSnapshot::Cascade& cascade) {
-  lpv_ref::GridD g{glm::ivec3(cascade.dims)};
-  for (std::size_t i = 0; i < g.sh.size(); ++i) g.sh[i] = glm::dvec4(cascade.accumulated[i]);
-  return g;
 }
 
 // Largest difference of two grids, relative to the largest coefficient.
