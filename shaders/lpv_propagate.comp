@@ -59,11 +59,10 @@ layout(constant_id = 2) const uint COLUMN_LENGTH = LPV_PROPAGATE_COLUMN_CPU;
 #include "shared/lpv_grid_flux.glsl"
 
 // The gathered lobe weights w (axes' order: constant, x, y, z) as the SH the cell holds,
-// (c0' w_0, -c1' w_y, c1' w_z, -c1' w_x) / pi with the cosine lobe's constants c0', c1', and
-// as what it sends (lpv_sender_form of that SH), a scale per term: (c0 c0', c1 c1' / sqrt(5)
-// (x3)) / pi. Its flux, 2 sqrt(pi) c0' w_0 / pi, is w_0 itself.
+// (c0' w_0, -c1' w_y, c1' w_z, -c1' w_x) / pi with the cosine lobe's constants c0', c1' (one
+// product, where a division by pi would stay a division on lavapipe). Its flux,
+// 2 sqrt(pi) c0' w_0 / pi, is w_0 itself.
 const vec2 LOBE_TO_SH = vec2(SH_COSINE_C0, SH_COSINE_C1) / LPV_PI;
-const vec4 LOBE_TO_SENDER = vec4(SH_C0 * SH_COSINE_C0, vec3(SH_C1 * SH_COSINE_C1 * LPV_INV_SQRT5)) / LPV_PI;
 
 // What a cell sends, per colour channel, in sender form; zero for a cell past the grid's edge.
 struct Sender {
@@ -283,7 +282,7 @@ void main() {
         sh[c] = vec4(w.x, -w.z, w.w, -w.y) * LOBE_TO_SH.xyyy;
         // What this cell sends in the next iteration, times the outgoing scale, so that its
         // face fluxes, negative ones dropped, add up to its flux (see lpv_outgoing_scale).
-        vec4 sent = w * LOBE_TO_SENDER;
+        vec4 sent = lpv_sender_form(sh[c]);
         grid_store[texel + c] = texel_bits(sent * lpv_sender_outgoing_scale(sent));
         column_flux[c] += w.x;
       }
