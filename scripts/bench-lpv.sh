@@ -23,7 +23,7 @@ cd "$work"
 # Renders cornell-box with the given output size, grid and iterations (plan "exact": at 16^3
 # the planner would lower the RSM to 128, docs/planner.md) and prints the summary's second
 # line: "gpu T ms (median): shadow a rsm b ... propagate p ...".
-device_ms() {
+summary_line() {
   local size=$1 grid=$2 iterations=$3 out
   echo "{\"output\": {\"width\": $size, \"height\": $size}, \"repeat\": 10, \"plan\": \"exact\",
          \"lpv\": {\"grid\": $grid, \"iterations\": $iterations}}" >request.json
@@ -48,7 +48,7 @@ if [ "$mode" = scaling ]; then
   iterations=16
   printf '%-6s %-8s %-14s %-9s %s\n' grid cells "propagate ms" "us/step" "ns/cell-iteration"
   for grid in 4 8 16 24 32 40 48 56 64; do
-    line=$(device_ms 64 "$grid" "$iterations")
+    line=$(summary_line 64 "$grid" "$iterations")
     p=$(propagate_ms <<<"$line")
     awk -v g="$grid" -v n="$iterations" -v p="$p" 'BEGIN {
       cells = g * g * g
@@ -60,7 +60,7 @@ fi
 printf '%-6s %-5s %s\n' grid iters "per-pass device ms (median of 10 frames) | propagation throughput"
 for grid in 16 32 64; do
   for iterations in 4 8 16; do
-    line=$(device_ms 512 "$grid" "$iterations")
+    line=$(summary_line 512 "$grid" "$iterations")
     p=$(propagate_ms <<<"$line")
     awk -v g="$grid" -v n="$iterations" -v p="$p" -v line="$line" 'BEGIN {
       sub(/^ +gpu /, "total ", line)
