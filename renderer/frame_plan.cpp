@@ -12,8 +12,6 @@ namespace {
 // 1% of the indirect light on the built-in scenes (docs/planner.md); once loses 6%.
 constexpr float kCrossings = 2.0f;
 
-constexpr float kBlendCells = 2.0f;
-
 // RSM texels per cell side, at the farthest point of the scene a light view sees. 2 gives
 // the same error against the path-traced reference (within 0.2% on the built-in scenes),
 // but fewer, brighter VPLs make the image jump when a light moves by a hair (a texel's
@@ -149,9 +147,9 @@ scene::Bounds lpv_region(const scene::Scene& scene, const std::vector<bool>& see
 
 std::uint32_t cascades_needed(const std::vector<CascadePlacement>& cascades, const scene::Bounds& bounds) {
   for (std::uint32_t c = 0; c + 1 < cascades.size(); ++c) {
-    // Shading samples half a cell off the surface and blends over the last kBlendCells
-    // (LPV_BLEND_CELLS in shaders/shared/lpv_grid.glsl) of a cascade.
-    const float margin = (kBlendCells + 0.5f) * cascades[c].cell_size;
+    // Shading samples half a cell off the surface and blends over the last LPV_BLEND_CELLS
+    // of a cascade.
+    const float margin = (float(gpu::LPV_BLEND_CELLS) + 0.5f) * cascades[c].cell_size;
     const glm::vec3 lo = cascades[c].origin + margin;
     const glm::vec3 hi = cascades[c].origin + glm::vec3(cascades[c].dims) * cascades[c].cell_size - margin;
     if (glm::all(glm::lessThanEqual(lo, bounds.min)) && glm::all(glm::lessThanEqual(bounds.max, hi))) return c + 1;

@@ -107,6 +107,9 @@ struct GpuFrame {
 // ---- Light Propagation Volumes ----
 
 LPV_CONST LPV_MAX_CASCADES = 4u;
+// Cells at a cascade's border over which the shading hands over to the next coarser one
+// (lpv_irradiance.glsl); the planner keeps the scene that far inside (frame_plan.cpp).
+LPV_CONST LPV_BLEND_CELLS = 2u;
 LPV_CONST LPV_GROUP = 4u;         // grid passes: work groups of 4 x 4 x 4 cells
 // Propagation: work groups of 8 x 8 invocations, each walking a column of cells along z: 8 on
 // a CPU device, 2 on a GPU (a specialization constant; LpvPropagatePass says why).

@@ -34,7 +34,4 @@ int lpv_face_albedo_texel(ivec3 cell, int k, uvec3 dims) {
   return 3 * int(dims.x * dims.y * dims.z + lpv_cell_index(uvec3(cell), dims)) + k;
 }
 
-// Width of the band at a cascade's border over which it hands over to the next coarser one.
-const float LPV_BLEND_CELLS = 2.0;
-
 #endif

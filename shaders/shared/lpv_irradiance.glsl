@@ -108,7 +108,7 @@ vec3 indirect_irradiance(vec3 p, vec3 n) {
     vec3 q = lpv_grid_position(g, p + 0.5 * g.origin.w * n);
     float inside = lpv_inside_distance(g, q);
     if (inside < 0.0) continue;
-    float w = c + 1u == CASCADES ? 1.0 : clamp(inside / LPV_BLEND_CELLS, 0.0, 1.0);
+    float w = c + 1u == CASCADES ? 1.0 : clamp(inside / float(LPV_BLEND_CELLS), 0.0, 1.0);
     if (w == 0.0) continue;
     e += remaining * w * cascade_irradiance(c, q, n);
     remaining *= 1.0 - w;

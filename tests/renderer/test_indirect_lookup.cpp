@@ -8,6 +8,7 @@
 // cells are 3 to 4 pixels wide, mostly the other, so both are held to the host's numbers.
 #include "gpu_test.hpp"
 #include "lpv_snapshot_grid.hpp"
+#include "renderer/gpu_types.hpp"
 
 #define LPV_SH_DOUBLE
 #include "shaders/shared/lpv_sh.h"
@@ -45,7 +46,7 @@ glm::dvec3 cascade_irradiance(const renderer::LpvSnapshot::Cascade& c, const lpv
 }
 
 // Irradiance at p as indirect_irradiance computes it: the finest cascade holding p + s/2 n,
-// handing over to the next coarser one across its border band of 2 cells.
+// handing over to the next coarser one across its border band (LPV_BLEND_CELLS).
 glm::dvec3 indirect_irradiance(const renderer::LpvSnapshot& lpv, const std::vector<lpv_ref::GridD>& grids,
                                glm::dvec3 p, glm::dvec3 n) {
   glm::dvec3 e(0.0);
@@ -56,7 +57,7 @@ glm::dvec3 indirect_irradiance(const renderer::LpvSnapshot& lpv, const std::vect
     const glm::dvec3 to_max = glm::dvec3(c.dims) - q;
     const double inside = std::min({q.x, q.y, q.z, to_max.x, to_max.y, to_max.z});
     if (inside < 0.0) continue;
-    const double w = i + 1 == lpv.cascades.size() ? 1.0 : std::clamp(inside / 2.0, 0.0, 1.0);
+    const double w = i + 1 == lpv.cascades.size() ? 1.0 : std::clamp(inside / double(gpu::LPV_BLEND_CELLS), 0.0, 1.0);
     e += remaining * w * cascade_irradiance(c, grids[i], q, n);
     remaining *= 1.0 - w;
   }
@@ -82,7 +83,9 @@ void expect_lookup_matches_the_host(glm::uvec3 grid, std::uint32_t cascades) {
   const auto normal = renderer.render(view_request(api::View::normal, grid, cascades)).linear;
   const auto albedo = renderer.render(view_request(api::View::albedo, grid, cascades)).linear;
   ASSERT_EQ(indirect.lpv.cascades.size(), cascades);
-  gpu_test::save_artifact("indirect_lookup", indirect.linear);
+  const std::string name = std::to_string(grid.x) + "x" + std::to_string(grid.y) + "x" + std::to_string(grid.z) + "-" +
+                           std::to_string(cascades) + "-cascades";
+  gpu_test::save_artifact("indirect-lookup-" + name, indirect.linear);
 
   std::vector<lpv_ref::GridD> grids;
   for (const auto& c : indirect.lpv.cascades) grids.push_back(gpu_test::grid_of(c));
@@ -109,8 +112,8 @@ void expect_lookup_matches_the_host(glm::uvec3 grid, std::uint32_t cascades) {
       worst = std::max(worst, glm::length(got - expected) / std::sqrt(3.0));
     }
   }
-  std::printf("grid %ux%ux%u, %u cascade(s): %zu surface pixels, largest difference %.2e of the brightest %.3e\n",
-              grid.x, grid.y, grid.z, cascades, surface_pixels, worst / brightest, brightest);
+  std::printf("grid %s: %zu surface pixels, largest difference %.2e of the brightest %.3e\n", name.c_str(),
+              surface_pixels, worst / brightest, brightest);
   ASSERT_GT(surface_pixels, kSize * kSize / 2);
   ASSERT_GT(brightest, 0.0) << "no indirect light to compare";
   // The host's point is the depth view's, which is rounded differently from the G-buffer's
