@@ -6,9 +6,11 @@
 #                                   and propagation throughput in cell-iterations per second.
 #   scripts/bench-lpv.sh scaling    what one propagation step costs from 4^3 to 64^3 cells (16
 #                                   iterations, median of 10 frames): microseconds a step and
-#                                   nanoseconds a cell-iteration, which tell the fixed cost of a
-#                                   step (a dispatch and its barrier) from the cost of a cell, and
-#                                   show where the grids stop fitting the cache.
+#                                   nanoseconds a cell-iteration, with occlusion and without,
+#                                   which tell the fixed cost of a step (a dispatch and its
+#                                   barrier) from the cost of a cell and show where the grids
+#                                   stop fitting the cache; then what memcpy moves on two
+#                                   threads, to set the largest grids' traffic against.
 # Builds first if needed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -20,13 +22,13 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 
-# Renders cornell-box with the given output size, grid and iterations (plan "exact": at 16^3
-# the planner would lower the RSM to 128, docs/planner.md) and prints the summary's second
-# line: "gpu T ms (median): shadow a rsm b ... propagate p ...".
+# Renders cornell-box with the given output size, grid, iterations and occlusion (default
+# true; plan "exact": at 16^3 the planner would lower the RSM to 128, docs/planner.md) and
+# prints the summary's second line: "gpu T ms (median): shadow a rsm b ... propagate p ...".
 summary_line() {
-  local size=$1 grid=$2 iterations=$3 out
+  local size=$1 grid=$2 iterations=$3 occlusion=${4:-true} out
   echo "{\"output\": {\"width\": $size, \"height\": $size}, \"repeat\": 10, \"plan\": \"exact\",
-         \"lpv\": {\"grid\": $grid, \"iterations\": $iterations}}" >request.json
+         \"lpv\": {\"grid\": $grid, \"iterations\": $iterations, \"occlusion\": $occlusion}}" >request.json
   out=$("$bin" request.json -o frame.png 2>&1) || {
     echo "bench-lpv.sh: lpv-render failed (grid $grid, $iterations iterations):" >&2
     echo "$out" >&2
@@ -46,14 +48,40 @@ if [ "$mode" = scaling ]; then
   # 64x64 output: the forward pass is then a small part of each frame; propagation does not
   # depend on the output size.
   iterations=16
-  printf '%-6s %-8s %-14s %-9s %s\n' grid cells "propagate ms" "us/step" "ns/cell-iteration"
+  printf '%-15s %-24s %s\n' "" "occlusion on" "occlusion off"
+  printf '%-6s %-8s %-9s %-14s %-9s %s\n' grid cells us/step ns/cell-it us/step ns/cell-it
   for grid in 4 8 16 24 32 40 48 56 64; do
-    line=$(summary_line 64 "$grid" "$iterations")
-    p=$(propagate_ms <<<"$line")
-    awk -v g="$grid" -v n="$iterations" -v p="$p" 'BEGIN {
+    occluded=$(summary_line 64 "$grid" "$iterations" | propagate_ms)
+    open=$(summary_line 64 "$grid" "$iterations" false | propagate_ms)
+    awk -v g="$grid" -v n="$iterations" -v p="$occluded" -v q="$open" 'BEGIN {
       cells = g * g * g
-      printf "%-6s %-8d %-14.3f %-9.1f %.1f\n", g "^3", cells, p, p * 1000 / n, p * 1e6 / (cells * n) }'
+      printf "%-6s %-8d %-9.1f %-14.1f %-9.1f %.1f\n", g "^3", cells, p * 1000 / n, p * 1e6 / (cells * n),
+             q * 1000 / n, q * 1e6 / (cells * n) }'
   done
+  # The memory's bandwidth for the same two threads: 256 MB copied, halves in parallel, best of 5.
+  cat >memcpy.cpp <<'CPP'
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <thread>
+#include <vector>
+int main() {
+  const std::size_t n = std::size_t(256) << 20;
+  std::vector<char> a(n, 1), b(n, 2);
+  double best = 0;
+  for (int r = 0; r < 5; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    std::thread half([&] { std::memcpy(b.data(), a.data(), n / 2); });
+    std::memcpy(b.data() + n / 2, a.data() + n / 2, n / 2);
+    half.join();
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    best = std::max(best, 2.0 * n / s / 1e9);
+  }
+  std::printf("memcpy of 256 MB on 2 threads: %.1f GB/s read and written (best of 5)\n", best);
+}
+CPP
+  c++ -O2 -pthread memcpy.cpp -o memcpy && ./memcpy
   exit 0
 fi
 
