@@ -39,7 +39,7 @@ const char* type_name(const nlohmann::json& j) {
 
 }  // namespace
 
-std::future<httplib::Result> start_slow_render(const ServerProcess& server, double seconds) {
+std::future<httplib::Result> start_slow_render(const ServerProcess& server) {
   // Two frames, the faster one counted: the first also compiles the pipelines (2.5 times a
   // warm frame on lavapipe).
   nlohmann::json request = {{"output", {{"width", kSlowRenderSize}, {"height", kSlowRenderSize}}},
@@ -48,7 +48,7 @@ std::future<httplib::Result> start_slow_render(const ServerProcess& server, doub
   const auto timed = server.client()->Post("/v1/render", request.dump(), "application/json");
   if (!timed || timed->status != 200) throw std::runtime_error("start_slow_render: the timing render failed");
   const double frame_ms = nlohmann::json::parse(timed->get_header_value("X-Render-Stats"))["wall_ms"]["min"];
-  request["repeat"] = std::clamp(int(std::ceil(seconds * 1000.0 / std::max(frame_ms, 1e-3))), 1, 100);
+  request["repeat"] = std::clamp(int(std::ceil(1000.0 / std::max(frame_ms, 1e-3))), 1, 100);
   return std::async(std::launch::async, [&server, body = request.dump()] {
     return server.client()->Post("/v1/render", body, "application/json");
   });

@@ -44,13 +44,13 @@ double elapsed_ms(Work&& work) {
 }
 
 // Starts, on another thread, a render that keeps the server's worker busy for about
-// `seconds` on lavapipe or a GPU, for tests that need a render in flight; its answer when it
+// a second on lavapipe or a GPU, for tests that need a render in flight; its answer when it
 // ends. Direct-light frames of kSlowRenderSize^2 (so its duration does not follow the LPV
 // settings), as many as a warm frame timed on this server first says fill the time, at most
 // the default --max-repeat (100). A fixed count was tuned to lavapipe and ended within
 // LoadClientGone's 100 ms on an H100.
 inline constexpr int kSlowRenderSize = 2048;
-std::future<httplib::Result> start_slow_render(const ServerProcess& server, double seconds = 1.0);
+std::future<httplib::Result> start_slow_render(const ServerProcess& server);
 
 // The value of the /metrics series `series` (a name with its labels, exactly as the server
 // writes it): 0 when the series is absent, -1 when /metrics does not answer 200.
