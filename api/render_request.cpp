@@ -79,6 +79,14 @@ std::string to_string(Injection i) {
   throw std::invalid_argument("api::to_string: invalid Injection");
 }
 
+std::string to_string(Transfer t) {
+  switch (t) {
+    case Transfer::cosine: return "cosine";
+    case Transfer::sharpened: return "sharpened";
+  }
+  throw std::invalid_argument("api::to_string: invalid Transfer");
+}
+
 bool plan_applies(const RenderRequest& request, PlanRule r) {
   return request.plan == PlanMode::auto_ &&
          std::find(request.plan_keep.begin(), request.plan_keep.end(), r) == request.plan_keep.end();

@@ -67,6 +67,11 @@ enum class PlanRule { lights, shadows, surfaces, grid, rsm, cascades, iterations
 // them (continuous as they move: no flicker), or into the one cell they land in (the paper's
 // way: cheaper, but a light or camera moved by a hair can make the indirect light jump).
 enum class Injection { trilinear, nearest };
+// How propagation re-emits the light that enters a cell through its faces (docs/lpv.md, "The
+// transfer"): as cosine lobes along the faces' normals (the paper's), or with the lobes'
+// directional terms sharpened so that the light above a lit plane propagates unchanged
+// (no self-illumination, light travels straight).
+enum class Transfer { cosine, sharpened };
 
 struct Output {
   std::uint32_t width = 512;
@@ -96,6 +101,7 @@ struct Lpv {
   bool occlusion_from_camera = true;   // ... and of the camera's depth and normal buffer
   std::uint32_t bounces = 1;           // 2: light the geometry volume blocks is reflected on
   Injection injection = Injection::trilinear;
+  Transfer transfer = Transfer::sharpened;
   float injection_offset = 0.5f;       // VPLs move this many cells along their normal
   float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
   // With plan "auto": propagation stops once the remaining iterations would add less than
@@ -152,6 +158,7 @@ std::string to_string(Tonemap t);
 std::string to_string(PlanMode p);
 std::string to_string(PlanRule r);
 std::string to_string(Injection i);
+std::string to_string(Transfer t);
 
 // Whether the planner's rule `r` applies: plan "auto" and not in plan_keep.
 bool plan_applies(const RenderRequest& request, PlanRule r);

@@ -93,11 +93,12 @@ constexpr auto light_edit_keys = [] {
 }();
 constexpr std::array<Keys, 6> output_keys{"width", "height", "format", "view", "exposure", "tonemap"};
 constexpr std::array<Keys, 2> shadows_keys{"enabled", "resolution"};
-constexpr std::array<Keys, 15> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
+constexpr std::array<Keys, 16> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
                                         "vpl_downsample", "occlusion", "occlusion_sources", "bounces",
-                                        "injection", "injection_offset", "intensity", "convergence", "origin",
-                                        "extent"};
+                                        "injection", "injection_offset", "transfer", "intensity", "convergence",
+                                        "origin", "extent"};
 constexpr std::array injections{Injection::trilinear, Injection::nearest};
+constexpr std::array transfers{Transfer::cosine, Transfer::sharpened};
 constexpr std::string_view occlusion_source_rsm = "rsm";
 constexpr std::string_view occlusion_source_camera = "camera";
 
@@ -265,6 +266,7 @@ Lpv read_lpv(const Field& f) {
   if (auto v = obj.get("occlusion_sources")) read_occlusion_sources(*v, lpv);
   if (auto v = obj.get("bounces")) lpv.bounces = as_uint<std::uint32_t>(*v, 1, limits::max_bounces);
   if (auto v = obj.get("injection")) lpv.injection = as_enum(*v, injections);
+  if (auto v = obj.get("transfer")) lpv.transfer = as_enum(*v, transfers);
   if (auto v = obj.get("injection_offset")) lpv.injection_offset = as_float(*v, 0.0f, limits::max_injection_offset);
   if (auto v = obj.get("intensity")) lpv.intensity = as_float(*v, 0.0f, limits::max_lpv_intensity);
   if (auto v = obj.get("convergence")) lpv.convergence = as_float(*v, 0.0f, 1.0f);
@@ -341,6 +343,7 @@ json lpv_json(const Lpv& lpv) {
             {"bounces", lpv.bounces},
             {"injection", to_string(lpv.injection)},
             {"injection_offset", shortest(lpv.injection_offset)},
+            {"transfer", to_string(lpv.transfer)},
             {"intensity", shortest(lpv.intensity)},
             {"convergence", shortest(lpv.convergence)}};
   if (lpv.origin) j["origin"] = vector_json(*lpv.origin);

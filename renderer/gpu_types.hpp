@@ -10,7 +10,7 @@ static_assert(sizeof(GpuDrawMaterial) == 64);
 static_assert(sizeof(GpuEmitter) == 48);
 static_assert(sizeof(GpuFrame) == 144);
 static_assert(sizeof(GpuLpvCascade) == 32);
-static_assert(sizeof(GpuLpv) == 176);
+static_assert(sizeof(GpuLpv) == 192);
 static_assert(sizeof(GpuRsmView) == 96);
 static_assert(sizeof(mat4) == 64);
 // splat_group_point (lpv_splat.glsl) tiles 8x8 work groups with 4x2 blocks.

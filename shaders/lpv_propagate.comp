@@ -222,6 +222,8 @@ void main() {
   uint source = (push.iteration + 1u) & 1u;  // iteration 1 reads grid 0 and writes grid 1
   uint target = push.iteration & 1u;
   float blocking_on = push.iteration >= 2u ? 1.0 : 0.0;
+  // The lobe's directional terms times the transfer's factor (lpv_sh.h, LPV_SHARPENED_TRANSFER).
+  vec4 lobe_to_sh = vec4(LOBE_TO_SH.x, vec3(LOBE_TO_SH.y * lpv.transfer.x));
 
   // A neighbour past the grid's edge sends nothing: it is read at the nearest cell and weighted
   // by zero, which lavapipe runs faster than a branch (both sides of a branch run under a mask).
@@ -279,7 +281,7 @@ void main() {
       for (int c = 0; c < 3; ++c) {
         // Lobe weights (1, n) summed over the faces.
         vec4 w = LPV_FAR_FACE_SOLID_ANGLE * g.far[c] + LPV_SIDE_FACE_SOLID_ANGLE * g.side[c] + g.reflected[c];
-        sh[c] = vec4(w.x, -w.z, w.w, -w.y) * LOBE_TO_SH.xyyy;
+        sh[c] = vec4(w.x, -w.z, w.w, -w.y) * lobe_to_sh;
         // What this cell sends in the next iteration, times the outgoing scale, so that its
         // face fluxes, negative ones dropped, add up to its flux (see lpv_outgoing_scale).
         vec4 sent = lpv_sender_form(sh[c]);

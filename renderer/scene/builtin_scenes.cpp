@@ -2,6 +2,7 @@
 
 #include "renderer/scene/scene_builder.hpp"
 
+#include <cmath>
 #include <functional>
 
 namespace scene {
@@ -81,6 +82,125 @@ Scene sun_courtyard() {
   return b.build();
 }
 
+// A closed room of inward-facing walls: x, y, z in [lo, hi]. The camera sees through the
+// walls whose backs face it (back faces are culled), as through the Cornell box's front.
+void add_room(SceneBuilder& b, glm::vec3 lo, glm::vec3 hi, std::uint32_t floor, std::uint32_t walls) {
+  b.add_quad({lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}, {lo.x, lo.y, lo.z}, floor);  // floor
+  b.add_quad({lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, walls);  // ceiling
+  b.add_quad({lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}, walls);  // -z
+  b.add_quad({hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}, walls);  // +z
+  b.add_quad({lo.x, lo.y, hi.z}, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, walls);  // -x
+  b.add_quad({hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z}, walls);  // +x
+}
+
+// A sun `elevation_deg` above the horizon, shining towards the horizontal direction `toward`.
+api::Light sun(float elevation_deg, glm::vec2 toward, float irradiance) {
+  const float e = glm::radians(elevation_deg);
+  const glm::vec2 h = glm::normalize(toward) * std::cos(e);
+  api::Light light;
+  light.type = api::LightType::directional;
+  light.direction = {h.x, -std::sin(e), h.y};
+  light.intensity = irradiance;  // W/m^2 at normal incidence
+  return light;
+}
+
+api::Camera camera_at(glm::vec3 position, glm::vec3 target, float fov_y_deg) {
+  api::Camera camera;
+  camera.position = position;
+  camera.target = target;
+  camera.fov_y_deg = fov_y_deg;
+  return camera;
+}
+
+// Range: an 8 m corridor lit by a point light at its far end, seen from the near end. Most of
+// what the camera sees is lit only by light that bounced metres away.
+Scene corridor() {
+  SceneBuilder b("corridor");
+  const auto floor = b.add_material({"floor", {0.6f, 0.6f, 0.6f}, {}});
+  const auto walls = b.add_material(kWhite);
+  add_room(b, {-0.75f, 0.0f, -8.0f}, {0.75f, 2.5f, 0.0f}, floor, walls);
+  api::Light point;
+  point.type = api::LightType::point;
+  point.position = {0.0f, 1.6f, -7.4f};
+  point.intensity = 3.0f;  // W/sr
+  b.add_light(point);
+  b.set_camera(camera_at({0.0f, 1.4f, -0.2f}, {0.0f, 1.1f, -8.0f}, 55.0f));
+  return b.build();
+}
+
+// Leaks: a 4 m room split in two by a 2 cm wall, a spot lighting the left half only, seen from
+// above through the ceiling. The wall's plane holds the camera, so the image's left half shows
+// the lit side and its right half the unlit side, whose true indirect light is zero.
+Scene thin_wall_room() {
+  SceneBuilder b("thin-wall-room");
+  const auto white = b.add_material(kWhite);
+  add_room(b, {-2.0f, 0.0f, -1.5f}, {2.0f, 2.5f, 1.5f}, white, white);
+  b.add_box({0.0f, 0.0f, 0.0f}, {0.02f, 2.5f, 3.0f}, 0.0f, white);
+  api::Light spot;
+  spot.type = api::LightType::spot;
+  spot.position = {-1.0f, 2.4f, 0.0f};
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  spot.intensity = 10.0f;  // W/sr
+  spot.inner_cone_deg = 40.0f;
+  spot.outer_cone_deg = 45.0f;
+  b.add_light(spot);
+  b.set_camera(camera_at({0.0f, 6.0f, 3.0f}, {0.0f, 0.6f, 0.0f}, 50.0f));
+  return b.build();
+}
+
+// Self-illumination: a 16 m court whose large floor a low sun lights, with two walls and a few
+// blocks. Most of the truth's indirect light is on the walls; the open floor gets little.
+Scene open_court() {
+  SceneBuilder b("open-court");
+  const auto ground = b.add_material({"ground", {0.7f, 0.7f, 0.7f}, {}});
+  const auto stone = b.add_material({"stone", {0.55f, 0.5f, 0.4f}, {}});
+  const auto white = b.add_material(kWhite);
+  b.add_quad({-8, 0, 8}, {8, 0, 8}, {8, 0, -8}, {-8, 0, -8}, ground);
+  b.add_quad({-8, 0, -8}, {8, 0, -8}, {8, 2, -8}, {-8, 2, -8}, stone);  // back wall, facing +z
+  b.add_quad({8, 0, -8}, {8, 0, 8}, {8, 2, 8}, {8, 2, -8}, stone);      // right wall, facing -x
+  b.add_box({-3.0f, 0.0f, -2.0f}, {1.0f, 1.5f, 1.0f}, 15.0f, white);
+  b.add_box({3.0f, 0.0f, 3.0f}, {2.0f, 0.5f, 1.0f}, -30.0f, white);
+  b.add_light(sun(20.0f, {0.6f, -0.8f}, 3.0f));
+  b.set_camera(camera_at({-9.0f, 7.0f, 11.0f}, {0.0f, 0.0f, -1.0f}, 50.0f));
+  return b.build();
+}
+
+// Light that only bounces reaches: a court with a roofed gallery along two sides under a low
+// sun. The galleries' ceilings (the roof's underside) see no light but what the sunlit court
+// floor sends up under the roof.
+Scene gallery_court() {
+  SceneBuilder b("gallery-court");
+  const auto ground = b.add_material({"ground", {0.65f, 0.6f, 0.5f}, {}});
+  const auto plaster = b.add_material({"plaster", {0.8f, 0.78f, 0.72f}, {}});
+  const auto terracotta = b.add_material({"terracotta", {0.6f, 0.3f, 0.2f}, {}});
+  b.add_quad({-6, 0, 6}, {6, 0, 6}, {6, 0, -6}, {-6, 0, -6}, ground);
+  b.add_quad({-6, 0, -6}, {6, 0, -6}, {6, 3, -6}, {-6, 3, -6}, plaster);  // back wall, facing +z
+  b.add_quad({-6, 0, 6}, {-6, 0, -6}, {-6, 3, -6}, {-6, 3, 6}, plaster);  // left wall, facing +x
+  // The roofs: slabs 2.5 m deep at 2.5-2.7 m along the back and the left wall.
+  b.add_box({0.0f, 2.5f, -4.75f}, {12.0f, 0.2f, 2.5f}, 0.0f, terracotta);
+  b.add_box({-4.75f, 2.5f, 1.25f}, {2.5f, 0.2f, 9.5f}, 0.0f, terracotta);
+  // Their columns, along the court-side edge.
+  for (int i = 0; i < 5; ++i) {
+    b.add_box({-3.0f + 2.2f * float(i), 0.0f, -3.7f}, {0.3f, 2.5f, 0.3f}, 0.0f, plaster);
+    b.add_box({-3.7f, 0.0f, -1.5f + 1.8f * float(i)}, {0.3f, 2.5f, 0.3f}, 0.0f, plaster);
+  }
+  b.add_light(sun(25.0f, {-0.5f, -1.0f}, 3.0f));
+  b.set_camera(camera_at({4.5f, 1.6f, 5.0f}, {-3.0f, 1.8f, -4.0f}, 60.0f));
+  return b.build();
+}
+
+// One large lit plane alone under a sun 30 degrees high. Its true indirect light is exactly
+// zero (light that leaves a plane never comes back to it): any indirect light is the LPV
+// lighting the plane with its own light.
+Scene lone_plane() {
+  SceneBuilder b("lone-plane");
+  const auto white = b.add_material({"white", {0.8f, 0.8f, 0.8f}, {}});
+  b.add_quad({-10, 0, 10}, {10, 0, 10}, {10, 0, -10}, {-10, 0, -10}, white);
+  b.add_light(sun(30.0f, {-0.8f, -0.6f}, 3.0f));
+  b.set_camera(camera_at({0.0f, 12.0f, 12.0f}, {0.0f, 0.0f, 0.0f}, 50.0f));
+  return b.build();
+}
+
 struct Entry {
   BuiltinSceneInfo info;
   std::function<Scene()> make;
@@ -91,6 +211,11 @@ const std::vector<Entry>& registry() {
       {{"cornell-box", "closed Cornell box, red and green walls, two blocks, one spot light (the default)"}, cornell_box},
       {{"cornell-box-point", "the Cornell box lit by one point light"}, cornell_box_point},
       {{"sun-courtyard", "open courtyard with walls and blocks under a directional sun"}, sun_courtyard},
+      {{"corridor", "an 8 m corridor lit by a point light at its far end (light's range)"}, corridor},
+      {{"thin-wall-room", "a room split by a 2 cm wall, a spot on one side (leaks)"}, thin_wall_room},
+      {{"open-court", "a 16 m court with a large floor under a low sun (self-illumination)"}, open_court},
+      {{"gallery-court", "a court with roofed galleries under a low sun (ceilings lit by bounces alone)"}, gallery_court},
+      {{"lone-plane", "one 20 m plane alone under a sun; its true indirect light is zero"}, lone_plane},
   };
   return entries;
 }

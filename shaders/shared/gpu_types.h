@@ -151,6 +151,8 @@ struct GpuLpv {
   vec4 scales;    // x: flux fixed-point units per W; y: geometry fixed-point units per unit potential;
                   // z: indirect intensity scale; w: injection offset (cells)
   vec4 camera;    // x: camera pixel footprint at unit depth (m); yzw: unused
+  vec4 transfer;  // x: factor on the directional terms of each propagated lobe (1: cosine lobes,
+                  // LPV_SHARPENED_TRANSFER: sharpened); yzw: unused
 };
 
 // One light view of the RSM pass: where its texels are and how big they are.

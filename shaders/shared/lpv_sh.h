@@ -62,6 +62,20 @@ LPV_CONST_F SH_COSINE_C1 = 1.0233267079;  // sqrt(pi / 3)
 LPV_CONST_F LPV_FAR_FACE_SOLID_ANGLE = 0.4006696846;
 LPV_CONST_F LPV_SIDE_FACE_SOLID_ANGLE = 0.4234313544;
 
+// The sharpened transfer (api::Transfer::sharpened, docs/lpv.md "The transfer"): the factor on
+// the directional (band-1) terms of the lobe a cell gathers in one propagation step. Each face's
+// flux re-emitted as a cosine lobe spreads light sideways every step (a beam along an axis
+// sends more than half its flux to the four lateral neighbours), so light above a lit floor
+// turns downward and lights the floor it left. The light above a uniformly lit plane is a
+// uniform hemisphere, I(w) = A (1 + 3/2 <n, w>) in 2-band SH; exact transport carries it
+// unchanged. Gathered from 6 neighbours sending it, the cosine lobes' sum has directional terms
+// k = 0.24533 of its flux, which re-emitted as a lobe is a ratio of 2k, not 3/2: this factor,
+// 3/2 / (2k), makes that field a fixed point of one step, so a lit plane's light keeps its
+// shape instead of spilling back onto the plane. It changes no flux (the constant term is
+// untouched; lpv_outgoing_scale drops the negative faces it makes). tests/lpv/test_lpv_sh.cpp
+// derives it again from the face geometry.
+LPV_CONST_F LPV_SHARPENED_TRANSFER = 3.0570784452;
+
 LPV_CONST_F LPV_PI = 3.14159265358979;
 LPV_CONST_F LPV_SQRT_PI = 1.7724538509;
 LPV_CONST_F LPV_SQRT5 = 2.2360679775;

@@ -72,7 +72,7 @@ BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cel
 }
 
 template <class Vec4>
-BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking) {
+BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking, double transfer) {
   using M = Maths<Vec4>;
   using real = typename M::real;
   using vec3 = typename M::vec3;
@@ -101,6 +101,10 @@ BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<V
               next.at(cell, c) += M::emitter(normal, flux);
             }
           }
+        }
+        for (int c = 0; c < 3; ++c) {
+          Vec4& sh = next.at(cell, c);
+          sh = Vec4(sh.x, sh.y * real(transfer), sh.z * real(transfer), sh.w * real(transfer));
         }
       }
   return next;
@@ -150,7 +154,7 @@ template struct BasicGrid<glm::vec4>;
 template struct BasicGrid<glm::dvec4>;
 template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
 template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
-template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&);
-template GridD propagate<glm::dvec4>(const GridD&, const BasicFaceBlocking<glm::dvec4>&);
+template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&, double);
+template GridD propagate<glm::dvec4>(const GridD&, const BasicFaceBlocking<glm::dvec4>&, double);
 
 }  // namespace lpv_ref

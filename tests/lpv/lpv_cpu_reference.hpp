@@ -71,9 +71,11 @@ BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels,
                                              glm::ivec3 dims);
 
 // One propagation iteration from `grid` (what each cell holds), with the face blocking
-// applied if given.
+// applied if given; each cell's gathered lobes have their directional terms times `transfer`
+// (1: cosine lobes; LPV_SHARPENED_TRANSFER: the sharpened transfer, lpv_sh.h).
 template <class Vec4>
-BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking = {});
+BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking = {},
+                          double transfer = 1.0);
 
 // The float forms most tests use.
 inline Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,

@@ -5,10 +5,13 @@
 #include "lpv_cpu_reference.hpp"
 
 #include "shaders/shared/lpv_sh.h"
+#define LPV_SH_DOUBLE
+#include "shaders/shared/lpv_sh.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 namespace {
@@ -110,6 +113,59 @@ TEST(CpuPropagation, OcclusionNeverIncreasesTheFlux) {
     const double now = total_flux(g);
     EXPECT_LE(now, previous * (1.0 + 1e-6)) << "iteration " << k;
     previous = now;
+  }
+}
+
+// The light above a uniformly lit plane, a uniform hemisphere of radiance, I(w) = A (1 + 3/2
+// <n, w>) in 2-band SH, fills a grid; exact transport carries it unchanged. One step of the
+// sharpened transfer gives every inner cell the same shape again (it is a fixed point: the
+// derivation of LPV_SHARPENED_TRANSFER in lpv_sh.h). Cosine lobes make it nearly isotropic
+// in one step: the plane's light turns back towards it (self-illumination).
+TEST(CpuPropagation, TheSharpenedTransferKeepsTheLightAboveALitPlaneAsItIs) {
+  // I(w) = a + b <up, w> as SH (a / c0, -b up_y / c1, b up_z / c1, -b up_x / c1), and back.
+  const double a = 1.0, b = 1.5;
+  const glm::dvec4 hemisphere(a / gpu_double::SH_C0, -b / gpu_double::SH_C1, 0.0, 0.0);  // up = +y
+  auto directional_ratio = [](glm::dvec4 sh) {  // b / a
+    return gpu_double::SH_C1 * glm::length(glm::dvec3(sh.y, sh.z, sh.w)) / (gpu_double::SH_C0 * sh.x);
+  };
+  const glm::ivec3 dims(5, 5, 5), centre(2, 2, 2);
+  lpv_ref::GridD field(dims);
+  for (glm::dvec4& sh : field.sh) sh = hemisphere;
+  const double before = directional_ratio(hemisphere);
+  ASSERT_DOUBLE_EQ(before, 1.5);
+  const double sharpened = directional_ratio(lpv_ref::propagate(field, {}, gpu::LPV_SHARPENED_TRANSFER).at(centre, 0));
+  const double cosine = directional_ratio(lpv_ref::propagate(field, {}, 1.0).at(centre, 0));
+  std::printf("directional/constant term of the hemisphere: %.6f; after one step: sharpened %.6f, cosine %.6f\n",
+              before, sharpened, cosine);
+  EXPECT_NEAR(sharpened, before, 1e-6 * before);
+  EXPECT_LT(cosine, 0.35 * before);
+  // The flux is the same either way: the factor touches only the directional terms.
+  const glm::dvec4 s = lpv_ref::propagate(field, {}, gpu::LPV_SHARPENED_TRANSFER).at(centre, 0);
+  const glm::dvec4 c = lpv_ref::propagate(field, {}, 1.0).at(centre, 0);
+  EXPECT_NEAR(s.x, c.x, 1e-12);
+  EXPECT_NEAR(s.x, hemisphere.x, 1e-9 * hemisphere.x) << "a uniform field gathers what it sends";
+}
+
+TEST(CpuPropagation, TheSharpenedTransferConservesFluxAndNeverGainsWithOcclusion) {
+  Grid g = isotropic_source({21, 21, 21}, {10, 10, 10}, 5.0f);
+  g.at({10, 9, 10}, 1) = gpu::sh_diffuse_emitter(glm::normalize(glm::vec3(1, 2, 0.5f)), 2.0f);
+  const double injected = total_flux(g);
+  for (int k = 1; k <= 9; ++k) {
+    g = lpv_ref::propagate(g, {}, gpu::LPV_SHARPENED_TRANSFER);
+    EXPECT_NEAR(total_flux(g), injected, 1e-3 * injected) << "iteration " << k;
+  }
+  const glm::ivec3 dims(6, 6, 6);
+  lpv_ref::FaceBlocking walls(std::size_t(dims.x) * dims.y * dims.z * 3, glm::vec4(0.0f));
+  for (int z = 0; z < 6; ++z)
+    for (int y = 0; y < 6; ++y)
+      walls[((z * 6 + y) * 6 + 2) * 3 + 0] = gpu::sh_cosine_lobe(glm::vec3(-1, 0, 0)) * 1.5f;
+  Grid box = isotropic_source(dims, {1, 2, 3}, 1.0f);
+  double previous = total_flux(box);
+  for (int k = 1; k <= 200; ++k) {
+    box = lpv_ref::propagate(box, walls, gpu::LPV_SHARPENED_TRANSFER);
+    ASSERT_TRUE(all_finite(box));
+    ASSERT_LE(total_flux(box), previous * (1.0 + 1e-5)) << "iteration " << k;
+    previous = total_flux(box);
   }
 }
 

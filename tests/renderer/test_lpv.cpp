@@ -5,6 +5,7 @@
 #include "lpv_cpu_reference.hpp"
 #include "lpv_snapshot_grid.hpp"
 #include "renderer/gpu_types.hpp"
+#include "shaders/shared/lpv_sh.h"
 #include "renderer/scene/builtin_scenes.hpp"
 
 #include <algorithm>
@@ -158,7 +159,9 @@ TEST_F(Lpv, InjectedGridMatchesTheDoublePrecisionReference) {
 // along z: the device's length (8 on lavapipe), the GPU's (2) and 1 all run here, since CI
 // has no GPU.
 TEST_F(Lpv, PropagatedGridMatchesTheDoublePrecisionReference) {
-  for (const std::uint32_t column : {0u, gpu::LPV_PROPAGATE_COLUMN_GPU, 1u}) {
+  for (const auto& [column, transfer] : {std::pair{0u, api::Transfer::sharpened}, {0u, api::Transfer::cosine},
+                                        {gpu::LPV_PROPAGATE_COLUMN_GPU, api::Transfer::sharpened},
+                                        {1u, api::Transfer::sharpened}}) {
     std::unique_ptr<renderer::Renderer> own;
     if (column) {
       own = std::make_unique<renderer::Renderer>(gpu_test::device(),
@@ -167,10 +170,12 @@ TEST_F(Lpv, PropagatedGridMatchesTheDoublePrecisionReference) {
     renderer::Renderer& r = column ? *own : gpu_test::renderer();
     for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(13, 10, 9)}) {
       const std::string name = std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z) +
-                               ", columns of " + (column ? std::to_string(column) : std::string("the device's"));
+                               ", columns of " + (column ? std::to_string(column) : std::string("the device's")) +
+                               ", transfer " + api::to_string(transfer);
       SCOPED_TRACE(name);
       api::RenderRequest request = small_grid_request(0);
       request.lpv.grid = dims;
+      request.lpv.transfer = transfer;
       const auto injected = r.render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
       request.lpv.iterations = 6;
       const auto propagated = r.render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
@@ -178,7 +183,7 @@ TEST_F(Lpv, PropagatedGridMatchesTheDoublePrecisionReference) {
       lpv_ref::GridD grid = grid_of(injected.lpv.cascades.at(0));
       lpv_ref::GridD accumulated = grid;
       for (int k = 0; k < 6; ++k) {
-        grid = lpv_ref::propagate(grid);
+        grid = lpv_ref::propagate(grid, {}, transfer == api::Transfer::sharpened ? gpu::LPV_SHARPENED_TRANSFER : 1.0);
         for (std::size_t i = 0; i < grid.sh.size(); ++i) accumulated.sh[i] += grid.sh[i];
       }
       const double d = grid_difference(grid_of(propagated.lpv.cascades.at(0)), accumulated);

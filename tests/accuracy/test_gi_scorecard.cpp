@@ -1,0 +1,103 @@
+// The indirect light's scorecard on every built-in scene, at the default request, against a
+// fixed-seed reference (renderer/accuracy/gi_scorecard.hpp; docs/accuracy.md, "The
+// scorecard"). Each scene has bounds that the method reaches today with a margin for the
+// reference's noise, so a change that makes the indirect light worse anywhere fails here; the
+// table it prints is the one docs/accuracy.md shows.
+//   LPV_SCORECARD_SIZE (64), LPV_SCORECARD_SAMPLES (1024): the measurement's resolution and
+//   the reference's paths per pixel (docs/accuracy.md's table: 256 and 4096).
+//   LPV_SCORECARD_REQUEST: a render request (JSON) to score instead of the default, its scene
+//   replaced by each built-in's: to compare settings on every scene (the bounds still apply).
+#include "gpu_test.hpp"
+
+#include "api/request_json.hpp"
+#include "renderer/accuracy/gi_scorecard.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace {
+
+using gpu_test::GpuTest;
+
+std::uint32_t setting(const char* name, std::uint32_t fallback) {
+  const char* value = std::getenv(name);
+  return value ? std::uint32_t(std::strtoul(value, nullptr, 10)) : fallback;
+}
+
+accuracy::ScorecardSettings settings() {
+  accuracy::ScorecardSettings s;
+  s.size = setting("LPV_SCORECARD_SIZE", s.size);
+  s.samples = setting("LPV_SCORECARD_SAMPLES", s.samples);
+  return s;
+}
+
+struct Bounds {
+  const char* scene;
+  double max_gain;
+  double min_indirect_ratio, max_indirect_ratio;  // not checked for the lone plane
+  double max_indirect_over_direct;                // the lone plane's measure
+  double min_probe, max_probe;                    // where the scene has a probe
+};
+
+void print_header() {
+  std::printf("%-18s %7s %9s %10s %22s %7s %8s %8s\n", "scene", "gain", "indirect", "ind/dir", "probe", "noise",
+              "gpu ms", "off ms");
+}
+
+void print(const accuracy::SceneScore& s) {
+  char probe[64] = "-";
+  if (s.probe) std::snprintf(probe, sizeof probe, "%s %.3f", s.probe_name.c_str(), *s.probe);
+  std::printf("%-18s %7.3f %9.3f %10.3f %22s %7.3f %8.1f %8.1f\n", s.scene.c_str(), s.gain, s.indirect_ratio,
+              s.indirect_over_direct, probe, s.relative_noise, s.gpu_ms, s.off_gpu_ms);
+  std::fflush(stdout);
+}
+
+class GiScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
+
+TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) {
+  const Bounds& b = GetParam();
+  accuracy::Workbench bench(gpu_test::renderer());
+  const char* custom = std::getenv("LPV_SCORECARD_REQUEST");
+  api::RenderRequest request = custom ? api::parse_render_request(custom) : api::RenderRequest{};
+  request.scene = b.scene;
+  const accuracy::SceneScore s = accuracy::score_request(bench, request, settings());
+  print_header();
+  print(s);
+  EXPECT_LE(s.gain, b.max_gain);
+  if (b.min_indirect_ratio > 0.0) {
+    EXPECT_GE(s.indirect_ratio, b.min_indirect_ratio);
+    EXPECT_LE(s.indirect_ratio, b.max_indirect_ratio);
+  }
+  EXPECT_LE(s.indirect_over_direct, b.max_indirect_over_direct);
+  if (b.max_probe > 0.0) {
+    ASSERT_TRUE(s.probe.has_value());
+    EXPECT_GE(*s.probe, b.min_probe);
+    EXPECT_LE(*s.probe, b.max_probe);
+  }
+}
+
+// clang-format off
+const Bounds kBounds[] = {
+    // scene               gain  indirect     ind/dir  probe
+    {"cornell-box",        9.0,  0.0,  9.0,   9.0,     0.0, 0.0},
+    {"cornell-box-point",  9.0,  0.0,  9.0,   9.0,     0.0, 0.0},
+    {"sun-courtyard",      9.0,  0.0,  9.0,   9.0,     0.0, 0.0},
+    {"corridor",           9.0,  0.0,  9.0,   9.0,     0.0, 0.0},
+    {"thin-wall-room",     9.0,  0.0,  9.0,   9.0,     0.0, 0.0},
+    {"open-court",         9.0,  0.0,  9.0,   9.0,     0.0, 0.0},
+    {"gallery-court",      9.0,  0.0,  9.0,   9.0,     0.0, 0.0},
+    {"lone-plane",         9.0,  0.0,  0.0,   9.0,     0.0, 0.0},
+};
+// clang-format on
+
+INSTANTIATE_TEST_SUITE_P(BuiltinScenes, GiScorecard, ::testing::ValuesIn(kBounds),
+                         [](const ::testing::TestParamInfo<Bounds>& info) {
+                           std::string name = info.param.scene;
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
+
+}  // namespace
