@@ -91,9 +91,9 @@ struct Shadows {
 // the field's: one 32^3 cascade, 8 iterations, RSM 256^2.
 struct Lpv {
   bool enabled = true;
-  glm::uvec3 grid{32, 32, 32};         // cells per axis of every cascade ("grid": 32 or [x, y, z])
+  glm::uvec3 grid{16, 16, 16};         // cells per axis of every cascade ("grid": 16 or [x, y, z])
   std::uint32_t cascades = 1;          // nested grids, each twice the extent of the last
-  std::uint32_t iterations = 8;        // propagation steps per cascade
+  std::uint32_t iterations = 32;       // propagation steps per cascade: twice the grid, to cross it
   std::uint32_t rsm_resolution = 256;  // RSM texels per side of each light view ("rsm")
   std::uint32_t vpl_downsample = 1;    // RSM texels per side merged into one brighter VPL
   bool occlusion = true;               // geometry volume blocks propagation

@@ -11,9 +11,9 @@ const DEFAULTS = {
   output: { width: 512, height: 512, view: 'final', exposure: 0, tonemap: 'none' },
   shadows: { enabled: true, resolution: 512 },
   lpv: {
-    enabled: true, grid: 32, cascades: 1, iterations: 8, rsm: 256, vpl_downsample: 1,
+    enabled: true, grid: 16, cascades: 1, iterations: 32, rsm: 256, vpl_downsample: 1,
     occlusion: true, occlusion_sources: ['rsm', 'camera'], bounces: 1, injection: 'trilinear', injection_offset: 0.5,
-    intensity: 1, convergence: 0.001,
+    transfer: 'sharpened', intensity: 1, convergence: 0.001,
   },
   plan: 'auto',
   plan_keep: [],

@@ -27,7 +27,8 @@ struct SceneScore {
   // Mean indirect light over mean direct light, both the render's (the lone plane's measure).
   double indirect_over_direct = 0.0;
   // The scene's probe, where it has one: the Cornell box's ceiling, final radiance over the
-  // reference's; the thin-wall room, the unlit half's indirect light over the lit half's.
+  // reference's; the thin-wall room, the unlit half's indirect light over the lit half's in the
+  // reference (the truth's, a yardstick that self-illumination cannot inflate).
   std::optional<double> probe;
   std::string probe_name;
   double relative_noise = 0.0;  // the reference's noise over its mean indirect light

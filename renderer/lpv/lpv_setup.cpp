@@ -115,7 +115,9 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene
                        lpv.intensity, lpv.injection_offset);
   const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);
   g.camera = glm::vec4(pixel_footprint, camera.position);
-  g.transfer = glm::vec4(lpv.transfer == api::Transfer::sharpened ? gpu::LPV_SHARPENED_TRANSFER : 1.0f, 0.0f, 0.0f, 0.0f);
+  const bool sharpened = lpv.transfer == api::Transfer::sharpened;
+  g.transfer = glm::vec4(sharpened ? gpu::LPV_SHARPENED_TRANSFER : 1.0f, sharpened ? gpu::LPV_SHARPENED_INJECTION : 1.0f,
+                         0.0f, 0.0f);
 
   for (const LightView& view : views) {
     gpu::GpuRsmView v{};

@@ -75,6 +75,13 @@ LPV_CONST_F LPV_SIDE_FACE_SOLID_ANGLE = 0.4234313544;
 // untouched; lpv_outgoing_scale drops the negative faces it makes). tests/lpv/test_lpv_sh.cpp
 // derives it again from the face geometry.
 LPV_CONST_F LPV_SHARPENED_TRANSFER = 3.0570784452;
+// With it, each VPL is injected as that same hemisphere, directional terms 3/2 of its constant
+// term instead of the cosine lobe's 2 (a factor 3/4 on band 1; the flux is the same): a VPL
+// stands for a patch of lit surface, and the light above a lit surface is the hemisphere the
+// transfer keeps. It lights its own surface with exactly zero, where a cosine lobe gives
+// -1/3 of its constant term, which the shading's clamp at zero then subtracted from the light
+// other surfaces send there (the Cornell box's floor by a wall got none).
+LPV_CONST_F LPV_SHARPENED_INJECTION = 0.75;
 
 LPV_CONST_F LPV_PI = 3.14159265358979;
 LPV_CONST_F LPV_SQRT_PI = 1.7724538509;

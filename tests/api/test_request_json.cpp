@@ -103,6 +103,7 @@ void expect_same(const api::RenderRequest& a, const api::RenderRequest& b) {
   EXPECT_EQ(a.lpv.bounces, b.lpv.bounces);
   EXPECT_EQ(a.lpv.injection, b.lpv.injection);
   EXPECT_EQ(a.lpv.injection_offset, b.lpv.injection_offset);
+  EXPECT_EQ(a.lpv.transfer, b.lpv.transfer);
   EXPECT_EQ(a.lpv.intensity, b.lpv.intensity);
   EXPECT_EQ(a.lpv.origin, b.lpv.origin);
   EXPECT_EQ(a.lpv.extent, b.lpv.extent);
@@ -171,9 +172,10 @@ TEST(ParseRequest, EmptyObjectGivesDefaults) {
   EXPECT_TRUE(r.shadows.enabled);
   EXPECT_EQ(r.shadows.resolution, 512u);
   EXPECT_TRUE(r.lpv.enabled);
-  EXPECT_EQ(r.lpv.grid, glm::uvec3(32));
+  EXPECT_EQ(r.lpv.grid, glm::uvec3(16));
   EXPECT_EQ(r.lpv.cascades, 1u);
-  EXPECT_EQ(r.lpv.iterations, 8u);
+  EXPECT_EQ(r.lpv.iterations, 32u);
+  EXPECT_EQ(r.lpv.transfer, api::Transfer::sharpened);
   EXPECT_EQ(r.lpv.rsm_resolution, 256u);
   EXPECT_TRUE(r.lpv.occlusion);
   EXPECT_EQ(r.lpv.bounces, 1u);
@@ -196,7 +198,7 @@ TEST(ParseRequest, ReadsEveryField) {
     "shadows": {"enabled": false, "resolution": 2048},
     "lpv": {"enabled": false, "grid": [16, 8, 4], "cascades": 3, "iterations": 0, "rsm": 64, "vpl_downsample": 4,
             "occlusion": false, "occlusion_sources": ["camera"], "bounces": 2, "injection": "nearest",
-            "injection_offset": 0.25, "intensity": 2.5, "origin": [-1, 0, -1], "extent": 2},
+            "injection_offset": 0.25, "transfer": "cosine", "intensity": 2.5, "origin": [-1, 0, -1], "extent": 2},
     "repeat": 10
   })");
   EXPECT_EQ(r.scene, "sponza_v2.1");
@@ -247,6 +249,7 @@ TEST(ParseRequest, ReadsEveryField) {
   EXPECT_EQ(r.lpv.bounces, 2u);
   EXPECT_EQ(r.lpv.injection, api::Injection::nearest);
   EXPECT_EQ(r.lpv.injection_offset, 0.25f);
+  EXPECT_EQ(r.lpv.transfer, api::Transfer::cosine);
   EXPECT_EQ(r.lpv.intensity, 2.5f);
   EXPECT_EQ(r.lpv.origin, glm::vec3(-1, 0, -1));
   EXPECT_EQ(r.lpv.extent, 2.0f);
@@ -464,6 +467,7 @@ std::vector<BadRequest> bad_requests() {
       {R"({"lpv": {"bounces": 0}})", "lpv.bounces"},
       {R"({"lpv": {"bounces": 3}})", "lpv.bounces"},
       {R"({"lpv": {"injection_offset": -0.1}})", "lpv.injection_offset"},
+      {R"({"lpv": {"transfer": "narrow"}})", "lpv.transfer"},
       {R"({"lpv": {"injection": "bilinear"}})", "lpv.injection"},
       {R"({"lpv": {"injection_offset": 2.5}})", "lpv.injection_offset"},
       {R"({"lpv": {"intensity": -1}})", "lpv.intensity"},
@@ -676,6 +680,7 @@ api::RenderRequest full_request() {
   r.lpv.bounces = 2;
   r.lpv.injection = api::Injection::nearest;
   r.lpv.injection_offset = 0.3f;
+  r.lpv.transfer = api::Transfer::cosine;
   r.lpv.intensity = 1.7f;
   r.lpv.origin = glm::vec3(-2.5f, 0.1f, 3.0f);
   r.lpv.extent = 12.5f;

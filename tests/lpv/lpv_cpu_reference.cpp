@@ -43,17 +43,22 @@ double BasicGrid<Vec4>::flux(int channel) const {
 
 template <class Vec4>
 BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
-                       float offset_cells, bool nearest) {
+                       float offset_cells, bool nearest, double lobe) {
   using M = Maths<Vec4>;
   using real = typename M::real;
   using vec3 = typename M::vec3;
   BasicGrid<Vec4> grid(dims);
+  // The VPL's lobe, its directional terms times `lobe`.
+  const auto emitter = [lobe](const Vpl& v, int c) {
+    const Vec4 sh = M::emitter(vec3(v.normal), real(v.flux[c]));
+    return Vec4(sh.x, sh.y * real(lobe), sh.z * real(lobe), sh.w * real(lobe));
+  };
   for (const Vpl& v : vpls) {
     const vec3 q = injection_point<vec3>(v, origin, cell_size, offset_cells);
     if (glm::any(glm::lessThan(q, vec3(0))) || glm::any(glm::greaterThan(q, vec3(dims)))) continue;
     if (nearest) {
       const glm::ivec3 cell = glm::min(glm::ivec3(q), dims - 1);
-      for (int c = 0; c < 3; ++c) grid.at(cell, c) += M::emitter(vec3(v.normal), real(v.flux[c]));
+      for (int c = 0; c < 3; ++c) grid.at(cell, c) += emitter(v, c);
       continue;
     }
     // Trilinear over the 8 cells whose centres surround q; shares outside go to the border.
@@ -65,7 +70,7 @@ BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cel
       const vec3 w3 = glm::mix(real(1) - f, f, vec3(o));
       const real w = w3.x * w3.y * w3.z;
       const glm::ivec3 cell = glm::clamp(low + o, glm::ivec3(0), dims - 1);
-      for (int c = 0; c < 3; ++c) grid.at(cell, c) += M::emitter(vec3(v.normal), real(v.flux[c]) * w);
+      for (int c = 0; c < 3; ++c) grid.at(cell, c) += emitter(v, c) * w;
     }
   }
   return grid;
@@ -152,8 +157,8 @@ BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels,
 
 template struct BasicGrid<glm::vec4>;
 template struct BasicGrid<glm::dvec4>;
-template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
-template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool);
+template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool, double);
+template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool, double);
 template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&, double);
 template GridD propagate<glm::dvec4>(const GridD&, const BasicFaceBlocking<glm::dvec4>&, double);
 

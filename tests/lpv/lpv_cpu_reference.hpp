@@ -48,7 +48,7 @@ Vec3 injection_point(const Vpl& v, glm::vec3 origin, float cell_size, float offs
 // `nearest` to the one cell it lands in (lpv.injection "nearest").
 template <class Vec4>
 BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
-                       float offset_cells, bool nearest = false);
+                       float offset_cells, bool nearest = false, double lobe = 1.0);
 
 // Blocking potential SH on the +X, +Y, +Z faces of every cell (3 per cell), or empty.
 template <class Vec4>
