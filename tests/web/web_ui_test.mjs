@@ -156,7 +156,10 @@ test('moving a slider renders a new frame whose request carried the new value', 
   assert.equal(await page.locator('#lpv-iterations').inputValue(), '12', 'the number box follows the slider');
   assert.match(page.url(), /request=.*iterations/, 'the URL holds the new value');
 
-  // A change while a request is in flight aborts it: its frame never reaches the screen.
+  // A change while a request is in flight aborts it: its frame never reaches the screen. Frames
+  // of a 64³ grid take long enough that the next change surely comes while one is in flight.
+  await page.locator('#lpv-grid').fill('64');
+  await frameShown(page, (request) => request.lpv?.grid === 64);
   await page.evaluate(() => {
     const frame = document.getElementById('frame');
     window.framesShown = [];
@@ -172,6 +175,8 @@ test('moving a slider renders a new frame whose request carried the new value', 
   await aborted;
   await frameShown(page, (request) => request.lpv?.iterations === 21);
   assert.deepEqual(await page.evaluate(() => window.framesShown), [21], 'only the newest request was shown');
+  await page.locator('#lpv-grid').fill('16');  // the default again, for the timings below
+  await frameShown(page, (request) => request.lpv?.grid === undefined && request.lpv?.iterations === 21);
 
   // Time from a slider change to its frame on screen (cornell-box, 512x512), from the
   // page's own performance marks, and what it is made of: the debounce, the server and
@@ -217,14 +222,14 @@ test('the timing chart and the plan appear, with the reasons of skipped passes',
 test('A/B compare shows A and B, the difference, metrics and both timings', async (t) => {
   const { page, errors } = await openPage(t);
   await page.locator('#ab-pin').click();
-  await page.locator('#lpv-grid').fill('16');
-  await frameShown(page, (request) => request.lpv?.grid === 16);
-  assert.match(await page.locator('#ab-changes').textContent(), /lpv\.grid: default → 16/);
+  await page.locator('#lpv-grid').fill('8');
+  await frameShown(page, (request) => request.lpv?.grid === 8);
+  assert.match(await page.locator('#ab-changes').textContent(), /lpv\.grid: default → 8/);
   const sent = page.waitForRequest((r) => r.url().endsWith('/v1/compare'));
   await page.locator('#ab-run').click();
   const body = JSON.parse((await sent).postData());
   assert.deepEqual(body.base, {}, 'A is the default request');
-  assert.deepEqual(body.against, { lpv: { grid: 16 } }, 'B is A with the grid changed');
+  assert.deepEqual(body.against, { lpv: { grid: 8 } }, 'B is A with the grid changed');
   await page.locator('#ab-result').waitFor({ state: 'visible', timeout: 60_000 });
   for (const id of ['ab-image-a', 'ab-image-b', 'ab-overlay-a', 'ab-overlay-b', 'ab-difference'])
     assert.ok(await page.locator(`#${id}`).evaluate((img) => img.naturalWidth) > 0, `${id} is an image`);
@@ -262,7 +267,7 @@ test('a bad value shows the server\'s message next to its control', async (t) =>
   const iterationsError = page.locator('.control:has(#lpv-iterations) .field-error');
   await iterationsError.waitFor({ timeout: 30_000 });
   assert.equal(await iterationsError.textContent(), 'lpv.iterations: is 500; this server allows at most 64');
-  await page.locator('#lpv-iterations').fill('8');
+  await page.locator('#lpv-iterations').fill('32');  // the default
   await frameShown(page, (request) => request.output?.width === 256 && request.lpv === undefined);
 
   // A light's field: the editor's input for lights[0].intensity gets the message.
@@ -324,7 +329,7 @@ test('the error against the reference, and a sweep whose points load their setti
   assert.ok(await page.locator('#reference-difference').evaluate((img) => img.naturalWidth) === 128);
   assert.ok(Number(await page.locator('#reference-metrics td').first().textContent()) > 0, 'an RMSE');
 
-  await page.locator('#sweep-grid').fill('8, 16');
+  await page.locator('#sweep-grid').fill('4, 8');
   await page.locator('#sweep-iterations').fill('4');
   await page.locator('#sweep-size').fill('64');
   await page.locator('#sweep-samples').fill('16');
@@ -333,14 +338,14 @@ test('the error against the reference, and a sweep whose points load their setti
   assert.equal(await page.locator('#sweep-progress').evaluate((p) => p.value), 1);
   assert.equal(await page.locator('#sweep-run').isDisabled(), false, 'Run is back');
   assert.equal(await page.locator('#sweep-stop').isDisabled(), true, 'nothing to stop');
-  assert.equal(await page.locator('#sweep-plot circle').count(), 3, 'LPV off, 8³ and 16³');
+  assert.equal(await page.locator('#sweep-plot circle').count(), 3, 'LPV off, 4³ and 8³');
   assert.ok(await page.locator('#sweep-plot circle.pareto').count() >= 1, 'the Pareto front is marked');
   await screenshot(page, '07-sweep');
 
-  await page.locator('#sweep-plot circle[aria-label^="grid 16×16×16"]').click();
-  const loaded = await frameShown(page, (request) => request.lpv?.grid === 16 && request.lpv?.iterations === 4);
+  await page.locator('#sweep-plot circle[aria-label^="grid 8×8×8"]').click();
+  const loaded = await frameShown(page, (request) => request.lpv?.grid === 8 && request.lpv?.iterations === 4);
   assert.equal(loaded.output.width, 128, 'only the LPV settings change');
-  assert.equal(await page.locator('#lpv-grid').inputValue(), '16');
+  assert.equal(await page.locator('#lpv-grid').inputValue(), '8');
 
   // A long sweep stopped after its first rows: the label says so and stays, Run comes back.
   await page.locator('#sweep-grid').fill('8, 16, 24, 32');
