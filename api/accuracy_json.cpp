@@ -22,8 +22,9 @@ using namespace reader;
 constexpr std::array<std::string_view, 3> reference_keys{"samples", "bounces", "seed"};
 constexpr std::array<std::string_view, 5> compare_keys{"base", "against", "reference", "mask", "heatmap_scale"};
 constexpr std::array<std::string_view, 6> sweep_keys{"base", "parameters", "lpv_off_row", "reference", "axis", "mask"};
-constexpr std::array<std::string_view, 7> parameter_keys{"grid",           "iterations", "cascades", "rsm",
-                                                         "vpl_downsample", "bounces",    "occlusion"};
+constexpr std::array<std::string_view, 8> parameter_keys{"grid",           "iterations", "cascades",  "rsm",
+                                                         "vpl_downsample", "bounces",    "occlusion", "transfer"};
+constexpr std::array transfers{Transfer::sharpened, Transfer::cosine};
 constexpr std::array<std::string_view, 2> axis_keys{"image", "metric"};
 constexpr std::array masks{MetricMask::all, MetricMask::surfaces, MetricMask::interior};
 constexpr std::array sweep_images{SweepImage::final_, SweepImage::indirect};
@@ -83,6 +84,8 @@ SweepParameters read_parameters(const Field& f) {
   if (auto v = obj.get("vpl_downsample")) p.vpl_downsample = read_values<std::uint32_t>(*v, read_vpl_downsample);
   if (auto v = obj.get("bounces")) p.bounces = read_values<std::uint32_t>(*v, uint_in(1, limits::max_bounces));
   if (auto v = obj.get("occlusion")) p.occlusion = read_values<bool>(*v, as_bool);
+  if (auto v = obj.get("transfer"))
+    p.transfer = read_values<Transfer>(*v, [](const Field& e) { return as_enum(e, transfers); });
   return p;
 }
 
@@ -104,6 +107,7 @@ SweepSettings settings_of(const Lpv& lpv) {
   s.vpl_downsample = lpv.vpl_downsample;
   s.bounces = lpv.bounces;
   s.occlusion = lpv.occlusion;
+  s.transfer = lpv.transfer;
   return s;
 }
 
@@ -114,7 +118,7 @@ void check_configurations(const SweepRequest& sweep) {
   for (const std::size_t n : {sweep.parameters.grid.size(), sweep.parameters.iterations.size(),
                               sweep.parameters.cascades.size(), sweep.parameters.rsm.size(),
                               sweep.parameters.vpl_downsample.size(), sweep.parameters.bounces.size(),
-                              sweep.parameters.occlusion.size()})
+                              sweep.parameters.occlusion.size(), sweep.parameters.transfer.size()})
     combinations *= std::max<std::size_t>(n, 1);
   count += combinations;
   if (count > limits::max_sweep_configurations)
@@ -200,6 +204,7 @@ std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep) {
   vary(p.vpl_downsample, [](SweepSettings& s, std::uint32_t v) { s.vpl_downsample = v; });
   vary(p.bounces, [](SweepSettings& s, std::uint32_t v) { s.bounces = v; });
   vary(p.occlusion, [](SweepSettings& s, bool v) { s.occlusion = v; });
+  vary(p.transfer, [](SweepSettings& s, Transfer v) { s.transfer = v; });
   configurations.insert(configurations.end(), grid.begin(), grid.end());
   return configurations;
 }
@@ -215,6 +220,7 @@ RenderRequest request_for(const RenderRequest& base, const SweepSettings& settin
   lpv.vpl_downsample = settings.vpl_downsample;
   lpv.bounces = settings.bounces;
   lpv.occlusion = settings.occlusion;
+  lpv.transfer = settings.transfer;
   return request;
 }
 

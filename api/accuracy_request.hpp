@@ -47,6 +47,7 @@ struct SweepParameters {
   std::vector<std::uint32_t> vpl_downsample;
   std::vector<std::uint32_t> bounces;
   std::vector<bool> occlusion;
+  std::vector<Transfer> transfer;
 };
 
 struct SweepRequest {

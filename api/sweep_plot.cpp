@@ -111,7 +111,8 @@ std::string settings_text(const SweepSettings& s) {
   return "LPV " + std::to_string(s.grid[0]) + "x" + std::to_string(s.grid[1]) + "x" + std::to_string(s.grid[2]) +
          ", " + count_of(s.iterations, "iteration") + ", " + count_of(s.cascades, "cascade") + ", RSM " +
          std::to_string(s.rsm) + ", VPL downsample " + std::to_string(s.vpl_downsample) + ", " +
-         count_of(s.bounces, "bounce") + ", occlusion " + (s.occlusion ? "on" : "off");
+         count_of(s.bounces, "bounce") + ", occlusion " + (s.occlusion ? "on" : "off") + ", transfer " +
+         to_string(s.transfer);
 }
 
 std::string tooltip(const SweepRow& row, double error, const ParetoAxis& axis) {

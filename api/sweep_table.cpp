@@ -77,7 +77,7 @@ std::vector<std::string> pass_names(const std::vector<SweepRow>& rows) {
 
 std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
   std::vector<std::string> header = {"lpv",      "grid_x", "grid_y",         "grid_z",  "iterations",
-                                     "cascades", "rsm",    "vpl_downsample", "bounces", "occlusion",
+                                     "cascades", "rsm",    "vpl_downsample", "bounces", "occlusion", "transfer",
                                      "gpu_ms",   "wall_ms"};
   for (const char* image : {"final_", "indirect_"}) {
     for (const auto& [name, field] : error_fields) header.push_back(std::string(image) + name);
@@ -100,6 +100,7 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
                                      std::to_string(s.vpl_downsample),
                                      std::to_string(s.bounces),
                                      bool_text(s.occlusion),
+                                     to_string(s.transfer),
                                      number_text(row.gpu_ms),
                                      number_text(row.wall_ms)};
   for (const ErrorMetrics* errors : {&row.final_error, &row.indirect_error}) {
@@ -137,7 +138,8 @@ json settings_json(const SweepSettings& s) {
           {"rsm", s.rsm},
           {"vpl_downsample", s.vpl_downsample},
           {"bounces", s.bounces},
-          {"occlusion", s.occlusion}};
+          {"occlusion", s.occlusion},
+          {"transfer", to_string(s.transfer)}};
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "api/error_metrics.hpp"
+#include "api/render_request.hpp"
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -21,6 +22,7 @@ struct SweepSettings {
   std::array<std::uint32_t, 3> grid{32, 32, 32};
   std::uint32_t iterations = 8, cascades = 1, rsm = 256, vpl_downsample = 1, bounces = 1;
   bool occlusion = true;
+  Transfer transfer = Transfer::sharpened;
 };
 
 struct PassTime {

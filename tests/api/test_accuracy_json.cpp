@@ -89,6 +89,19 @@ TEST(SweepRequest, ExpandsEveryCombinationAfterTheLpvOffRow) {
   EXPECT_FALSE(api::request_for(s.base, rows[0]).lpv.enabled);
 }
 
+TEST(SweepRequest, VariesTheTransferToCompareTheMethods) {
+  const api::SweepRequest s = api::parse_sweep_request(
+      R"({"base": {"lpv": {"transfer": "cosine"}}, "parameters": {"grid": [8, 16], "transfer": ["sharpened", "cosine"]}})");
+  const auto rows = api::sweep_configurations(s);
+  ASSERT_EQ(rows.size(), 1u + 2u * 2u);
+  EXPECT_EQ(rows[0].transfer, api::Transfer::cosine);  // the LPV-off row keeps the base's
+  EXPECT_EQ(rows[1].transfer, api::Transfer::sharpened);
+  EXPECT_EQ(rows[2].transfer, api::Transfer::cosine);
+  EXPECT_EQ(api::request_for(s.base, rows[1]).lpv.transfer, api::Transfer::sharpened);
+  EXPECT_EQ(api::request_for(s.base, rows[4]).lpv.transfer, api::Transfer::cosine);
+  EXPECT_EQ(rows[4].grid[0], 16u);
+}
+
 TEST(SweepRequest, KeepsAPlanTheBaseAsksFor) {
   EXPECT_EQ(api::parse_sweep_request(R"({"base": {"plan": "auto"}})").base.plan, api::PlanMode::auto_);
   const auto rows = api::sweep_configurations(api::parse_sweep_request(R"({"base": {}, "lpv_off_row": false})"));
@@ -104,6 +117,8 @@ TEST(SweepRequest, ErrorsNameTheirField) {
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"rsm": [4], "vpl_downsample": [8]}})"),
             "parameters.vpl_downsample");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"occlusion": [1]}})"), "parameters.occlusion[0]");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"transfer": ["cosine", "narrow"]}})"),
+            "parameters.transfer[1]");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"speed": [1]}})"), "parameters.speed");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "axis": {"metric": "psnr"}})"), "axis.metric");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {"output": {"width": 0}}})"), "base.output.width");

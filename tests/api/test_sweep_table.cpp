@@ -187,7 +187,7 @@ TEST(SweepCsv, HeaderHasEveryFieldOfTheRow) {
       "lpv",                     "grid_x",                   "grid_y",
       "grid_z",                  "iterations",               "cascades",
       "rsm",                     "vpl_downsample",           "bounces",
-      "occlusion",               "gpu_ms",                   "wall_ms",
+      "occlusion",               "transfer",                 "gpu_ms",                   "wall_ms",
       "final_rmse",              "final_relative_mse",       "final_psnr_db",
       "final_ssim",              "final_mean_abs_error",     "final_max_abs_error",
       "final_mean_signed_error", "final_pixels",             "indirect_rmse",
@@ -199,7 +199,7 @@ TEST(SweepCsv, HeaderHasEveryFieldOfTheRow) {
 
 TEST(SweepCsv, OneLinePerRowWithItsValues) {
   api::SweepRow r;
-  r.settings = {true, {16, 24, 48}, 12, 2, 512, 4, 2, false};
+  r.settings = {true, {16, 24, 48}, 12, 2, 512, 4, 2, false, api::Transfer::cosine};
   r.gpu_ms = 0.1;
   r.wall_ms = 1.0 / 3.0;
   r.final_error = {0.25, 0.5, 31.5, 0.875, 0.125, 2.0, -0.0625, 262144};
@@ -212,13 +212,13 @@ TEST(SweepCsv, OneLinePerRowWithItsValues) {
   for (const auto& record : csv) EXPECT_EQ(record.size(), csv[0].size());
   EXPECT_EQ(csv[1], (std::vector<std::string>{"true",  "16",     "24",    "48",      "12",
                                               "2",     "512",    "4",     "2",       "false",
-                                              "0.1",   "0.3333333333333333",         "0.25",
+                                              "cosine",                                 "0.1",   "0.3333333333333333",         "0.25",
                                               "0.5",   "31.5",   "0.875", "0.125",   "2",
                                               "-0.0625", "262144", "1.25", "1.5",    "inf",
                                               "0.75",  "1.125",  "3",     "nan",     "7",
                                               "true"}));
   // The shortest text that reads back as the same double.
-  EXPECT_EQ(std::stod(csv[1][11]), 1.0 / 3.0);
+  EXPECT_EQ(std::stod(csv[1][12]), 1.0 / 3.0);
   EXPECT_EQ(csv[2][column(csv[0], "lpv")], "false");
   EXPECT_EQ(csv[2][column(csv[0], "pareto")], "false");
   EXPECT_EQ(csv[3], csv[1]);
@@ -275,7 +275,7 @@ TEST(SweepJson, EveryFieldWithItsValue) {
   r.pareto = true;
   const json expected = json::parse(R"({
     "settings": {"lpv": false, "grid": [16, 24, 48], "iterations": 12, "cascades": 2, "rsm": 512,
-                 "vpl_downsample": 4, "bounces": 2, "occlusion": false},
+                 "vpl_downsample": 4, "bounces": 2, "occlusion": false, "transfer": "sharpened"},
     "passes": [{"name": "shadow", "gpu_ms": 0.125}, {"name": "shade", "gpu_ms": 0.5}],
     "gpu_ms": 0.625, "wall_ms": 2.5,
     "final_error": {"rmse": 0.25, "relative_mse": 0.5, "psnr_db": 31.5, "ssim": 0.875, "mean_abs_error": 0.125,
@@ -501,7 +501,7 @@ TEST(SweepSvg, TooltipsListSettingsTimeAndError) {
   api::mark_pareto(table);
   const std::string svg = api::to_svg_plot(table, "t");
   EXPECT_NE(svg.find("<title>LPV 16x24x48, 12 iterations, 2 cascades, RSM 512, VPL downsample 4, 1 bounce, "
-                     "occlusion off\nGPU 2.5 ms per frame (wall 4 ms)\nRMSE (final): 0.0125\non the Pareto front"
+                     "occlusion off, transfer sharpened\nGPU 2.5 ms per frame (wall 4 ms)\nRMSE (final): 0.0125\non the Pareto front"
                      "</title>"),
             std::string::npos)
       << svg;
