@@ -24,7 +24,6 @@ constexpr std::array<std::string_view, 5> compare_keys{"base", "against", "refer
 constexpr std::array<std::string_view, 6> sweep_keys{"base", "parameters", "lpv_off_row", "reference", "axis", "mask"};
 constexpr std::array<std::string_view, 8> parameter_keys{"grid",           "iterations", "cascades",  "rsm",
                                                          "vpl_downsample", "bounces",    "occlusion", "transfer"};
-constexpr std::array transfers{Transfer::sharpened, Transfer::cosine};
 constexpr std::array<std::string_view, 2> axis_keys{"image", "metric"};
 constexpr std::array masks{MetricMask::all, MetricMask::surfaces, MetricMask::interior};
 constexpr std::array sweep_images{SweepImage::final_, SweepImage::indirect};
@@ -84,8 +83,7 @@ SweepParameters read_parameters(const Field& f) {
   if (auto v = obj.get("vpl_downsample")) p.vpl_downsample = read_values<std::uint32_t>(*v, read_vpl_downsample);
   if (auto v = obj.get("bounces")) p.bounces = read_values<std::uint32_t>(*v, uint_in(1, limits::max_bounces));
   if (auto v = obj.get("occlusion")) p.occlusion = read_values<bool>(*v, as_bool);
-  if (auto v = obj.get("transfer"))
-    p.transfer = read_values<Transfer>(*v, [](const Field& e) { return as_enum(e, transfers); });
+  if (auto v = obj.get("transfer")) p.transfer = read_values<Transfer>(*v, read_transfer);
   return p;
 }
 

@@ -98,7 +98,6 @@ constexpr std::array<Keys, 16> lpv_keys{"enabled",   "grid",      "cascades",   
                                         "injection", "injection_offset", "transfer", "intensity", "convergence",
                                         "origin", "extent"};
 constexpr std::array injections{Injection::trilinear, Injection::nearest};
-constexpr std::array transfers{Transfer::cosine, Transfer::sharpened};
 constexpr std::string_view occlusion_source_rsm = "rsm";
 constexpr std::string_view occlusion_source_camera = "camera";
 
@@ -246,6 +245,10 @@ std::uint32_t reader::read_vpl_downsample(const Field& f) {
   return d;
 }
 
+Transfer reader::read_transfer(const Field& f) {
+  return as_enum(f, std::array{Transfer::sharpened, Transfer::cosine});
+}
+
 namespace {
 
 Lpv read_lpv(const Field& f) {
@@ -266,7 +269,7 @@ Lpv read_lpv(const Field& f) {
   if (auto v = obj.get("occlusion_sources")) read_occlusion_sources(*v, lpv);
   if (auto v = obj.get("bounces")) lpv.bounces = as_uint<std::uint32_t>(*v, 1, limits::max_bounces);
   if (auto v = obj.get("injection")) lpv.injection = as_enum(*v, injections);
-  if (auto v = obj.get("transfer")) lpv.transfer = as_enum(*v, transfers);
+  if (auto v = obj.get("transfer")) lpv.transfer = read_transfer(*v);
   if (auto v = obj.get("injection_offset")) lpv.injection_offset = as_float(*v, 0.0f, limits::max_injection_offset);
   if (auto v = obj.get("intensity")) lpv.intensity = as_float(*v, 0.0f, limits::max_lpv_intensity);
   if (auto v = obj.get("convergence")) lpv.convergence = as_float(*v, 0.0f, 1.0f);

@@ -16,5 +16,7 @@ RenderRequest read_render_request(const Field& field);
 glm::uvec3 read_grid(const Field& f);
 // "vpl_downsample": a power of two in [1, limits::max_vpl_downsample].
 std::uint32_t read_vpl_downsample(const Field& f);
+// "transfer": "sharpened" or "cosine".
+Transfer read_transfer(const Field& f);
 
 }  // namespace api::reader

@@ -73,6 +73,11 @@ std::vector<CascadePlacement> place_cascades(const api::Lpv& lpv, const scene::B
   return cascades;
 }
 
+TransferFactors transfer_factors(api::Transfer transfer) {
+  if (transfer == api::Transfer::sharpened) return {gpu::LPV_SHARPENED_TRANSFER, gpu::LPV_SHARPENED_INJECTION};
+  return {};
+}
+
 double vpl_flux_bound(const std::vector<api::Light>& lights, const scene::Bounds& bounds) {
   double bound = 0.0;
   for (const api::Light& light : lights) {
@@ -115,9 +120,8 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene
                        lpv.intensity, lpv.injection_offset);
   const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);
   g.camera = glm::vec4(pixel_footprint, camera.position);
-  const bool sharpened = lpv.transfer == api::Transfer::sharpened;
-  g.transfer = glm::vec4(sharpened ? gpu::LPV_SHARPENED_TRANSFER : 1.0f, sharpened ? gpu::LPV_SHARPENED_INJECTION : 1.0f,
-                         0.0f, 0.0f);
+  const TransferFactors factors = transfer_factors(lpv.transfer);
+  g.transfer = glm::vec4(factors.propagated, factors.injected, 0.0f, 0.0f);
 
   for (const LightView& view : views) {
     gpu::GpuRsmView v{};

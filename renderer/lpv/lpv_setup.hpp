@@ -33,6 +33,15 @@ double vpl_flux_bound(const std::vector<api::Light>& lights, const scene::Bounds
 // leaves 2^60 units for the bound, far from the int64 limit whatever the light's magnitude.
 float flux_units_per_watt(double flux_bound);
 
+// The factors on the directional (band-1) terms of the lobes a transfer propagates and
+// injects (GpuLpv::transfer): 1 and 1 for cosine lobes, LPV_SHARPENED_TRANSFER and
+// LPV_SHARPENED_INJECTION (shaders/shared/lpv_sh.h) for the sharpened transfer.
+struct TransferFactors {
+  float propagated = 1.0f;
+  float injected = 1.0f;
+};
+TransferFactors transfer_factors(api::Transfer transfer);
+
 // Geometry volume: fixed-point units per unit of blocking potential.
 inline constexpr float kGeometryUnitsPerPotential = 1048576.0f;  // 2^20
 

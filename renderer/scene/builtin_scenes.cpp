@@ -13,6 +13,56 @@ const Material kWhite{"white", {0.73f, 0.73f, 0.73f}, {}};
 const Material kRed{"red", {0.63f, 0.065f, 0.05f}, {}};
 const Material kGreen{"green", {0.14f, 0.45f, 0.091f}, {}};
 
+// A closed room of inward-facing walls: x, y, z in [lo, hi]. The camera sees through the
+// walls whose backs face it (back faces are culled), as through the Cornell box's front.
+void add_room(SceneBuilder& b, glm::vec3 lo, glm::vec3 hi, std::uint32_t floor, std::uint32_t walls) {
+  b.add_quad({lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}, {lo.x, lo.y, lo.z}, floor);  // floor
+  b.add_quad({lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, walls);  // ceiling
+  b.add_quad({lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}, walls);  // -z
+  b.add_quad({hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}, walls);  // +z
+  b.add_quad({lo.x, lo.y, hi.z}, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, walls);  // -x
+  b.add_quad({hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z}, walls);  // +x
+}
+
+// A sun `elevation_deg` above the horizon, shining towards the horizontal direction `toward`.
+api::Light sun(float elevation_deg, glm::vec2 toward, float irradiance) {
+  const float e = glm::radians(elevation_deg);
+  const glm::vec2 h = glm::normalize(toward) * std::cos(e);
+  api::Light light;
+  light.type = api::LightType::directional;
+  light.direction = {h.x, -std::sin(e), h.y};
+  light.intensity = irradiance;  // W/m^2 at normal incidence
+  return light;
+}
+
+// A spot at `position` shining straight down, with its cone's inner and outer half-angles.
+api::Light spot_down(glm::vec3 position, float intensity, float inner_cone_deg, float outer_cone_deg) {
+  api::Light spot;
+  spot.type = api::LightType::spot;
+  spot.position = position;
+  spot.direction = {0.0f, -1.0f, 0.0f};
+  spot.intensity = intensity;  // W/sr
+  spot.inner_cone_deg = inner_cone_deg;
+  spot.outer_cone_deg = outer_cone_deg;
+  return spot;
+}
+
+api::Light point_light(glm::vec3 position, float intensity) {
+  api::Light point;
+  point.type = api::LightType::point;
+  point.position = position;
+  point.intensity = intensity;  // W/sr
+  return point;
+}
+
+api::Camera camera_at(glm::vec3 position, glm::vec3 target, float fov_y_deg) {
+  api::Camera camera;
+  camera.position = position;
+  camera.target = target;
+  camera.fov_y_deg = fov_y_deg;
+  return camera;
+}
+
 // The closed 2 m box: x in [-1, 1], y in [0, 2], z in [-1, 1], every wall facing inwards.
 // The front wall (z = 1) faces away from the default camera, which sees through it
 // because back faces are culled.
@@ -35,24 +85,13 @@ SceneBuilder cornell_shell(std::string name) {
 
 Scene cornell_box() {
   SceneBuilder b = cornell_shell("cornell-box");
-  api::Light spot;
-  spot.type = api::LightType::spot;
-  spot.position = {0.0f, 1.9f, 0.0f};
-  spot.direction = {0.0f, -1.0f, 0.0f};
-  spot.intensity = 10.0f;  // W/sr: 0.64 W/(m^2 sr) on the white floor below it
-  spot.inner_cone_deg = 35.0f;
-  spot.outer_cone_deg = 40.0f;
-  b.add_light(spot);
+  b.add_light(spot_down({0.0f, 1.9f, 0.0f}, 10.0f, 35.0f, 40.0f));  // 0.64 W/(m^2 sr) on the white floor below it
   return b.build();
 }
 
 Scene cornell_box_point() {
   SceneBuilder b = cornell_shell("cornell-box-point");
-  api::Light point;
-  point.type = api::LightType::point;
-  point.position = {0.0f, 1.2f, 0.0f};
-  point.intensity = 2.5f;  // W/sr
-  b.add_light(point);
+  b.add_light(point_light({0.0f, 1.2f, 0.0f}, 2.5f));
   return b.build();
 }
 
@@ -82,36 +121,6 @@ Scene sun_courtyard() {
   return b.build();
 }
 
-// A closed room of inward-facing walls: x, y, z in [lo, hi]. The camera sees through the
-// walls whose backs face it (back faces are culled), as through the Cornell box's front.
-void add_room(SceneBuilder& b, glm::vec3 lo, glm::vec3 hi, std::uint32_t floor, std::uint32_t walls) {
-  b.add_quad({lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}, {lo.x, lo.y, lo.z}, floor);  // floor
-  b.add_quad({lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, walls);  // ceiling
-  b.add_quad({lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}, walls);  // -z
-  b.add_quad({hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {hi.x, hi.y, hi.z}, walls);  // +z
-  b.add_quad({lo.x, lo.y, hi.z}, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, walls);  // -x
-  b.add_quad({hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z}, walls);  // +x
-}
-
-// A sun `elevation_deg` above the horizon, shining towards the horizontal direction `toward`.
-api::Light sun(float elevation_deg, glm::vec2 toward, float irradiance) {
-  const float e = glm::radians(elevation_deg);
-  const glm::vec2 h = glm::normalize(toward) * std::cos(e);
-  api::Light light;
-  light.type = api::LightType::directional;
-  light.direction = {h.x, -std::sin(e), h.y};
-  light.intensity = irradiance;  // W/m^2 at normal incidence
-  return light;
-}
-
-api::Camera camera_at(glm::vec3 position, glm::vec3 target, float fov_y_deg) {
-  api::Camera camera;
-  camera.position = position;
-  camera.target = target;
-  camera.fov_y_deg = fov_y_deg;
-  return camera;
-}
-
 // Range: an 8 m corridor lit by a point light at its far end, seen from the near end. Most of
 // what the camera sees is lit only by light that bounced metres away.
 Scene corridor() {
@@ -119,11 +128,7 @@ Scene corridor() {
   const auto floor = b.add_material({"floor", {0.6f, 0.6f, 0.6f}, {}});
   const auto walls = b.add_material(kWhite);
   add_room(b, {-0.75f, 0.0f, -8.0f}, {0.75f, 2.5f, 0.0f}, floor, walls);
-  api::Light point;
-  point.type = api::LightType::point;
-  point.position = {0.0f, 1.6f, -7.4f};
-  point.intensity = 3.0f;  // W/sr
-  b.add_light(point);
+  b.add_light(point_light({0.0f, 1.6f, -7.4f}, 3.0f));
   b.set_camera(camera_at({0.0f, 1.4f, -0.2f}, {0.0f, 1.1f, -8.0f}, 55.0f));
   return b.build();
 }
@@ -136,14 +141,7 @@ Scene thin_wall_room() {
   const auto white = b.add_material(kWhite);
   add_room(b, {-2.0f, 0.0f, -1.5f}, {2.0f, 2.5f, 1.5f}, white, white);
   b.add_box({0.0f, 0.0f, 0.0f}, {0.02f, 2.5f, 3.0f}, 0.0f, white);
-  api::Light spot;
-  spot.type = api::LightType::spot;
-  spot.position = {-1.0f, 2.4f, 0.0f};
-  spot.direction = {0.0f, -1.0f, 0.0f};
-  spot.intensity = 10.0f;  // W/sr
-  spot.inner_cone_deg = 40.0f;
-  spot.outer_cone_deg = 45.0f;
-  b.add_light(spot);
+  b.add_light(spot_down({-1.0f, 2.4f, 0.0f}, 10.0f, 40.0f, 45.0f));
   b.set_camera(camera_at({0.0f, 6.0f, 3.0f}, {0.0f, 0.6f, 0.0f}, 50.0f));
   return b.build();
 }

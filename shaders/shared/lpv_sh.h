@@ -72,8 +72,9 @@ LPV_CONST_F LPV_SIDE_FACE_SOLID_ANGLE = 0.4234313544;
 // k = 0.24533 of its flux, which re-emitted as a lobe is a ratio of 2k, not 3/2: this factor,
 // 3/2 / (2k), makes that field a fixed point of one step, so a lit plane's light keeps its
 // shape instead of spilling back onto the plane. It changes no flux (the constant term is
-// untouched; lpv_outgoing_scale drops the negative faces it makes). tests/lpv/test_lpv_sh.cpp
-// derives it again from the face geometry.
+// untouched; lpv_outgoing_scale drops the negative faces it makes). tests/lpv/
+// test_lpv_propagation.cpp propagates that field on the CPU reference and checks it keeps its
+// shape with this factor (and prints 2k without it).
 LPV_CONST_F LPV_SHARPENED_TRANSFER = 3.0570784452;
 // With it, each VPL is injected as that same hemisphere, directional terms 3/2 of its constant
 // term instead of the cosine lobe's 2 (a factor 3/4 on band 1; the flux is the same): a VPL

@@ -81,7 +81,9 @@ TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) {
 // clang-format off
 // Measured at 64x64, 1024 samples (docs/accuracy.md, "The scorecard"): gain, indirect ratio,
 // probe. Bounds: gain +0.08, indirect ratio +-0.15, probes as commented; the lone plane's
-// indirect light at most 2% of its direct light (measured 0.000).
+// indirect light at most 2% of its direct light (measured 0.000). 9 marks a measure not
+// bounded for the scene, an indirect range starting at 0 one not checked (the lone plane's
+// reference has no indirect light), a probe range ending at 0 a scene without a probe.
 const Bounds kBounds[] = {
     // scene               gain   indirect      ind/dir  probe
     {"cornell-box",        0.45,  0.80, 1.10,   9.0,     0.45, 0.80},  // 0.365 0.952, ceiling 0.603

@@ -5,7 +5,7 @@
 #include "lpv_cpu_reference.hpp"
 #include "lpv_snapshot_grid.hpp"
 #include "renderer/gpu_types.hpp"
-#include "shaders/shared/lpv_sh.h"
+#include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 
 #include <algorithm>
@@ -146,7 +146,7 @@ TEST_F(Lpv, InjectedGridMatchesTheDoublePrecisionReference) {
     }
     const lpv_ref::GridD exact =
         lpv_ref::inject<glm::dvec4>(vpls, c.origin, c.cell_size, glm::ivec3(c.dims), request.lpv.injection_offset,
-                                    nearest, request.lpv.transfer == api::Transfer::sharpened ? gpu::LPV_SHARPENED_INJECTION : 1.0);
+                                    nearest, renderer::transfer_factors(request.lpv.transfer).injected);
     const double d = grid_difference(grid_of(c), exact);
     std::printf("injected grid (%s), GPU (float) against double: %.2e of the largest coefficient\n",
                 api::to_string(injection).c_str(), d);
@@ -184,7 +184,7 @@ TEST_F(Lpv, PropagatedGridMatchesTheDoublePrecisionReference) {
       lpv_ref::GridD grid = grid_of(injected.lpv.cascades.at(0));
       lpv_ref::GridD accumulated = grid;
       for (int k = 0; k < 6; ++k) {
-        grid = lpv_ref::propagate(grid, {}, transfer == api::Transfer::sharpened ? gpu::LPV_SHARPENED_TRANSFER : 1.0);
+        grid = lpv_ref::propagate(grid, {}, renderer::transfer_factors(transfer).propagated);
         for (std::size_t i = 0; i < grid.sh.size(); ++i) accumulated.sh[i] += grid.sh[i];
       }
       const double d = grid_difference(grid_of(propagated.lpv.cascades.at(0)), accumulated);
