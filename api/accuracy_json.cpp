@@ -163,6 +163,7 @@ SweepRequest parse_sweep_request(std::string_view json_text) {
   SweepRequest sweep;
   sweep.base = read_base(obj);
   if (!document.at("base").contains("plan")) sweep.base.plan = PlanMode::exact;
+  if (!document.at("base").contains("repeat")) sweep.base.repeat = sweep_default_repeat;
   if (auto v = obj.get("parameters")) sweep.parameters = read_parameters(*v);
   if (auto v = obj.get("lpv_off_row")) sweep.lpv_off_row = as_bool(*v);
   if (auto v = obj.get("reference")) sweep.reference = read_reference(*v);

@@ -50,9 +50,15 @@ struct SweepParameters {
   std::vector<Transfer> transfer;
 };
 
+// A sweep times each row's frame this many times unless its base says otherwise: the fewest
+// whose median one slow frame cannot move, and whose range says how far a row's time can be
+// trusted (sweep.hpp).
+inline constexpr std::uint32_t sweep_default_repeat = 3;
+
 struct SweepRequest {
   // Scene, camera, lights, output size and every setting the sweep does not vary. Its plan
-  // is "exact" unless it says otherwise: a sweep measures the settings it names.
+  // is "exact" unless it says otherwise: a sweep measures the settings it names. Its repeat
+  // is the timed frames of each row (default sweep_default_repeat).
   RenderRequest base;
   SweepParameters parameters;
   bool lpv_off_row = true;  // a row without LPV (direct light only): the error LPV starts from

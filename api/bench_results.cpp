@@ -131,6 +131,11 @@ std::string to_string(BenchCaseStatus status) {
 nlohmann::json to_json(const BenchResults& r) {
   json cases = json::array();
   for (const BenchCaseResult& c : r.cases) cases.push_back(case_json(c));
+  json noise = nullptr;
+  if (r.noise)
+    noise = {{"probe", metric_json({"probe_ms", r.noise->probe_ms})},
+             {"load_average", {r.noise->load_start, r.noise->load_end}},
+             {"steal", r.noise->steal}};
   return {{"format", kFormat},
           {"schema_version", bench_results_schema_version},
           {"suite", {{"name", r.suite}, {"version", r.suite_version}}},
@@ -156,6 +161,7 @@ nlohmann::json to_json(const BenchResults& r) {
             {"commit", r.build.commit},
             {"dirty", r.build.dirty},
             {"sanitizers", r.build.sanitizers}}},
+          {"noise", std::move(noise)},
           {"cases", std::move(cases)}};
 }
 
@@ -192,6 +198,12 @@ BenchResults parse_bench_results(std::string_view json_text) {
   r.build = {text(build, "version"),       text(build, "compiler"), text(build, "build_type"),
              text(build, "commit"),        as_bool(build.member("dirty")),
              as_bool(build.member("sanitizers"))};
+  if (auto noise = root.optional_member("noise"); noise && !noise->value->is_null()) {
+    const Field load = noise->member("load_average");
+    if (!load.value->is_array() || load.value->size() != 2) load.reject("an array of 2 numbers");
+    r.noise = BenchNoise{read_metric(noise->member("probe")).samples, as_double(load.element(0), 0.0, 1e6),
+                         as_double(load.element(1), 0.0, 1e6), as_double(noise->member("steal"), 0.0, 1.0)};
+  }
   for (const Field& c : as_array(root.member("cases"), limits::max_bench_cases)) r.cases.push_back(read_case(c));
   return r;
 }

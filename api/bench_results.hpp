@@ -90,6 +90,17 @@ struct BenchBuild {
   bool sanitizers = false; // an LPV_SANITIZE build: its times say nothing about a release
 };
 
+// How steady the machine was while the run measured (renderer/bench/machine_noise.hpp): a
+// fixed piece of CPU work timed before every round of renders, the load average at the start
+// and the end, and the share of CPU time the hypervisor took (steal). A comparison says
+// "inconclusive: noisy machine" rather than judge times a noisy run measured.
+struct BenchNoise {
+  std::vector<double> probe_ms;  // the probe's times, in the order measured
+  double load_start = 0.0;  // 1-minute load average
+  double load_end = 0.0;
+  double steal = 0.0;       // stolen / all CPU time over the run, 0 .. 1
+};
+
 struct BenchResults {
   std::string suite;
   std::uint32_t suite_version = 0;
@@ -104,6 +115,7 @@ struct BenchResults {
   BenchMachine machine;
   BenchDevice device;
   BenchBuild build;
+  std::optional<BenchNoise> noise;  // absent in results of lpv-bench before it measured noise
   std::vector<BenchCaseResult> cases;
 
   const BenchCaseResult* find(std::string_view case_name) const;

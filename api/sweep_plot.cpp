@@ -116,13 +116,18 @@ std::string settings_text(const SweepSettings& s) {
 }
 
 std::string tooltip(const SweepRow& row, double error, const ParetoAxis& axis) {
-  std::string text = settings_text(row.settings) + "\nGPU " + short_number(row.gpu_ms) + " ms per frame (wall " +
-                     short_number(row.wall_ms) + " ms)\n" + error_label(axis) + ": " + short_number(error);
+  std::string text = settings_text(row.settings) + "\nGPU " + short_number(row.gpu_ms) + " ms per frame (";
+  if (row.frames > 1)
+    text += "median of " + std::to_string(row.frames) + ", " + short_number(row.gpu_ms_range.first) + "–" +
+            short_number(row.gpu_ms_range.second) + "; ";
+  text += "wall " + short_number(row.wall_ms) + " ms)\n" + error_label(axis) + ": " + short_number(error);
   // PSNR and SSIM are better known than the forms plotted: their own values follow.
   const ErrorMetrics& errors = image_errors(row, axis.image);
   if (axis.metric == SweepMetric::psnr_db) text += " (PSNR " + short_number(errors.psnr_db) + " dB)";
   if (axis.metric == SweepMetric::ssim) text += " (SSIM " + short_number(errors.ssim) + ")";
   if (row.pareto) text += "\non the Pareto front";
+  if (row.pareto_uncertain) text += row.pareto ? " (uncertain: within the ranges of the frame times it could be off it)"
+                                               : "\noff the Pareto front (uncertain: within the ranges of the frame times it could be on it)";
   return text;
 }
 
@@ -194,6 +199,16 @@ void draw_legend(SvgWriter& svg) {
 
 void draw_point(SvgWriter& svg, const Point& point, const LogAxis& x, const LogAxis& y, const ParetoAxis& axis) {
   const bool pareto = point.row->pareto;
+  // The frames' range of GPU times as a whisker, where a log scale can place it.
+  const auto [fastest, slowest] = point.row->gpu_ms_range;
+  if (point.row->frames > 1 && fastest > 0.0 && std::isfinite(slowest) && slowest > fastest)
+    svg.element("line", {{"class", "range"},
+                         {"x1", svg_number(x.pixel(fastest))},
+                         {"x2", svg_number(x.pixel(slowest))},
+                         {"y1", svg_number(y.pixel(point.error))},
+                         {"y2", svg_number(y.pixel(point.error))},
+                         {"stroke", pareto ? pareto_colour : row_colour},
+                         {"stroke-opacity", "0.6"}});
   svg.open("circle", {{"class", pareto ? "row pareto" : "row"},
                       {"cx", svg_number(x.pixel(point.time))},
                       {"cy", svg_number(y.pixel(point.error))},
@@ -265,11 +280,17 @@ std::string to_svg_plot(const SweepTable& table, const std::string& title) {
     return svg.finish();
   }
 
-  const auto [min_time, max_time] = std::minmax_element(
-      points.begin(), points.end(), [](const Point& a, const Point& b) { return a.time < b.time; });
+  // The time axis holds the rows' ranges too, where they can be placed.
+  double min_time = points.front().time, max_time = min_time;
+  for (const Point& p : points) {
+    const auto [fastest, slowest] = p.row->gpu_ms_range;
+    const bool ranged = p.row->frames > 1 && fastest > 0.0 && std::isfinite(slowest);
+    min_time = std::min(min_time, ranged ? fastest : p.time);
+    max_time = std::max(max_time, ranged ? slowest : p.time);
+  }
   const auto [min_error, max_error] = std::minmax_element(
       points.begin(), points.end(), [](const Point& a, const Point& b) { return a.error < b.error; });
-  const LogAxis x = fit_log_axis(min_time->time, max_time->time, left, right);
+  const LogAxis x = fit_log_axis(min_time, max_time, left, right);
   const LogAxis y = fit_log_axis(min_error->error, max_error->error, bottom, top);  // up is smaller pixels
 
   draw_axes(svg, x, y, table.axis);

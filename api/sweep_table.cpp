@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 #include <string_view>
@@ -78,12 +79,13 @@ std::vector<std::string> pass_names(const std::vector<SweepRow>& rows) {
 std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
   std::vector<std::string> header = {"lpv",      "grid_x", "grid_y",         "grid_z",  "iterations",
                                      "cascades", "rsm",    "vpl_downsample", "bounces", "occlusion", "transfer",
-                                     "gpu_ms",   "wall_ms"};
+                                     "frames",   "gpu_ms", "gpu_ms_min",     "gpu_ms_max", "wall_ms"};
   for (const char* image : {"final_", "indirect_"}) {
     for (const auto& [name, field] : error_fields) header.push_back(std::string(image) + name);
     header.push_back(std::string(image) + "pixels");
   }
   header.push_back("pareto");
+  header.push_back("pareto_uncertain");
   for (const std::string& pass : passes) header.push_back(pass + "_gpu_ms");
   return header;
 }
@@ -101,13 +103,17 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
                                      std::to_string(s.bounces),
                                      bool_text(s.occlusion),
                                      to_string(s.transfer),
+                                     std::to_string(row.frames),
                                      number_text(row.gpu_ms),
+                                     number_text(row.gpu_ms_range.first),
+                                     number_text(row.gpu_ms_range.second),
                                      number_text(row.wall_ms)};
   for (const ErrorMetrics* errors : {&row.final_error, &row.indirect_error}) {
     for (const auto& [name, field] : error_fields) fields.push_back(number_text(errors->*field));
     fields.push_back(std::to_string(errors->pixels));
   }
   fields.push_back(bool_text(row.pareto));
+  fields.push_back(bool_text(row.pareto_uncertain));
   for (const std::string& name : passes) {
     // A name twice in one row (the renderer emits each pass once) is summed, so that the
     // pass columns still add up to gpu_ms.
@@ -186,16 +192,36 @@ std::string error_label(const ParetoAxis& axis) {
 void mark_pareto(SweepTable& table) {
   std::vector<double> errors;
   for (const SweepRow& row : table.rows) errors.push_back(error_of(row, table.axis));
+  // A row's possible times: its range, or anything when one frame gave none.
+  const auto low = [&](std::size_t i) { return table.rows[i].frames > 1 ? table.rows[i].gpu_ms_range.first : 0.0; };
+  const auto high = [&](std::size_t i) {
+    return table.rows[i].frames > 1 ? table.rows[i].gpu_ms_range.second : std::numeric_limits<double>::infinity();
+  };
   // Every pair: sweeps have tens to hundreds of rows, and this is plainly the definition.
   // NaN compares false, so a NaN row dominates nothing; it is kept off the front below.
   const auto dominates = [&](std::size_t a, std::size_t b) {
     const double time_a = table.rows[a].gpu_ms, time_b = table.rows[b].gpu_ms;
     return time_a <= time_b && errors[a] <= errors[b] && (time_a < time_b || errors[a] < errors[b]);
   };
+  // a dominates b for every time in the ranges; for some time in them.
+  const auto surely_dominates = [&](std::size_t a, std::size_t b) {
+    return errors[a] <= errors[b] && high(a) <= low(b) && (high(a) < low(b) || errors[a] < errors[b]);
+  };
+  const auto possibly_dominates = [&](std::size_t a, std::size_t b) {
+    return errors[a] <= errors[b] && low(a) <= high(b) && (low(a) < high(b) || errors[a] < errors[b]);
+  };
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
-    bool dominated = std::isnan(table.rows[i].gpu_ms) || std::isnan(errors[i]);
-    for (std::size_t j = 0; j < table.rows.size() && !dominated; ++j) dominated = dominates(j, i);
-    table.rows[i].pareto = !dominated;
+    SweepRow& row = table.rows[i];
+    const bool unmeasured = std::isnan(row.gpu_ms) || std::isnan(errors[i]);
+    bool dominated = unmeasured, surely = unmeasured, possibly = unmeasured;
+    for (std::size_t j = 0; j < table.rows.size(); ++j) {
+      if (j == i || std::isnan(table.rows[j].gpu_ms) || std::isnan(errors[j])) continue;
+      dominated = dominated || dominates(j, i);
+      surely = surely || surely_dominates(j, i);
+      possibly = possibly || possibly_dominates(j, i);
+    }
+    row.pareto = !dominated;
+    row.pareto_uncertain = !surely && possibly;
   }
 }
 
@@ -212,11 +238,14 @@ nlohmann::json to_json(const SweepRow& row) {
   for (const PassTime& pass : row.passes) passes.push_back({{"name", pass.name}, {"gpu_ms", number_json(pass.gpu_ms)}});
   return {{"settings", settings_json(row.settings)},
           {"passes", std::move(passes)},
+          {"frames", row.frames},
           {"gpu_ms", number_json(row.gpu_ms)},
+          {"gpu_ms_range", {number_json(row.gpu_ms_range.first), number_json(row.gpu_ms_range.second)}},
           {"wall_ms", number_json(row.wall_ms)},
           {"final_error", to_json(row.final_error)},
           {"indirect_error", to_json(row.indirect_error)},
-          {"pareto", row.pareto}};
+          {"pareto", row.pareto},
+          {"pareto_uncertain", row.pareto_uncertain}};
 }
 
 nlohmann::json to_json(const SweepTable& table) {

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace api {
@@ -33,11 +34,16 @@ struct PassTime {
 struct SweepRow {
   SweepSettings settings;
   std::vector<PassTime> passes;  // the passes that ran, in order
+  std::uint32_t frames = 0;      // timed frames (0: none yet, the times are NaN)
   double gpu_ms = 0.0;           // median frame GPU time (sum of passes)
+  // The fastest and slowest of the frames' GPU times: how far the median can be trusted.
+  // With 3 frames the median lies in it with 75% confidence, with 5 with 94%.
+  std::pair<double, double> gpu_ms_range{0.0, 0.0};
   double wall_ms = 0.0;          // median frame wall time
   ErrorMetrics final_error;      // `final` view against the reference's final image
   ErrorMetrics indirect_error;   // `indirect` view against the reference's indirect image
   bool pareto = false;           // set by mark_pareto
+  bool pareto_uncertain = false; // set by mark_pareto: the ranges could put the row either side
 };
 
 // Which error the Pareto front and the plot use.
@@ -75,12 +81,16 @@ std::string error_label(const ParetoAxis& axis);
 // accurate (error_of on table.axis), and strictly better in one of the two. Equal rows do
 // not dominate each other, so duplicates on the front are all marked. A row whose time or
 // error is NaN is unmeasured: it is never on the front and dominates no row.
+// And rows[i].pareto_uncertain: true when the times within the rows' gpu_ms_range could
+// decide the row either way: no row dominates it for every such time, but some row does for
+// some. A row timed once has no range: any time is possible. Errors are deterministic.
 void mark_pareto(SweepTable& table);
 
 // RFC 4180 (CRLF line ends, fields with a comma, quote or line break quoted): a header and
 // one line per row with every field of the row: lpv, grid_x, grid_y, grid_z, iterations,
-// cascades, rsm, vpl_downsample, bounces, occlusion, gpu_ms, wall_ms, final_<metric> and
-// indirect_<metric> for every ErrorMetrics field, pareto, then one "<pass>_gpu_ms" column
+// cascades, rsm, vpl_downsample, bounces, occlusion, transfer, frames, gpu_ms, gpu_ms_min,
+// gpu_ms_max, wall_ms, final_<metric> and indirect_<metric> for every ErrorMetrics field,
+// pareto, pareto_uncertain, then one "<pass>_gpu_ms" column
 // per pass name (the union over the rows, in pipeline order; empty where the pass did not
 // run). Booleans are true/false, numbers the shortest text that reads back the same value,
 // non-finite numbers inf, -inf and nan. The pareto column is the flag as it is: call
@@ -88,8 +98,9 @@ void mark_pareto(SweepTable& table);
 std::string to_csv(const SweepTable& table);
 
 // {"settings": {"lpv", "grid": [x, y, z], "iterations", "cascades", "rsm", "vpl_downsample",
-//  "bounces", "occlusion"}, "passes": [{"name", "gpu_ms"}], "gpu_ms", "wall_ms",
-//  "final_error": {every ErrorMetrics field}, "indirect_error": {...}, "pareto"}.
+//  "bounces", "occlusion", "transfer"}, "passes": [{"name", "gpu_ms"}], "frames", "gpu_ms",
+//  "gpu_ms_range": [min, max], "wall_ms", "final_error": {every ErrorMetrics field},
+//  "indirect_error": {...}, "pareto", "pareto_uncertain"}.
 // JSON has no infinity or NaN: a non-finite number (e.g. psnr_db of identical images, +inf)
 // is written as null.
 nlohmann::json to_json(const SweepRow& row);

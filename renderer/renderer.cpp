@@ -57,6 +57,13 @@ std::uint32_t gpu_view(api::View v) {
   return gpu::VIEW_FINAL;
 }
 
+// Keeps this thread busy, as work would, for `ms` (RendererOptions::test_slowdown).
+void busy_wait_ms(double ms) {
+  const auto until = Clock::now() + std::chrono::duration<double, std::milli>(ms);
+  while (Clock::now() < until) {
+  }
+}
+
 std::string mib(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
 // An RGBA image of the output's size from a mapped readback buffer.
@@ -102,7 +109,8 @@ struct Renderer::Impl {
         shade(device),
         timer(device),
         scene_source(std::move(options.scenes)),
-        scenes(options.scene_cache_bytes) {
+        scenes(options.scene_cache_bytes),
+        test_slowdown(options.test_slowdown) {
     VkCommandPoolCreateInfo pool_ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_ci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pool_ci.queueFamilyIndex = device.queue_family();
@@ -131,6 +139,7 @@ struct Renderer::Impl {
 
   SceneSource scene_source;
   SceneCache scenes;
+  double test_slowdown;
   std::optional<FrameTargets> targets;
   std::optional<ShadowAtlas> atlas;
   std::optional<RsmMaps> rsm_maps;
@@ -408,6 +417,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     if (readback & kReadbackDisplay) copy_to_host(targets->display_readback, out, result.display);
     if (readback & kReadbackLinear) copy_to_host(targets->linear_readback, out, result.linear);
     readback_ms.push_back(ms_since(readback_start));
+    if (test_slowdown > 1.0) busy_wait_ms(ms_since(frame_start) * (test_slowdown - 1.0));
     wall_ms.push_back(ms_since(frame_start));
   }
 

@@ -70,6 +70,10 @@ struct RendererOptions {
   // (LpvPropagatePass). lpv-render's --propagate-column sets it, for measuring; tests, to run
   // the GPU's choice on lavapipe.
   std::uint32_t propagate_column = 0;
+  // For testing that regression verdicts see a slowdown of known size (lpv-bench
+  // --test-slowdown): each frame keeps the CPU busy for (test_slowdown - 1) times its own
+  // time before its wall time is taken. 1: off.
+  double test_slowdown = 1.0;
 };
 
 struct SceneCacheStats {

@@ -56,8 +56,15 @@ void SweepJob::run(accuracy::Workbench& bench) {
   observer.reference_done = [&](const api::ReferenceReport& report) {
     events.push({{"event", "reference"}, {"reference", api::to_json(report)}});
   };
-  observer.row_done = [&](std::size_t index, std::size_t total, const api::SweepRow& row) {
+  observer.row_measured = [&](std::size_t index, std::size_t total, const api::SweepRow& row) {
     events.push({{"event", "row"}, {"index", index}, {"total", total}, {"row", api::to_json(row)}});
+  };
+  Clock::time_point last_timing{};
+  observer.timing_progress = [&](std::size_t done, std::size_t total) {
+    const auto now = Clock::now();
+    if (done < total && now - last_timing < kProgressInterval) return;
+    last_timing = now;
+    events.push({{"event", "timing_progress"}, {"done", done}, {"total", total}});
   };
   observer.stop_requested = [this] { return should_stop(); };
   try {

@@ -77,10 +77,13 @@ export class SweepPanel {
         elements.status.textContent = `Reference: ${event.reference.samples} samples per pixel, traced in ${formatMs(event.reference.trace_ms)} ms` +
           `${event.reference.cached ? ' (cached)' : ''}, noise RMSE ${event.reference.noise_rmse.toPrecision(3)}.`;
         break;
-      case 'row':
+      case 'row':  // its errors; its times come in the timed rounds
         this.#rows[event.index] = event.row;
-        this.#progress(`Rendered ${event.index + 1} of ${event.total} configurations`, (event.index + 1) / event.total);
+        this.#progress(`Rendered ${event.index + 1} of ${event.total} configurations`, 0.5 * (event.index + 1) / event.total);
         this.#draw(axis);
+        break;
+      case 'timing_progress':
+        this.#progress(`Timing: frame ${event.done} of ${event.total}, the rows taking turns`, 0.5 + 0.5 * event.done / event.total);
         break;
       case 'done':
         this.#rows = event.table.rows;
@@ -116,7 +119,7 @@ export class SweepPanel {
       const load = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Load' });
       load.addEventListener('click', () => this.load(row));
       const error = row[`${axis.image}_error`][axis.metric];
-      for (const text of [describeSettings(row.settings), formatMs(row.gpu_ms), error === null ? '∞' : error.toPrecision(3), row.pareto ? '★' : ''])
+      for (const text of [describeSettings(row.settings), timeText(row), error === null ? '∞' : error.toPrecision(3), paretoText(row)])
         tr.append(Object.assign(document.createElement('td'), { textContent: text }));
       const cell = document.createElement('td');
       cell.append(load);
@@ -136,4 +139,16 @@ export class SweepPanel {
       values[`lpv.${name}`] = settings[name];
     this.state.setAll(values);
   }
+}
+
+// The median and, from several frames, their range; a dash until the row is timed.
+function timeText(row) {
+  if (row.gpu_ms === null) return '—';
+  return row.frames > 1 ? `${formatMs(row.gpu_ms)} (${formatMs(row.gpu_ms_range[0])}–${formatMs(row.gpu_ms_range[1])})` : formatMs(row.gpu_ms);
+}
+
+// ★ on the front; a question mark where the frames' ranges could put the row either side.
+function paretoText(row) {
+  if (row.pareto_uncertain) return row.pareto ? '★?' : '?';
+  return row.pareto ? '★' : '';
 }

@@ -10,13 +10,27 @@
 namespace bench {
 namespace {
 
-// Significant, large enough relative to the baseline and large enough in absolute terms
-// (the timers' resolution); anything else is "unchanged".
+// Slower or faster only when the whole interval is beyond the minimum effect, and the medians
+// differ by at least the timers' resolution; anything else is "unchanged".
 Verdict decide(const MetricVerdict& v, const Thresholds& t) {
-  if (!(v.p < t.alpha) || std::abs(v.candidate_ms - v.baseline_ms) < t.min_ms) return Verdict::unchanged;
-  if (v.ratio >= 1.0 + t.min_effect) return Verdict::slower;
-  if (v.ratio <= 1.0 - t.min_effect) return Verdict::faster;
+  if (!v.ratio_interval || std::abs(v.candidate_ms - v.baseline_ms) < t.min_ms) return Verdict::unchanged;
+  if (v.ratio_interval->first > 1.0 + t.min_effect) return Verdict::slower;
+  if (v.ratio_interval->second < 1.0 - t.min_effect) return Verdict::faster;
   return Verdict::unchanged;
+}
+
+// The estimate and interval of a shift of logarithms, as ratios.
+void set_ratio(MetricVerdict& v, const ShiftEstimate& log_shift) {
+  v.ratio = std::exp(log_shift.estimate);
+  if (log_shift.bounded()) v.ratio_interval = std::pair{std::exp(log_shift.low), std::exp(log_shift.high)};
+}
+
+// The logarithms of the positive times (a ratio needs two positive times).
+std::vector<double> logs(std::span<const double> times) {
+  std::vector<double> out;
+  for (const double t : times)
+    if (t > 0.0) out.push_back(std::log(t));
+  return out;
 }
 
 }  // namespace
@@ -36,7 +50,7 @@ MetricVerdict compare_unpaired(const std::string& metric, std::span<const double
   v.metric = metric;
   v.baseline_ms = median(baseline);
   v.candidate_ms = median(candidate);
-  v.ratio = v.baseline_ms > 0.0 ? v.candidate_ms / v.baseline_ms : 1.0;
+  set_ratio(v, hodges_lehmann_shift(logs(baseline), logs(candidate), 1.0 - thresholds.alpha));
   v.p = mann_whitney_p(baseline, candidate);
   v.n_baseline = baseline.size();
   v.n_candidate = candidate.size();
@@ -58,8 +72,7 @@ MetricVerdict compare_paired(const std::string& metric, std::span<const double> 
   }
   v.n_baseline = v.n_candidate = v.pair_ratios.size();
   if (!v.pair_ratios.empty()) {
-    v.ratio = median(v.pair_ratios);
-    v.ratio_interval = median_interval(v.pair_ratios, 1.0 - thresholds.alpha);
+    set_ratio(v, hodges_lehmann_paired(log_ratios, 1.0 - thresholds.alpha));
     v.p = wilcoxon_signed_rank_p(log_ratios);
   }
   v.verdict = decide(v, thresholds);

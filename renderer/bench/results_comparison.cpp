@@ -1,5 +1,6 @@
 #include "renderer/bench/results_comparison.hpp"
 
+#include "renderer/bench/machine_noise.hpp"
 #include "renderer/bench/statistics.hpp"
 
 #include <nlohmann/json.hpp>
@@ -37,6 +38,18 @@ std::vector<std::string> setting_warnings(const api::BenchResults& base, const a
   return warnings;
 }
 
+// Why either run's times cannot be judged. Paired runs measured one machine at one time: its
+// noise is said once.
+std::vector<std::string> noise_reasons(const api::BenchResults& base, const api::BenchResults& cand, bool paired) {
+  std::vector<std::string> reasons;
+  for (const auto* r : {&base, &cand}) {
+    if (paired && r == &cand) break;
+    if (!r->noise) continue;
+    if (std::optional<std::string> why = too_noisy(*r->noise)) reasons.push_back(paired ? *why : r->label + ": " + *why);
+  }
+  return reasons;
+}
+
 std::string reason_of(const char* side, const api::BenchCaseResult& c) {
   return std::string(side) + " " + api::to_string(c.status) + (c.reason.empty() ? "" : ": " + c.reason);
 }
@@ -60,6 +73,7 @@ Comparison compare_with(const api::BenchResults& base, const api::BenchResults& 
   comparison.baseline = run_info(base);
   comparison.candidate = run_info(cand);
   comparison.warnings = setting_warnings(base, cand);
+  comparison.noisy = noise_reasons(base, cand, paired);
   std::set<std::pair<std::size_t, std::size_t>> too_few;  // sample sizes that cannot reach alpha
 
   for (const api::BenchCaseResult& b : base.cases) {
@@ -159,8 +173,19 @@ std::size_t Comparison::candidate_failures() const {
   return std::ranges::count_if(cases, [](const CaseComparison& c) { return c.candidate_failed; });
 }
 
-bool Comparison::regression() const {
-  return regressions() > 0 || images_changed() > 0 || candidate_failures() > 0;
+Outcome Comparison::outcome() const {
+  if (images_changed() > 0 || candidate_failures() > 0) return Outcome::regression;
+  if (!noisy.empty()) return Outcome::inconclusive;
+  return regressions() > 0 ? Outcome::regression : Outcome::no_regression;
+}
+
+std::string to_string(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::no_regression: return "no_regression";
+    case Outcome::regression: return "regression";
+    case Outcome::inconclusive: return "inconclusive";
+  }
+  return "?";
 }
 
 Comparison compare_runs(const api::BenchResults& baseline, const api::BenchResults& candidate,
@@ -206,7 +231,9 @@ nlohmann::json to_json(const Comparison& comparison) {
             {"min_ms", t.min_ms},
             {"image_tolerance", comparison.options.image_tolerance},
             {"gate_passes", comparison.options.gate_passes}}},
-          {"regression", comparison.regression()},
+          {"regression", comparison.outcome() == Outcome::regression},
+          {"outcome", to_string(comparison.outcome())},
+          {"noisy", comparison.noisy},
           {"summary",
            {{"regressions", comparison.regressions()},
             {"slower", comparison.count(Verdict::slower)},

@@ -55,12 +55,20 @@ struct RunInfo {  // what a report says about each side
   std::uint32_t repetitions = 0;
 };
 
+// What a comparison concludes: a regression (a gating metric slower, an image changed, or a
+// case the baseline ran that failed in the candidate), none, or no verdict on the times
+// because a run's machine was too noisy (machine_noise.hpp); a changed image or a failure is
+// a regression on any machine.
+enum class Outcome { no_regression, regression, inconclusive };
+std::string to_string(Outcome outcome);  // "no_regression", "regression", "inconclusive"
+
 struct Comparison {
   bool paired = false;
   CompareOptions options;
   RunInfo baseline;
   RunInfo candidate;
   std::vector<std::string> warnings;  // why the verdicts may not hold
+  std::vector<std::string> noisy;     // why the times cannot be judged (a run's machine was noisy)
   std::vector<CaseComparison> cases;
 
   std::size_t count(Verdict verdict) const;
@@ -69,9 +77,7 @@ struct Comparison {
   std::size_t regressions() const;  // metrics slower that gate
   std::size_t images_changed() const;
   std::size_t candidate_failures() const;
-  // A gating metric slower, an image changed, or a case the baseline ran that failed in the
-  // candidate.
-  bool regression() const;
+  Outcome outcome() const;
 };
 
 // Separate runs: each metric's repetitions of one against the other's (Mann-Whitney U).

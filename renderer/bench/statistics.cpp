@@ -52,6 +52,81 @@ double two_sided_tail(const std::vector<double>& counts, double mean, double obs
 
 double normal_two_sided(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }
 
+// z with P(Z > z) = tail, by bisection on erfc (monotone; 60 halvings are past double's
+// precision on [0, 40]).
+double normal_upper_quantile(double tail) {
+  double lo = 0.0, hi = 40.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (0.5 * std::erfc(mid / std::sqrt(2.0)) > tail ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The largest k with P(S <= k - 1) <= tail, for a statistic S on 0, 1, 2, ... whose null
+// distribution has these counts per value: the interval's order statistics are the k-th
+// from each end. 0 when even S = 0 is too likely (too few samples for the confidence).
+std::size_t critical_order(const std::vector<double>& counts, double tail) {
+  double total = 0.0;
+  for (const double c : counts) total += c;
+  std::size_t k = 0;
+  double below = 0.0;  // P(S <= k - 1)
+  // (A relative 1e-9 of slack: a confidence of 0.9 leaves a tail of 0.0499999... in doubles.)
+  while (k < counts.size() && below + counts[k] / total <= tail * (1.0 + 1e-9)) below += counts[k++] / total;
+  return k;
+}
+
+// The null distribution of the signed-rank statistic T+ for n untied differences: how
+// many of the 2^n sign patterns give each sum of positive ranks 0 .. n(n+1)/2.
+std::vector<double> signed_rank_counts(std::size_t n) {
+  std::vector<double> ways(n * (n + 1) / 2 + 1, 0.0);
+  ways[0] = 1.0;
+  for (std::size_t rank = 1; rank <= n; ++rank)
+    for (std::size_t s = ways.size() - 1; s >= rank; --s) ways[s] += ways[s - rank];
+  return ways;
+}
+
+// The null distribution of Mann-Whitney's U for samples of m and n (no ties): how many of
+// the C(m + n, m) splits give each U = 0 .. mn, by the recurrence on the largest value
+// (it is in the first sample, adding n to U, or in the second): ways(m, n) from ways(m - 1, n)
+// shifted by n and ways(m, n - 1).
+std::vector<double> mann_whitney_counts(std::size_t m, std::size_t n) {
+  // row[j][u] holds ways(i, j) as i grows.
+  std::vector<std::vector<double>> row(n + 1);
+  for (std::size_t j = 0; j <= n; ++j) row[j] = {1.0};  // ways(0, j): U = 0 only
+  for (std::size_t i = 1; i <= m; ++i) {
+    std::vector<double> previous = {1.0};  // ways(i, 0)
+    row[0] = previous;
+    for (std::size_t j = 1; j <= n; ++j) {
+      std::vector<double> next(i * j + 1, 0.0);
+      for (std::size_t u = 0; u < row[j].size(); ++u) next[u + j] += row[j][u];  // ways(i - 1, j), shifted by j
+      for (std::size_t u = 0; u < previous.size(); ++u) next[u] += previous[u];   // ways(i, j - 1)
+      row[j] = previous = std::move(next);
+    }
+  }
+  return row[n];
+}
+
+// The k-th order statistic from each end of `values` (1-based); unbounded for k = 0.
+ShiftEstimate interval_of(std::vector<double> values, std::size_t k) {
+  std::ranges::sort(values);
+  ShiftEstimate e;
+  const std::size_t n = values.size();
+  e.estimate = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  if (k >= 1 && 2 * k <= n + 1) {
+    e.low = values[k - 1];
+    e.high = values[n - k];
+  }
+  return e;
+}
+
+std::vector<double> finite(std::span<const double> samples) {
+  std::vector<double> kept;
+  for (const double x : samples)
+    if (!std::isnan(x)) kept.push_back(x);
+  return kept;
+}
+
 }  // namespace
 
 double median(std::span<const double> samples) {
@@ -127,24 +202,44 @@ double wilcoxon_signed_rank_p(std::span<const double> d) {
 
 double wilcoxon_smallest_p(std::size_t n) { return n == 0 ? 1.0 : std::min(1.0, 2.0 / std::pow(2.0, double(n))); }
 
-std::pair<double, double> median_interval(std::vector<double> samples, double confidence) {
-  std::erase_if(samples, [](double x) { return std::isnan(x); });
-  if (samples.empty()) return {0.0, 0.0};
-  std::ranges::sort(samples);
-  const std::size_t n = samples.size();
+ShiftEstimate hodges_lehmann_paired(std::span<const double> d, double confidence) {
+  const std::vector<double> x = finite(d);
+  const std::size_t n = x.size();
+  if (n == 0) return {};
+  std::vector<double> walsh;
+  walsh.reserve(n * (n + 1) / 2);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i; j < n; ++j) walsh.push_back(0.5 * (x[i] + x[j]));
   const double tail = (1.0 - confidence) / 2.0;
-  // Grow k while P(Binomial(n, 1/2) <= k - 1), the chance that fewer than k samples lie
-  // below the median, stays within the tail.
   std::size_t k = 0;
-  double below = 0.0;            // P(B <= k - 1)
-  double term = std::pow(0.5, double(n));  // P(B = k)
-  while (k < n / 2 && below + term <= tail) {
-    below += term;
-    term *= double(n - k) / double(k + 1);
-    ++k;
+  if (n <= kMaxExact) {
+    k = critical_order(signed_rank_counts(n), tail);
+  } else {
+    const double nn = double(n);
+    const double c = nn * (nn + 1) / 4.0 - normal_upper_quantile(tail) * std::sqrt(nn * (nn + 1) * (2 * nn + 1) / 24.0);
+    k = c < 1.0 ? 0 : std::size_t(c);
   }
-  if (k == 0) return {samples.front(), samples.back()};
-  return {samples[k - 1], samples[n - k]};
+  return interval_of(std::move(walsh), k);
+}
+
+ShiftEstimate hodges_lehmann_shift(std::span<const double> x_samples, std::span<const double> y_samples,
+                                   double confidence) {
+  const std::vector<double> x = finite(x_samples), y = finite(y_samples);
+  if (x.empty() || y.empty()) return {};
+  std::vector<double> differences;
+  differences.reserve(x.size() * y.size());
+  for (const double a : x)
+    for (const double b : y) differences.push_back(b - a);
+  const double tail = (1.0 - confidence) / 2.0;
+  std::size_t k = 0;
+  if (x.size() + y.size() <= kMaxExact) {
+    k = critical_order(mann_whitney_counts(x.size(), y.size()), tail);
+  } else {
+    const double m = double(x.size()), n = double(y.size());
+    const double c = m * n / 2.0 - normal_upper_quantile(tail) * std::sqrt(m * n * (m + n + 1) / 12.0);
+    k = c < 1.0 ? 0 : std::size_t(c);
+  }
+  return interval_of(std::move(differences), k);
 }
 
 }  // namespace bench

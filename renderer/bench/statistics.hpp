@@ -5,8 +5,8 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
-#include <utility>
 #include <vector>
 
 namespace bench {
@@ -29,9 +29,24 @@ double wilcoxon_signed_rank_p(std::span<const double> d);
 // The smallest p for n pairs (all of one sign): 2 / 2^n.
 double wilcoxon_smallest_p(std::size_t n);
 
-// A distribution-free confidence interval of the median: the order statistics x(k) and
-// x(n+1-k) with the largest k for which P(Binomial(n, 1/2) < k) <= (1 - confidence) / 2.
-// With too few samples for that confidence it is [min, max]. {0, 0} for no samples.
-std::pair<double, double> median_interval(std::vector<double> samples, double confidence);
+// A shift estimate and its distribution-free confidence interval (Hodges-Lehmann), the
+// estimate and interval that belong to the two rank tests above: the interval holds exactly
+// the shifts those tests would not reject at 1 - confidence (no ties assumed), so a verdict
+// read off the interval can never contradict the test. With too few samples for that
+// confidence the interval is unbounded (-inf, +inf).
+struct ShiftEstimate {
+  double estimate = 0.0;
+  double low = -std::numeric_limits<double>::infinity();
+  double high = std::numeric_limits<double>::infinity();
+  bool bounded() const { return low > -std::numeric_limits<double>::infinity() && high < std::numeric_limits<double>::infinity(); }
+};
+
+// Paired (Wilcoxon signed-rank): the median of the Walsh averages (d_i + d_j) / 2, i <= j,
+// and their order statistics W(k), W(M + 1 - k) for the signed-rank distribution's
+// critical k. NaNs are dropped; {0, -inf, +inf} for no differences.
+ShiftEstimate hodges_lehmann_paired(std::span<const double> d, double confidence);
+// Two samples (Mann-Whitney U): the median of all differences y_j - x_i, and their order
+// statistics D(k), D(mn + 1 - k) for the U distribution's critical k.
+ShiftEstimate hodges_lehmann_shift(std::span<const double> x, std::span<const double> y, double confidence);
 
 }  // namespace bench

@@ -2,6 +2,7 @@
 
 #include "api/request_json.hpp"
 #include "renderer/bench/build_info.hpp"
+#include "renderer/bench/machine_noise.hpp"
 #include "server/utc_time.hpp"
 
 #include <nlohmann/json.hpp>
@@ -51,11 +52,12 @@ struct Side {
 class SuiteLoop {
  public:
   SuiteLoop(const api::BenchSuite& suite, std::vector<Side>& sides, const RunOptions& options,
-            const RunObserver& observer)
+            const RunObserver& observer, NoiseMonitor& noise)
       : suite_(suite),
         sides_(sides),
         options_(options),
         observer_(observer),
+        noise_(noise),
         total_(suite.cases.size() * sides.size() * (1 + options.warmup + options.repetitions)) {}
 
   // Runs every case; false when stopped before the end.
@@ -92,6 +94,7 @@ class SuiteLoop {
   // samples all come from complete runs.
   template <class Render>
   void each_side(const api::BenchCase& c, std::size_t round, Render render) {
+    noise_.probe();  // the machine's state as this round starts; no render runs meanwhile
     for (std::size_t k = 0; k < sides_.size(); ++k) {
       Side& side = sides_[round % 2 == 0 ? k : sides_.size() - 1 - k];
       if (observer_.stop_requested && observer_.stop_requested()) throw Stopped{};
@@ -115,6 +118,7 @@ class SuiteLoop {
   std::vector<Side>& sides_;
   const RunOptions& options_;
   const RunObserver& observer_;
+  NoiseMonitor& noise_;
   const std::size_t total_;
   std::size_t done_ = 0;
 };
@@ -135,12 +139,14 @@ std::vector<api::BenchResults> run_sides(const api::BenchSuite& suite, const std
     results.device = r->renders->device();
     sides.push_back({*r, std::move(results), {}, nullptr});
   }
-  const bool complete = SuiteLoop(suite, sides, options, observer).run();
+  NoiseMonitor noise;
+  const bool complete = SuiteLoop(suite, sides, options, observer, noise).run();
   const double duration_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<api::BenchResults> all;
   for (Side& side : sides) {
     side.results.complete = complete;
     side.results.duration_s = duration_s;
+    side.results.noise = noise.noise();
     all.push_back(std::move(side.results));
   }
   return all;

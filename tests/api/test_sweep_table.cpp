@@ -54,6 +54,42 @@ TEST(SweepPareto, HandMadeTableWithTiesAndDuplicates) {
   EXPECT_EQ(front_of(table), (std::vector<bool>{true, true, false, false, true, false, true}));
 }
 
+// A row timed over several frames, its range around its median.
+api::SweepRow ranged(double fastest, double median, double slowest, double final_rmse) {
+  api::SweepRow r = row(median, final_rmse);
+  r.frames = 3;
+  r.gpu_ms_range = {fastest, slowest};
+  return r;
+}
+
+std::vector<bool> uncertain_of(api::SweepTable table) {
+  api::mark_pareto(table);
+  std::vector<bool> flags;
+  for (const api::SweepRow& r : table.rows) flags.push_back(r.pareto_uncertain);
+  return flags;
+}
+
+TEST(SweepPareto, DecisionsTheRangesCannotSupportAreUncertain) {
+  const api::SweepTable table = table_of({
+      ranged(0.9, 1.0, 1.1, 0.5),  // fastest by a margin: surely on the front
+      ranged(1.9, 2.0, 2.1, 0.3),  // surely on it: nothing as accurate is as fast
+      ranged(2.0, 2.2, 2.4, 0.4),  // worse than the last, and its range overlaps: uncertain, off
+      ranged(3.0, 3.1, 3.2, 0.35), // slower and worse than row 1 for every time: surely off
+      ranged(3.5, 3.9, 4.4, 0.1),  // most accurate; on by its median, but the next could be faster
+      ranged(3.6, 4.0, 4.1, 0.1),  // as accurate as the last, overlapping: off by its median, uncertain
+  });
+  EXPECT_EQ(front_of(table), (std::vector<bool>{true, true, false, false, true, false}));
+  EXPECT_EQ(uncertain_of(table), (std::vector<bool>{false, false, true, false, true, true}));
+}
+
+TEST(SweepPareto, ARowTimedOnceHasNoRangeToStandOn) {
+  // One frame says nothing of the spread: a row beaten on error by another could be either side.
+  api::SweepRow once = row(1.0, 0.5), better = row(2.0, 0.1);
+  once.frames = better.frames = 1;
+  EXPECT_EQ(front_of(table_of({once, better})), (std::vector<bool>{true, true}));
+  EXPECT_EQ(uncertain_of(table_of({once, better})), (std::vector<bool>{true, false}));
+}
+
 TEST(SweepPareto, MarkingClearsStaleFlags) {
   api::SweepTable table = table_of({row(1.0, 0.1), row(2.0, 0.2)});
   table.rows[1].pareto = true;
@@ -187,24 +223,28 @@ TEST(SweepCsv, HeaderHasEveryFieldOfTheRow) {
       "lpv",                     "grid_x",                   "grid_y",
       "grid_z",                  "iterations",               "cascades",
       "rsm",                     "vpl_downsample",           "bounces",
-      "occlusion",               "transfer",                 "gpu_ms",                   "wall_ms",
+      "occlusion",               "transfer",                 "frames",
+      "gpu_ms",                  "gpu_ms_min",               "gpu_ms_max",               "wall_ms",
       "final_rmse",              "final_relative_mse",       "final_psnr_db",
       "final_ssim",              "final_mean_abs_error",     "final_max_abs_error",
       "final_mean_signed_error", "final_pixels",             "indirect_rmse",
       "indirect_relative_mse",   "indirect_psnr_db",         "indirect_ssim",
       "indirect_mean_abs_error", "indirect_max_abs_error",   "indirect_mean_signed_error",
-      "indirect_pixels",         "pareto"};
+      "indirect_pixels",         "pareto",                   "pareto_uncertain"};
   EXPECT_EQ(csv[0], expected);
 }
 
 TEST(SweepCsv, OneLinePerRowWithItsValues) {
   api::SweepRow r;
   r.settings = {true, {16, 24, 48}, 12, 2, 512, 4, 2, false, api::Transfer::cosine};
+  r.frames = 3;
   r.gpu_ms = 0.1;
+  r.gpu_ms_range = {0.09, 0.125};
   r.wall_ms = 1.0 / 3.0;
   r.final_error = {0.25, 0.5, 31.5, 0.875, 0.125, 2.0, -0.0625, 262144};
   r.indirect_error = {1.25, 1.5, inf, 0.75, 1.125, 3.0, nan, 7};
   r.pareto = true;
+  r.pareto_uncertain = true;
   api::SweepRow off;
   off.settings.lpv = false;
   const auto csv = read_csv(api::to_csv(table_of({r, off, r})));
@@ -212,13 +252,13 @@ TEST(SweepCsv, OneLinePerRowWithItsValues) {
   for (const auto& record : csv) EXPECT_EQ(record.size(), csv[0].size());
   EXPECT_EQ(csv[1], (std::vector<std::string>{"true",  "16",     "24",    "48",      "12",
                                               "2",     "512",    "4",     "2",       "false",
-                                              "cosine",                                 "0.1",   "0.3333333333333333",         "0.25",
+                                              "cosine", "3", "0.1", "0.09", "0.125", "0.3333333333333333",         "0.25",
                                               "0.5",   "31.5",   "0.875", "0.125",   "2",
                                               "-0.0625", "262144", "1.25", "1.5",    "inf",
                                               "0.75",  "1.125",  "3",     "nan",     "7",
-                                              "true"}));
+                                              "true", "true"}));
   // The shortest text that reads back as the same double.
-  EXPECT_EQ(std::stod(csv[1][12]), 1.0 / 3.0);
+  EXPECT_EQ(std::stod(csv[1][column(csv[0], "wall_ms")]), 1.0 / 3.0);
   EXPECT_EQ(csv[2][column(csv[0], "lpv")], "false");
   EXPECT_EQ(csv[2][column(csv[0], "pareto")], "false");
   EXPECT_EQ(csv[3], csv[1]);
@@ -236,7 +276,7 @@ TEST(SweepCsv, PassColumnsAreTheUnionInPipelineOrderWithEmptyCells) {
   const std::vector<std::string> pass_columns(csv[0].end() - 5, csv[0].end());
   EXPECT_EQ(pass_columns, (std::vector<std::string>{"shadow_gpu_ms", "rsm_gpu_ms", "inject_gpu_ms",
                                                     "propagate_gpu_ms", "shade_gpu_ms"}));
-  EXPECT_EQ(csv[0][csv[0].size() - 6], "pareto");
+  EXPECT_EQ(csv[0][csv[0].size() - 6], "pareto_uncertain");
   const std::vector<std::string> off_cells(csv[1].end() - 5, csv[1].end());
   EXPECT_EQ(off_cells, (std::vector<std::string>{"0.5", "", "", "", "0.5"}));
   const std::vector<std::string> lpv_cells(csv[2].end() - 5, csv[2].end());
@@ -259,7 +299,7 @@ TEST(SweepCsv, FieldsWithCommasQuotesAndLineBreaksAreQuoted) {
 TEST(SweepCsv, EmptyTableIsTheHeaderAlone) {
   const auto csv = read_csv(api::to_csv(table_of({})));
   ASSERT_EQ(csv.size(), 1u);
-  EXPECT_EQ(csv[0].back(), "pareto");
+  EXPECT_EQ(csv[0].back(), "pareto_uncertain");
 }
 
 // ---- JSON -----------------------------------------------------------------------
@@ -268,7 +308,9 @@ TEST(SweepJson, EveryFieldWithItsValue) {
   api::SweepRow r;
   r.settings = {false, {16, 24, 48}, 12, 2, 512, 4, 2, false};
   r.passes = {{"shadow", 0.125}, {"shade", 0.5}};
+  r.frames = 5;
   r.gpu_ms = 0.625;
+  r.gpu_ms_range = {0.5, 0.75};
   r.wall_ms = 2.5;
   r.final_error = {0.25, 0.5, 31.5, 0.875, 0.125, 2.0, -0.0625, 262144};
   r.indirect_error = {1.25, 1.5, 20.0, 0.75, 1.125, 3.0, 0.5, 7};
@@ -277,12 +319,12 @@ TEST(SweepJson, EveryFieldWithItsValue) {
     "settings": {"lpv": false, "grid": [16, 24, 48], "iterations": 12, "cascades": 2, "rsm": 512,
                  "vpl_downsample": 4, "bounces": 2, "occlusion": false, "transfer": "sharpened"},
     "passes": [{"name": "shadow", "gpu_ms": 0.125}, {"name": "shade", "gpu_ms": 0.5}],
-    "gpu_ms": 0.625, "wall_ms": 2.5,
+    "frames": 5, "gpu_ms": 0.625, "gpu_ms_range": [0.5, 0.75], "wall_ms": 2.5,
     "final_error": {"rmse": 0.25, "relative_mse": 0.5, "psnr_db": 31.5, "ssim": 0.875, "mean_abs_error": 0.125,
                     "max_abs_error": 2.0, "mean_signed_error": -0.0625, "pixels": 262144},
     "indirect_error": {"rmse": 1.25, "relative_mse": 1.5, "psnr_db": 20.0, "ssim": 0.75, "mean_abs_error": 1.125,
                        "max_abs_error": 3.0, "mean_signed_error": 0.5, "pixels": 7},
-    "pareto": true})");
+    "pareto": true, "pareto_uncertain": false})");
   EXPECT_EQ(api::to_json(r), expected) << api::to_json(r).dump(2);
 }
 
@@ -506,6 +548,15 @@ TEST(SweepSvg, TooltipsListSettingsTimeAndError) {
             std::string::npos)
       << svg;
   EXPECT_NE(svg.find("<title>LPV off (direct light only)\nGPU 1 ms"), std::string::npos);
+  // Timed once, the LPV-off row has no range: the fastest by its median, but beaten on error,
+  // it could be off the front.
+  EXPECT_NE(svg.find("on the Pareto front (uncertain: within the ranges of the frame times it could be off it)"), std::string::npos);
+  // A row of several frames: its median, range and whisker.
+  r.frames = 3;
+  r.gpu_ms_range = {2.25, 3.0};
+  const std::string ranged = api::to_svg_plot(table_of({r}), "t");
+  EXPECT_NE(ranged.find("GPU 2.5 ms per frame (median of 3, 2.25–3; wall 4 ms)"), std::string::npos) << ranged;
+  EXPECT_NE(ranged.find("<line class=\"range\""), std::string::npos);
 }
 
 TEST(SweepSvg, RowsALogScaleCannotPlaceAreCountedInANote) {

@@ -80,6 +80,8 @@ class Validator {
           fail(path, "is shorter than " + rule.dump());
       } else if (keyword == "minItems") {
         if (value.is_array() && value.size() < rule.get<std::size_t>()) fail(path, "has fewer items than " + rule.dump());
+      } else if (keyword == "maxItems") {
+        if (value.is_array() && value.size() > rule.get<std::size_t>()) fail(path, "has more items than " + rule.dump());
       } else if (keyword == "pattern") {
         if (value.is_string() && !std::regex_search(value.get_ref<const std::string&>(), std::regex(rule.get<std::string>())))
           fail(path, "does not match " + rule.dump());

@@ -46,18 +46,18 @@ TEST(BenchComparison, AChangedImageIsARegressionEvenWhenTimesAreUnchanged) {
   ASSERT_TRUE(c.cases[0].image.metrics);
   EXPECT_GT(c.cases[0].image.metrics->relative_mse, 1e-4);
   EXPECT_EQ(c.images_changed(), 1u);
-  EXPECT_TRUE(c.regression());
+  EXPECT_EQ(c.outcome(), bench::Outcome::regression);
 }
 
 TEST(BenchComparison, TheSameImageAndRoundingAreNotAChange) {
   const api::BenchResults base = results("base", gradient(1.0f), kTimes);
   const bench::Comparison same = bench::compare_runs(base, results("cand", gradient(1.0f), kTimes), {});
   EXPECT_EQ(same.cases[0].image.verdict, bench::ImageVerdict::same);
-  EXPECT_FALSE(same.regression());
+  EXPECT_EQ(same.outcome(), bench::Outcome::no_regression);
   // A float's last bits differ (a different compiler, the order of atomic adds).
   const bench::Comparison rounded = bench::compare_runs(base, results("cand", gradient(1.000001f), kTimes), {});
   EXPECT_EQ(rounded.cases[0].image.verdict, bench::ImageVerdict::within_tolerance);
-  EXPECT_FALSE(rounded.regression());
+  EXPECT_EQ(rounded.outcome(), bench::Outcome::no_regression);
 }
 
 TEST(BenchComparison, AnImageOfAnotherSizeIsChanged) {
@@ -86,7 +86,7 @@ TEST(BenchComparison, SlowerTimesAreARegression) {
       bench::compare_runs(results("base", gradient(1.0f), kTimes), results("cand", gradient(1.0f), slower), {});
   EXPECT_EQ(c.count(bench::Verdict::slower), 2u);
   EXPECT_NEAR(c.cases[0].metrics[0].ratio, 1.3, 1e-9);
-  EXPECT_TRUE(c.regression());
+  EXPECT_EQ(c.outcome(), bench::Outcome::regression);
 }
 
 TEST(BenchComparison, APassSlowerIsReportedAndGatesOnlyWhenAskedTo) {
@@ -97,10 +97,10 @@ TEST(BenchComparison, APassSlowerIsReportedAndGatesOnlyWhenAskedTo) {
   const bench::Comparison by_default = bench::compare_runs(base, cand, {});
   EXPECT_EQ(by_default.count(bench::Verdict::slower), 1u);
   EXPECT_EQ(by_default.regressions(), 0u);
-  EXPECT_FALSE(by_default.regression());
+  EXPECT_EQ(by_default.outcome(), bench::Outcome::no_regression);
   bench::CompareOptions strict;
   strict.gate_passes = true;
-  EXPECT_TRUE(bench::compare_runs(base, cand, strict).regression());
+  EXPECT_EQ(bench::compare_runs(base, cand, strict).outcome(), bench::Outcome::regression);
 }
 
 // A candidate that shades another way runs other passes: those have no pairs to judge, and
@@ -118,7 +118,7 @@ TEST(BenchComparison, MetricsOnlyOneSideHasAreListed) {
   EXPECT_EQ(c.cases[0].only_in_candidate, (std::vector<std::string>{"pass.forward"}));
   const nlohmann::json j = bench::to_json(c);
   EXPECT_EQ(j["cases"][0]["only_in_candidate"], nlohmann::json::array({"pass.forward"}));
-  EXPECT_FALSE(c.regression());
+  EXPECT_EQ(c.outcome(), bench::Outcome::no_regression);
 }
 
 TEST(BenchComparison, FailuresAndMissingCases) {
@@ -129,12 +129,12 @@ TEST(BenchComparison, FailuresAndMissingCases) {
   bench::Comparison c = bench::compare_runs(base, cand, {});
   EXPECT_EQ(c.cases[0].outcome, bench::CaseOutcome::failed);
   EXPECT_TRUE(c.cases[0].candidate_failed);
-  EXPECT_TRUE(c.regression());
+  EXPECT_EQ(c.outcome(), bench::Outcome::regression);
 
   // Broken in both: not this candidate's doing.
   api::BenchResults broken = base;
   broken.cases[0].status = api::BenchCaseStatus::failed;
-  EXPECT_FALSE(bench::compare_runs(broken, cand, {}).regression());
+  EXPECT_EQ(bench::compare_runs(broken, cand, {}).outcome(), bench::Outcome::no_regression);
 
   api::BenchResults renamed = base;
   renamed.cases[0].name = "another";
@@ -142,7 +142,7 @@ TEST(BenchComparison, FailuresAndMissingCases) {
   ASSERT_EQ(c.cases.size(), 2u);
   EXPECT_EQ(c.cases[0].outcome, bench::CaseOutcome::only_in_baseline);
   EXPECT_EQ(c.cases[1].outcome, bench::CaseOutcome::only_in_candidate);
-  EXPECT_FALSE(c.regression());
+  EXPECT_EQ(c.outcome(), bench::Outcome::no_regression);
 }
 
 TEST(BenchComparison, TooFewRepetitionsAreWarnedAbout) {
@@ -167,7 +167,7 @@ TEST(BenchComparison, PairsAreComparedPairByPair) {
   EXPECT_NEAR(v.ratio, 1.25, 1e-9);
   EXPECT_EQ(v.n_baseline, 10u);
   EXPECT_EQ(v.verdict, bench::Verdict::slower);
-  EXPECT_TRUE(c.regression());
+  EXPECT_EQ(c.outcome(), bench::Outcome::regression);
   // The same samples as separate runs: the load's spread hides the change.
   EXPECT_EQ(bench::compare_runs(results("A", gradient(1.0f), a), results("B", gradient(1.0f), b), {})
                 .count(bench::Verdict::slower),

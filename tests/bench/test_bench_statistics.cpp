@@ -59,12 +59,70 @@ TEST(BenchStatistics, NormalApproximationsBeyondTheExactRange) {
   EXPECT_LT(bench::wilcoxon_signed_rank_p(differences), 1e-6);
 }
 
-TEST(BenchStatistics, MedianIntervalFromOrderStatistics) {
+TEST(BenchStatistics, HodgesLehmannPairedFromWalshAverages) {
+  // 1 .. 10: 55 Walsh averages, centred on 5.5. At 99% the signed-rank distribution of 10
+  // allows P(T+ <= 3) = 5/1024 <= 0.005 but not P(T+ <= 4) = 7/1024: the 4th from each end,
+  // 1, 1.5, 2, [2] ... [9], 9, 9.5, 10.
   const std::vector<double> x = {5, 3, 9, 1, 7, 2, 10, 4, 8, 6};
-  // n = 10: P(B <= 1) = 11/1024 <= 0.025, P(B <= 2) = 56/1024 > 0.025: the 2nd and 9th values.
-  EXPECT_EQ(bench::median_interval(x, 0.95), std::make_pair(2.0, 9.0));
-  EXPECT_EQ(bench::median_interval(x, 0.99), std::make_pair(1.0, 10.0));
-  EXPECT_EQ(bench::median_interval({4.0}, 0.99), std::make_pair(4.0, 4.0));
+  const bench::ShiftEstimate e = bench::hodges_lehmann_paired(x, 0.99);
+  EXPECT_DOUBLE_EQ(e.estimate, 5.5);
+  EXPECT_DOUBLE_EQ(e.low, 2.0);
+  EXPECT_DOUBLE_EQ(e.high, 9.0);
+  // 5 pairs cannot reach 99% (the smallest p is 1/16): unbounded, whatever the data.
+  EXPECT_FALSE(bench::hodges_lehmann_paired(std::vector{1.0, 2.0, 3.0, 4.0, 5.0}, 0.99).bounded());
+  EXPECT_FALSE(bench::hodges_lehmann_paired(std::vector<double>{}, 0.99).bounded());
+}
+
+TEST(BenchStatistics, HodgesLehmannShiftFromPairwiseDifferences) {
+  // 3 against 3 at 90%: P(U = 0) = 1/20 = 0.05 is the whole tail, so the interval is the
+  // smallest and largest of the 9 differences; the estimate their median.
+  const bench::ShiftEstimate e = bench::hodges_lehmann_shift(std::vector{1.0, 2.0, 3.0}, std::vector{11.0, 12.0, 14.0}, 0.9);
+  EXPECT_DOUBLE_EQ(e.low, 8.0);
+  EXPECT_DOUBLE_EQ(e.high, 13.0);
+  EXPECT_DOUBLE_EQ(e.estimate, 10.0);  // 8 9 9 10 [10] 10 11 12 13
+  EXPECT_FALSE(bench::hodges_lehmann_shift(std::vector{1.0, 2.0}, std::vector{3.0, 4.0}, 0.99).bounded());
+}
+
+// The interval and the test are two readings of one distribution: 0 lies outside the
+// interval exactly when the test rejects (untied continuous samples), so a verdict read off
+// the interval agrees with the p shown beside it.
+TEST(BenchStatistics, IntervalsExcludeZeroExactlyWhenTheTestRejects) {
+  int rejections = 0;
+  for (std::uint32_t seed = 1; seed <= 300; ++seed) {
+    SyntheticTimes t(seed);
+    const double shift = 0.01 * double(seed % 7);
+    std::vector<double> d, x, y;
+    for (int i = 0; i < 12; ++i) d.push_back(shift + 0.03 * t.normal());
+    for (int i = 0; i < 9; ++i) x.push_back(0.03 * t.normal());
+    for (int i = 0; i < 11; ++i) y.push_back(shift + 0.03 * t.normal());
+    const bench::ShiftEstimate paired = bench::hodges_lehmann_paired(d, 0.99);
+    EXPECT_EQ(paired.low > 0.0 || paired.high < 0.0, bench::wilcoxon_signed_rank_p(d) <= 0.01) << "seed " << seed;
+    EXPECT_TRUE(paired.low <= paired.estimate && paired.estimate <= paired.high);
+    const bench::ShiftEstimate two = bench::hodges_lehmann_shift(x, y, 0.99);
+    EXPECT_EQ(two.low > 0.0 || two.high < 0.0, bench::mann_whitney_p(x, y) <= 0.01) << "seed " << seed;
+    EXPECT_TRUE(two.low <= two.estimate && two.estimate <= two.high);
+    rejections += paired.low > 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(rejections, 50);  // the shifts were large enough to be seen, so both branches ran
+}
+
+// A verdict never contradicts its interval: "slower" only with the whole interval above
+// 1 + min_effect, "faster" only with it below 1 - min_effect.
+TEST(BenchVerdicts, VerdictsFollowTheirIntervals) {
+  for (std::uint32_t seed = 1; seed <= kTrials; ++seed) {
+    SyntheticTimes t(seed);
+    const double shift = 0.8 + 0.002 * double(seed);  // 0.8 .. 1.2
+    const auto base = t.times(10, 100.0, 0.1), cand = t.times(10, 100.0 * shift, 0.1);
+    for (const bench::MetricVerdict& v :
+         {bench::compare_unpaired("gpu_ms", base, cand, kDefaults), bench::compare_paired("gpu_ms", base, cand, kDefaults)}) {
+      ASSERT_TRUE(v.ratio_interval);
+      EXPECT_LE(v.ratio_interval->first, v.ratio);
+      EXPECT_GE(v.ratio_interval->second, v.ratio);
+      if (v.verdict == Verdict::slower) EXPECT_GT(v.ratio_interval->first, 1.0 + kDefaults.min_effect);
+      if (v.verdict == Verdict::faster) EXPECT_LT(v.ratio_interval->second, 1.0 - kDefaults.min_effect);
+      if (v.ratio_interval->first > 1.0 + kDefaults.min_effect) EXPECT_EQ(v.verdict, Verdict::slower);
+    }
+  }
 }
 
 TEST(BenchVerdicts, IdenticalDistributionsAreUnchanged) {

@@ -22,6 +22,7 @@ api::SweepRequest small_sweep() {
   sweep.base.output.width = 96;
   sweep.base.output.height = 96;
   sweep.base.plan = api::PlanMode::exact;
+  sweep.base.repeat = 3;
   sweep.parameters.grid = {glm::uvec3(8), glm::uvec3(16)};
   sweep.parameters.occlusion = {true, false};
   sweep.reference.samples = 64;
@@ -50,15 +51,24 @@ TEST_F(Accuracy, LpvIsCloserToTheOneBounceReferenceThanDirectLightAlone) {
   const api::SweepRequest request = small_sweep();
   std::size_t rows_reported = 0;
   accuracy::SweepObserver observer;
-  observer.row_done = [&](std::size_t index, std::size_t total, const api::SweepRow&) {
+  observer.row_measured = [&](std::size_t index, std::size_t total, const api::SweepRow& row) {
     EXPECT_EQ(index, rows_reported++);
     EXPECT_EQ(total, 5u);
+    EXPECT_EQ(row.frames, 0u);  // errors first, times later
+    EXPECT_TRUE(std::isnan(row.gpu_ms));
+  };
+  std::size_t frames_reported = 0;
+  observer.timing_progress = [&](std::size_t done, std::size_t total) {
+    EXPECT_EQ(rows_reported, 5u) << "every row is rendered once before any frame is timed";
+    EXPECT_EQ(done, ++frames_reported);
+    EXPECT_EQ(total, 15u);  // 5 rows x 3 frames
   };
   const accuracy::SweepResult result = accuracy::sweep(bench, request, observer);
 
   ASSERT_TRUE(result.complete);
   ASSERT_EQ(result.table.rows.size(), 5u);  // LPV off, then 2 grids x occlusion on/off
   EXPECT_EQ(rows_reported, 5u);
+  EXPECT_EQ(frames_reported, 15u);
   EXPECT_FALSE(result.reference.cached);
   EXPECT_EQ(result.reference.settings.samples, 64u);
   EXPECT_GT(result.reference.noise_rmse, 0.0);
@@ -72,6 +82,9 @@ TEST_F(Accuracy, LpvIsCloserToTheOneBounceReferenceThanDirectLightAlone) {
     EXPECT_EQ(row.final_error.pixels, row.indirect_error.pixels);
     EXPECT_GT(row.final_error.pixels, 96u * 96u / 2);  // the box fills most of the frame
     EXPECT_GT(row.gpu_ms, 0.0);
+    EXPECT_EQ(row.frames, 3u);
+    EXPECT_LE(row.gpu_ms_range.first, row.gpu_ms);
+    EXPECT_GE(row.gpu_ms_range.second, row.gpu_ms);
     EXPECT_FALSE(row.passes.empty());
     on_front += row.pareto ? 1 : 0;
     if (!row.settings.lpv) continue;

@@ -25,12 +25,13 @@ diff     compares a render with a second setting or with the reference (the sche
 run      times a benchmark suite (a file, or the name of one in bench/suites: default,
          quick): per case an image render, warm-up renders, then timed repetitions;
          writes the results (bench/results.schema.json) and prints a summary table.
-compare  a candidate's results against a baseline's: per case and metric the ratio of
-         the medians and a verdict (faster, slower, unchanged: Mann-Whitney U and a
-         minimum effect), and whether the image changed.
+compare  a candidate's results against a baseline's: per case and metric the ratio,
+         its confidence interval (Hodges-Lehmann, Mann-Whitney U) and a verdict: slower
+         or faster only when the whole interval is beyond the minimum effect; and
+         whether the image changed.
 ab       runs the suite with two builds' lpv-bench taking turns render by render (A B,
-         B A, ...) and compares them pair by pair (Wilcoxon signed-rank on the ratios):
-         the comparison that holds on a shared machine. Writes ab.json (the comparison),
+         B A, ...) and compares them pair by pair (the interval of the Wilcoxon
+         signed-rank test on the ratios): the comparison that holds on a shared machine. Writes ab.json (the comparison),
          a.json and b.json (each build's results).
 worker   one build's side of ab: renders the suite's cases when told to on standard input
          and answers on standard output (the build must have it: ab starts it).
@@ -41,7 +42,7 @@ options:
                          missing; run: the results file (default: results.json);
                          compare: also write the comparison as JSON
   --device NAME|INDEX    Vulkan device (default: $LPV_DEVICE, else lavapipe)
-  -q, --quiet            no progress bar or summary
+  -q, --quiet            no progress bar or summary (compare, ab: the one-line verdict)
   -h, --help             this text
 run, ab:
   --warmup N             untimed renders per case before the timed ones (default: the suite's)
@@ -50,6 +51,8 @@ run, ab, worker:
                          loopback port (default: the lpv-server beside lpv-bench; in ab,
                          each build's own)
   --no-server            skip the server_round_trip cases instead
+  --test-slowdown F      make every frame F times as slow (busy CPU; default 1): a known
+                         regression, for testing the verdicts (bench/verdict-rates.sh)
 run:
   --repetitions N        timed renders per case (default: the suite's)
   --url URL              render every case through this lpv-server (POST /v1/render;
@@ -59,8 +62,9 @@ run:
 run, compare, ab:
   --report FILE          also write a Markdown summary (for job summaries)
 compare, ab:
-  --alpha P              significance level of each test (default: 0.01)
-  --min-effect F         smallest relative change that counts (default: 0.05 = 5%)
+  --alpha P              the ratios' intervals have confidence 1 - P (default: 0.01)
+  --min-effect F         a change counts when its whole interval is beyond 1 +/- F
+                         (default: 0.05 = 5%)
   --min-ms MS            smallest absolute change that counts (default: 0.1; on a real
                          GPU, whose passes take microseconds, use 0.005)
   --image-tolerance E    relative MSE of the thumbnails still "the same image" (default: 1e-4)
@@ -75,7 +79,8 @@ environment: LPV_DEVICE, LPV_PIPELINE_CACHE (a file, or "off"), LPV_BENCH_COMMIT
 exit status: 0 success (compare, ab: no regression); 1 failure (device, files, a case
              that failed; compare, ab: a total slower (or a pass, with --gate-passes), an
              image changed, a case failing in the candidate, or no case compared at all);
-             2 bad usage or bad input
+             2 bad usage or bad input; 4 compare, ab: inconclusive, the machine was too
+             noisy for a verdict on the times (docs/perf-regression.md)
 )";
 }
 
@@ -141,6 +146,8 @@ const std::vector<Flag>& flags() {
       {"--commit", "", bit(Command::run), [](Options& o, S v) { o.commit = v; }},
       {"--server-binary", "", kLocalRuns, [](Options& o, S v) { o.server_binary = v; }},
       {"--no-server", "", kLocalRuns, [](Options& o, S) { o.no_server = true; }, false},
+      {"--test-slowdown", "", kLocalRuns,
+       [](Options& o, S v) { o.test_slowdown = number<double>("--test-slowdown", v, 1.0, 10.0); }},
       {"--alpha", "", kVerdicts,
        [](Options& o, S v) { o.compare.thresholds.alpha = number<double>("--alpha", v, 1e-9, 0.5); }},
       {"--min-effect", "", kVerdicts,

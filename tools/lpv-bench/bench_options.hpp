@@ -31,6 +31,7 @@ struct Options {
   std::optional<std::string> commit;         // overrides the build's commit
   std::optional<std::string> server_binary;  // lpv-server for round trips (default: beside lpv-bench)
   bool no_server = false;                    // skip round trips rather than start a server
+  double test_slowdown = 1.0;                // run, worker: frames made this much slower (tests of verdicts)
 
   // compare, ab
   CompareOptions compare;

@@ -11,16 +11,23 @@
 namespace bench {
 
 constexpr int kExitRegression = 1;
+constexpr int kExitInconclusive = 4;  // 2 is bad input (main.cpp); bench/ab-commits.sh says 3 for a build that failed
 
 int publish(const Comparison& comparison, const Options& options, const std::optional<std::filesystem::path>& json_file) {
   if (json_file) write_text_file(*json_file, to_json(comparison).dump(1) + "\n");
   if (options.report) write_text_file(*options.report, comparison_markdown(comparison));
-  if (!options.quiet) std::fputs(comparison_text(comparison).c_str(), stdout);
+  // -q: the verdict alone, one line, for a job's log.
+  std::fputs(options.quiet ? (verdict_line(comparison) + "\n").c_str() : comparison_text(comparison).c_str(), stdout);
   const bool compared = std::ranges::any_of(comparison.cases, [](const CaseComparison& c) {
     return c.outcome == CaseOutcome::compared;
   });
   if (!compared) std::fputs("lpv-bench: no case could be compared\n", stderr);
-  return comparison.regression() || !compared ? kExitRegression : 0;
+  switch (comparison.outcome()) {
+    case Outcome::regression: return kExitRegression;
+    case Outcome::inconclusive: return kExitInconclusive;
+    case Outcome::no_regression: break;
+  }
+  return compared ? 0 : kExitRegression;
 }
 
 int compare_command(const Options& options) {

@@ -21,16 +21,18 @@ std::string side(const RunInfo& r) {
 std::string about(const Comparison& c) {
   const Thresholds& t = c.options.thresholds;
   std::string text = "baseline:  " + side(c.baseline) + "\ncandidate: " + side(c.candidate) + "\n";
-  text += format("%s; a change counts when p < %g, the ratio is off 1 by at least %g%% and the medians by %g ms\n",
-                 c.paired ? "interleaved renders compared pair by pair, Wilcoxon signed-rank on the ratios"
-                          : "separate runs, Mann-Whitney U",
-                 t.alpha, 100.0 * t.min_effect, t.min_ms);
+  text += format("%s; a change counts when the ratio's %g%% interval lies wholly beyond 1 +/- %g%% and the medians "
+                 "differ by %g ms\n",
+                 c.paired ? "interleaved renders compared pair by pair (Hodges-Lehmann interval of the Wilcoxon "
+                            "signed-rank test on the ratios)"
+                          : "separate runs (Hodges-Lehmann interval of the Mann-Whitney U test)",
+                 100.0 * (1.0 - t.alpha), 100.0 * t.min_effect, t.min_ms);
   return text;
 }
 
 // `everything`: every metric and image; otherwise the totals and what changed.
 TextTable table(const Comparison& c, bool everything) {
-  TextTable t{{"case", "metric", "baseline ms", "candidate ms", "ratio", c.paired ? "ratio interval" : "", "p", "verdict"},
+  TextTable t{{"case", "metric", "baseline ms", "candidate ms", "ratio", "ratio interval", "p", "verdict"},
               {false, false, true, true, true, true, true, false},
               {}};
   for (const CaseComparison& cc : c.cases) {
@@ -62,12 +64,6 @@ TextTable table(const Comparison& c, bool everything) {
     const bool image_matters = cc.image.verdict == ImageVerdict::changed || cc.image.verdict == ImageVerdict::not_compared;
     if (everything || image_matters) row({"image", "", "", "", "", "", to_string(cc.image.verdict) + ": " + cc.image.detail});
   }
-  if (!c.paired) {  // no interval column
-    t.header.erase(t.header.begin() + 5);
-    t.numeric.erase(t.numeric.begin() + 5);
-    for (auto& r : t.rows)
-      if (r.size() > 5) r.erase(r.begin() + 5);
-  }
   return t;
 }
 
@@ -78,19 +74,35 @@ std::string conclusion(const Comparison& c) {
   });
   if (starred) text += "* a pass: where a change comes from, not a regression by itself (--gate-passes)\n";
   text += format("%zu slower (%zu gating), %zu faster, %zu unchanged; %zu images changed; %zu cases failing in the "
-                 "candidate: %s\n",
+                 "candidate: ",
                  c.count(Verdict::slower), c.regressions(), c.count(Verdict::faster), c.count(Verdict::unchanged),
-                 c.images_changed(), c.candidate_failures(), c.regression() ? "REGRESSION" : "no regression");
+                 c.images_changed(), c.candidate_failures()) + verdict_line(c) + "\n";
   for (const std::string& w : c.warnings) text += "warning: " + w + "\n";
   return text;
 }
 
 }  // namespace
 
+std::string verdict_line(const Comparison& c) {
+  switch (c.outcome()) {
+    case Outcome::regression: return "REGRESSION";
+    case Outcome::no_regression: return "no regression";
+    case Outcome::inconclusive: {
+      std::string text = "INCONCLUSIVE: noisy machine";
+      for (const std::string& why : c.noisy) text += "; " + why;
+      return text + "; no verdict on the times, rerun on a quieter machine";
+    }
+  }
+  return "?";
+}
+
 std::string comparison_text(const Comparison& c) { return about(c) + "\n" + table(c, false).text() + "\n" + conclusion(c); }
 
 std::string comparison_markdown(const Comparison& c) {
-  std::string md = std::string("## Performance: ") + (c.regression() ? "regression" : "no regression") + "\n\n";
+  const std::string outcome = c.outcome() == Outcome::inconclusive ? "inconclusive (noisy machine)"
+                              : c.outcome() == Outcome::regression ? "regression"
+                                                                  : "no regression";
+  std::string md = "## Performance: " + outcome + "\n\n";
   md += markdown_lines(about(c) + conclusion(c)) + "\n" + table(c, false).markdown();
   md += "\n<details><summary>Every metric and image</summary>\n\n" + table(c, true).markdown() + "\n</details>\n";
   return md;

@@ -8,6 +8,8 @@
 
 namespace bench {
 
+// "REGRESSION", "no regression" or "INCONCLUSIVE: noisy machine; <why>; ...": what -q prints.
+std::string verdict_line(const Comparison& comparison);
 std::string comparison_text(const Comparison& comparison);
 std::string comparison_markdown(const Comparison& comparison);
 

@@ -15,7 +15,7 @@ struct Lab {
           if (options.device) device_options.selector = *options.device;
           return device_options;
         }()),
-        renderer(device),
+        renderer(device, {.test_slowdown = options.test_slowdown}),
         bench(renderer) {}
   vkx::Device device;
   renderer::Renderer renderer;

@@ -48,10 +48,13 @@ int run_sweep(const bench::Options& options, const std::string& text) {
   observer.reference_progress = [&](double fraction) {
     bar.update("reference", fraction, std::to_string(request.reference.samples) + " spp");
   };
-  observer.row_done = [&](std::size_t index, std::size_t, const api::SweepRow& row) {
-    bar.update("sweep", double(index + 1) / double(total),
-               "row " + std::to_string(index + 1) + "/" + std::to_string(total) + ", " +
-                   std::to_string(row.gpu_ms).substr(0, 6) + " ms");
+  observer.row_measured = [&](std::size_t index, std::size_t, const api::SweepRow&) {
+    bar.update("errors", double(index + 1) / double(total),
+               "row " + std::to_string(index + 1) + "/" + std::to_string(total));
+  };
+  observer.timing_progress = [&](std::size_t done, std::size_t frames) {
+    bar.update("timing", double(done) / double(frames),
+               "frame " + std::to_string(done) + "/" + std::to_string(frames) + ", rows interleaved");
   };
   const accuracy::SweepResult result = accuracy::sweep(lab.bench, request, observer);
   bar.finish();

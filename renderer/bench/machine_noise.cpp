@@ -1,0 +1,103 @@
+#include "renderer/bench/machine_noise.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
+#include <vector>
+
+namespace bench {
+namespace {
+
+// About 4 ms of integer work on one core of the project's machine: longer than a scheduler
+// slice, so that a core shared with other work shows in the time, and short enough that a
+// probe before each of a suite's few hundred rounds costs a second or two.
+constexpr std::uint32_t kProbeSteps = 6'000'000;
+
+// Where the probe's results go, so that the compiler cannot drop the work.
+volatile std::uint64_t probe_sink = 0;
+
+// A dependency chain the compiler cannot shorten.
+std::uint64_t probe_work(std::uint64_t seed) {
+  std::uint64_t x = seed | 1u;
+  for (std::uint32_t i = 0; i < kProbeSteps; ++i) {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+  }
+  return x;
+}
+
+// 1-minute load average; 0 where /proc is not there.
+double load_average() {
+  std::ifstream file("/proc/loadavg");
+  double load = 0.0;
+  file >> load;
+  return file ? load : 0.0;
+}
+
+// The CPU line of /proc/stat: stolen time and all time, in clock ticks; zeros without /proc.
+std::pair<std::uint64_t, std::uint64_t> cpu_ticks() {
+  std::ifstream file("/proc/stat");
+  std::string line, label;
+  if (!std::getline(file, line)) return {0, 0};
+  std::istringstream fields(line);
+  fields >> label;
+  // user nice system idle iowait irq softirq steal (guest time is counted in user already)
+  std::uint64_t value = 0, total = 0, steal = 0;
+  for (int i = 0; i < 8 && fields >> value; ++i) {
+    total += value;
+    if (i == 7) steal = value;
+  }
+  return {steal, total};
+}
+
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f%%", 100.0 * fraction);
+  return text;
+}
+
+}  // namespace
+
+NoiseMonitor::NoiseMonitor() {
+  noise_.load_start = load_average();
+  std::tie(steal_start_, total_start_) = cpu_ticks();
+}
+
+void NoiseMonitor::probe() {
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  std::vector<std::uint64_t> results(cores);
+  const auto start = std::chrono::steady_clock::now();
+  {
+    std::vector<std::jthread> threads;
+    for (unsigned c = 1; c < cores; ++c) threads.emplace_back([&results, c] { results[c] = probe_work(c); });
+    results[0] = probe_work(0);
+  }
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  for (const std::uint64_t r : results) probe_sink = probe_sink ^ r;
+  noise_.probe_ms.push_back(ms);
+}
+
+api::BenchNoise NoiseMonitor::noise() const {
+  api::BenchNoise noise = noise_;
+  noise.load_end = load_average();
+  const auto [steal, total] = cpu_ticks();
+  noise.steal = total > total_start_ ? double(steal - steal_start_) / double(total - total_start_) : 0.0;
+  return noise;
+}
+
+std::optional<std::string> too_noisy(const api::BenchNoise& noise) {
+  const api::BenchSummary probe = api::summarize(noise.probe_ms);
+  if (probe.spread > kMaxProbeSpread)
+    return "the CPU probe's times scatter by " + percent(probe.spread) + " (MAD / median of " + std::to_string(probe.n) +
+           "; at most " + percent(kMaxProbeSpread) + " for a verdict)";
+  if (noise.steal > kMaxSteal)
+    return "a hypervisor took " + percent(noise.steal) + " of the CPU time (at most " + percent(kMaxSteal) +
+           " for a verdict)";
+  return std::nullopt;
+}
+
+}  // namespace bench

@@ -1,0 +1,43 @@
+// How steady the machine is while a run measures: what the A/B pairs cannot cancel. Pairing
+// takes out a load that stays put for the seconds a pair takes; a load that comes and goes
+// faster than that (a build starting jobs, a hypervisor lending the cores out) moves each
+// render on its own, and no statistics over a dozen pairs tell that from a change. So a run
+// times a fixed piece of CPU work (the probe) before every round of renders, on every core at
+// once as lavapipe's threads run, and reads the load average and the CPU time stolen by a
+// hypervisor; a comparison refuses a verdict when the probe's own times scatter
+// (docs/perf-regression.md, "A noisy machine").
+#pragma once
+
+#include "api/bench_results.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace bench {
+
+// Beyond these a run's times are not judged: the probe's MAD / median (on a quiet machine
+// about 0.01; with a CPU hog on one of two cores about 0.03), and the share of stolen time.
+inline constexpr double kMaxProbeSpread = 0.10;
+inline constexpr double kMaxSteal = 0.05;
+
+class NoiseMonitor {
+ public:
+  NoiseMonitor();  // reads the load average and the CPU counters at the start
+
+  // Times the probe once: the same work on each core, until the last core is done.
+  void probe();
+
+  // The probe's times, and the load and the stolen time from the start until now.
+  api::BenchNoise noise() const;
+
+ private:
+  api::BenchNoise noise_;
+  std::uint64_t steal_start_ = 0, total_start_ = 0;
+};
+
+// Why a run's noise rules out a verdict ("the probe's times scatter by 23% (MAD / median; at
+// most 10% for a verdict)"), or nothing when it is steady enough.
+std::optional<std::string> too_noisy(const api::BenchNoise& noise);
+
+}  // namespace bench
