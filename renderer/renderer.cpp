@@ -189,17 +189,26 @@ struct Renderer::Impl {
                           const std::vector<std::uint32_t>& iterations_run) const;
   bool converged(std::uint32_t cascade, std::uint32_t step, std::uint32_t steps, float convergence) const;
   LpvSnapshot lpv_snapshot(const LpvSetup& lpv, bool with_geometry_volume) const;
-  // The named scene, made resident (loaded and uploaded) if it is not; the times are 0 when it was.
-  const ResidentScene& resident(const std::string& name, double& load_ms, double& upload_ms);
+  // The named scene, made resident (loaded, uploaded and warmed up) if it is not; the times
+  // are 0 when it was.
+  struct Residency {
+    const ResidentScene& scene;
+    double load_ms = 0.0, upload_ms = 0.0, warm_up_ms = 0.0;
+  };
+  Residency resident(const std::string& name);
+  // Small frames of a newly resident scene through both shading paths (forward to the
+  // display image; G-buffer and shade to linear images), indirect light included: lavapipe
+  // makes a material's pipeline on first use and compiles texture-sampling code at the first
+  // draw that binds a new texture, 50-250 ms the first frame would otherwise pay.
+  void warm_up(const ResidentScene& scene);
 };
 
 Renderer::Renderer(const vkx::Device& device, RendererOptions options)
     : device_(device), impl_(std::make_unique<Impl>(device, std::move(options))) {}
 Renderer::~Renderer() = default;
 
-const ResidentScene& Renderer::Impl::resident(const std::string& name, double& load_ms, double& upload_ms) {
-  load_ms = upload_ms = 0.0;
-  if (const ResidentScene* resident = scenes.find(name)) return *resident;
+Renderer::Impl::Residency Renderer::Impl::resident(const std::string& name) {
+  if (const ResidentScene* resident = scenes.find(name)) return {*resident};
   const auto load_start = Clock::now();
   std::optional<scene::Scene> loaded = scene::make_builtin_scene(name);
   if (!loaded && scene_source) loaded = scene_source(name);
@@ -208,24 +217,39 @@ const ResidentScene& Renderer::Impl::resident(const std::string& name, double& l
     for (const auto& info : scene::builtin_scenes()) names += (names.empty() ? "" : ", ") + info.name;
     throw api::RequestError("scene", "unknown scene '" + name + "'; built-in scenes: " + names);
   }
-  load_ms = ms_since(load_start);
+  const double load_ms = ms_since(load_start);
   const auto upload_start = Clock::now();
   GpuScene gpu = GpuScene::upload(device, *loaded, texture_layout);
-  upload_ms = ms_since(upload_start);
+  const double upload_ms = ms_since(upload_start);
   const std::uint64_t bytes = loaded->memory_bytes() + gpu.bytes();
-  return scenes.insert({name, std::move(*loaded), std::move(gpu), bytes});
+  const ResidentScene& scene = scenes.insert({name, std::move(*loaded), std::move(gpu), bytes});
+  const auto warm_start = Clock::now();
+  warm_up(scene);
+  return {scene, load_ms, upload_ms, ms_since(warm_start)};
+}
+
+void Renderer::Impl::warm_up(const ResidentScene& scene) {
+  api::RenderRequest request;
+  request.scene = scene.name;
+  request.output.width = request.output.height = 32;
+  try {
+    for (const unsigned readback : {kReadbackDisplay, kReadbackLinear})
+      (void)render(scene.scene, scene.gpu, request, readback, 0.0, 0.0);
+  } catch (const api::RequestError&) {
+    // A scene the default request does not fit: the request at hand says why, if it fails too.
+  }
 }
 
 RenderResult Renderer::render(const api::RenderRequest& request, unsigned readback) {
-  double load_ms = 0.0, upload_ms = 0.0;
-  const ResidentScene& scene = impl_->resident(request.scene, load_ms, upload_ms);
-  return impl_->render(scene.scene, scene.gpu, request, readback, load_ms, upload_ms);
+  const Impl::Residency scene = impl_->resident(request.scene);
+  RenderResult result = impl_->render(scene.scene.scene, scene.scene.gpu, request, readback, scene.load_ms, scene.upload_ms);
+  if (scene.warm_up_ms > 0.0) result.stats.cpu_ms["warm_up"] = api::TimeSummary::of({scene.warm_up_ms});
+  return result;
 }
 
-const scene::Scene& Renderer::scene(const std::string& name) {
-  double load_ms = 0.0, upload_ms = 0.0;
-  return impl_->resident(name, load_ms, upload_ms).scene;
-}
+double Renderer::prepare(const std::string& name) { return impl_->resident(name).warm_up_ms; }
+
+const scene::Scene& Renderer::scene(const std::string& name) { return impl_->resident(name).scene.scene; }
 
 RenderResult Renderer::render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback) {
   const auto start = Clock::now();

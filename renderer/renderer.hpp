@@ -94,6 +94,13 @@ class Renderer {
   RenderResult render(const api::RenderRequest& request, unsigned readback);
   RenderResult render(const api::RenderRequest& request) { return render(request, readback_for(request.output)); }
 
+  // Makes the named scene resident if it is not, which includes a warm-up: small frames
+  // through every shading path, so that what lavapipe compiles on first use (a material's
+  // pipeline, texture-sampling code) is compiled before a timed frame needs it. The request
+  // that makes a scene resident reports that time as cpu_ms.warm_up, apart from its frames.
+  // Returns the warm-up's time in ms (0: the scene was resident). Throws as render() does.
+  double prepare(const std::string& name);
+
   // Renders a scene given by the caller, uploaded for this call (request.scene is ignored).
   RenderResult render(const scene::Scene& scene, const api::RenderRequest& request, unsigned readback);
 

@@ -15,16 +15,10 @@ double ms_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-// One small frame of every built-in scene: compiles the pipelines (lavapipe JIT-compiles
-// shaders on first use, ~250 ms) and uploads the scenes before the first request.
+// Every built-in scene resident and warmed up (Renderer::prepare) before the first request:
+// lavapipe JIT-compiles shaders on first use, ~250 ms.
 void warm_up(renderer::Renderer& renderer) {
-  for (const auto& info : scene::builtin_scenes()) {
-    api::RenderRequest request;
-    request.scene = info.name;
-    request.output.width = 64;
-    request.output.height = 64;
-    renderer.render(request);
-  }
+  for (const auto& info : scene::builtin_scenes()) renderer.prepare(info.name);
 }
 
 }  // namespace

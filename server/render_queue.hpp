@@ -88,6 +88,17 @@ class RenderJob : public Job {
   void run(accuracy::Workbench& bench) override { result = bench.renderer.render(request); }
 };
 
+// Makes an uploaded scene resident on a worker and warms it up (Renderer::prepare), so that
+// its first render costs what later ones do.
+class PrepareJob : public Job {
+ public:
+  using Job::Job;
+  double warm_up_ms = 0.0;
+
+ protected:
+  void run(accuracy::Workbench& bench) override { warm_up_ms = bench.renderer.prepare(scene); }
+};
+
 class RenderQueue {
  public:
   struct Config {

@@ -118,6 +118,22 @@ std::string scene_name(const httplib::Request& request) {
   return name;
 }
 
+// A new scene warmed up on a render worker before the upload is answered, so that the
+// client's first render of it costs what later ones do (Renderer::prepare). Best effort: a
+// full queue, or a warm-up slower than kUploadWarmUpWait, leaves it to the first render,
+// which then reports the time as cpu_ms.warm_up. Other workers warm it on first use.
+void prepare_uploaded(const std::string& id, const httplib::Request& request, httplib::Response& response,
+                      Service& service) {
+  constexpr auto kUploadWarmUpWait = std::chrono::seconds(20);
+  const auto job = std::make_shared<PrepareJob>(id, Clock::now() + kUploadWarmUpWait);
+  if (service.queue.submit(job) != RenderQueue::Admission::accepted) return;
+  const ClientConnection client(request);
+  const std::optional<RenderQueue::Outcome> outcome =
+      service.queue.wait_until(*job, [&] { return client.closed(); }, Clock::now() + kUploadWarmUpWait);
+  if (outcome == RenderQueue::Outcome::done && !job->error)
+    response.set_header("Server-Timing", "warm_up;dur=" + std::to_string(job->warm_up_ms));
+}
+
 void handle_upload(const httplib::Request& request, httplib::Response& response,
                    const httplib::ContentReader& content, Service& service) {
   std::string name;
@@ -132,9 +148,11 @@ void handle_upload(const httplib::Request& request, httplib::Response& response,
   if (!body) return;
   try {
     const SceneStore::Added added = service.scenes.add(*body, name);
+    const std::string id = added.report.at("id").get<std::string>();
+    if (added.created) prepare_uploaded(id, request, response, service);
     // The same bytes again are the same scene: 200 with the first upload's report.
     send_json(response, added.report, added.created ? 201 : 200);
-    response.set_header("Location", "/v1/scenes/" + added.report.at("id").get<std::string>());
+    response.set_header("Location", "/v1/scenes/" + id);
   } catch (const scene::LoadError& e) {
     send_error(response, load_error(e));
   }

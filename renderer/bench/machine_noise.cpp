@@ -11,10 +11,10 @@
 namespace bench {
 namespace {
 
-// About 4 ms of integer work on one core of the project's machine: longer than a scheduler
+// About 6 ms of integer work on one core of the project's machine: longer than a scheduler
 // slice, so that a core shared with other work shows in the time, and short enough that a
 // probe before each of a suite's few hundred rounds costs a second or two.
-constexpr std::uint32_t kProbeSteps = 6'000'000;
+constexpr std::uint32_t kProbeSteps = 2'000'000;
 
 // Where the probe's results go, so that the compiler cannot drop the work.
 volatile std::uint64_t probe_sink = 0;

@@ -20,7 +20,9 @@ check "Markdown: 5 table rows" test "$(grep -c '^| o' result/sweep.md)" -eq 5
 check "Markdown on standard output" grep -q "Pareto" out.txt
 check "SVG document" grep -q "</svg>" result/sweep.svg
 check "JSON names the reference's samples" grep -q '"samples": 8' result/sweep.json
-check "progress on standard error" grep -q "sweep" err.txt
+check "progress on standard error, errors then timing" grep -q "timing" err.txt
+check "CSV: every row timed over 3 frames (the default repeat)" \
+  test "$(cut -d, -f12 result/sweep.csv | tail -n +2 | sort -u | tr -d '\r')" = 3
 
 cat >diff.json <<'JSON'
 {"base": {"output": {"width": 40, "height": 24}, "lpv": {"grid": 8}}, "against": {"lpv": {"grid": 16}}}

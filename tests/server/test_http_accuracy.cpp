@@ -101,9 +101,10 @@ TEST(HttpAccuracy, SweepStreamsItsEventsInOrder) {
   ASSERT_EQ(r->status, 200) << r->body;
   EXPECT_EQ(r->get_header_value("Content-Type"), "application/x-ndjson");
   const std::vector<nlohmann::json> events = lines_of(r->body);
-  ASSERT_GE(events.size(), 7u);  // reference, 5 rows, done (progress lines besides)
+  ASSERT_GE(events.size(), 8u);  // reference, 5 rows, timing, done (progress lines besides)
   std::size_t rows = 0;
   bool reference_seen = false;
+  nlohmann::json last_timing;
   for (std::size_t i = 0; i + 1 < events.size(); ++i) {
     const std::string kind = events[i]["event"];
     if (kind == "reference_progress") {
@@ -114,14 +115,23 @@ TEST(HttpAccuracy, SweepStreamsItsEventsInOrder) {
       reference_seen = true;
       continue;
     }
+    if (kind == "timing_progress") {  // the timed frames, once every row's errors are in
+      EXPECT_EQ(rows, 5u);
+      last_timing = events[i];
+      continue;
+    }
     ASSERT_EQ(kind, "row") << events[i].dump();
     EXPECT_TRUE(reference_seen);
+    EXPECT_TRUE(last_timing.is_null()) << "a row after the timing began";
     EXPECT_EQ(events[i]["index"], rows++);
     EXPECT_EQ(events[i]["total"], 5);
   }
   EXPECT_EQ(rows, 5u);
+  EXPECT_EQ(last_timing, nlohmann::json({{"event", "timing_progress"}, {"done", 15}, {"total", 15}}))
+      << "5 rows x 3 frames, the last always sent";
   EXPECT_EQ(events.back()["event"], "done");
   EXPECT_EQ(events.back()["table"]["rows"].size(), 5u);
+  for (const nlohmann::json& row : events.back()["table"]["rows"]) EXPECT_EQ(row["frames"], 3);
 }
 
 // 65 rows (LPV off, then 4 grids x 16 iteration counts): about 7.5 s on the project's 2-core

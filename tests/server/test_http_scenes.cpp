@@ -171,9 +171,15 @@ TEST(HttpScenes, UploadListRenderRestartDeleteAndRenderNoMore) {
   ASSERT_EQ(one->status, 200);
   EXPECT_EQ(nlohmann::json::parse(one->body), report);
 
+  // The upload warmed the scene up on the worker: its first render loads nothing and
+  // compiles nothing (no scene_load, no warm_up among its CPU times).
+  EXPECT_EQ(created->get_header_value("Server-Timing").rfind("warm_up;dur=", 0), 0u) << "the warm-up's time";
   const auto first = render(*http, id);
   EXPECT_TRUE(renders_png(first));
-  EXPECT_EQ(nlohmann::json::parse(first->get_header_value("X-Render-Stats"))["scene"], id);
+  const auto first_stats = nlohmann::json::parse(first->get_header_value("X-Render-Stats"));
+  EXPECT_EQ(first_stats["scene"], id);
+  EXPECT_EQ(first_stats["cpu_ms"]["scene_load"]["median"], 0.0);
+  EXPECT_FALSE(first_stats["cpu_ms"].contains("warm_up")) << first_stats["cpu_ms"].dump();
   const std::string metrics = http->Get("/metrics")->body;
   EXPECT_NE(metrics.find("lpv_uploaded_scenes 1\n"), std::string::npos);
   EXPECT_NE(metrics.find("lpv_scene_cache_scenes{worker=\"0\"} "), std::string::npos);
@@ -183,7 +189,12 @@ TEST(HttpScenes, UploadListRenderRestartDeleteAndRenderNoMore) {
   server.emplace(std::vector<std::string>{"--data-dir", data.path()});
   http = server->client();
   EXPECT_EQ(uploaded_scenes(*http), (std::map<std::string, nlohmann::json>{{id, report}}));
-  EXPECT_TRUE(renders_png(render(*http, id)));
+  // Not resident after the restart: the first render loads it and warms it up, and says so
+  // apart from its frames.
+  const auto after_restart = render(*http, id);
+  EXPECT_TRUE(renders_png(after_restart));
+  const auto restart_stats = nlohmann::json::parse(after_restart->get_header_value("X-Render-Stats"));
+  EXPECT_GT(restart_stats["cpu_ms"]["warm_up"]["median"].get<double>(), 0.0) << restart_stats["cpu_ms"].dump();
 
   const auto deleted = http->Delete("/v1/scenes/" + id);
   ASSERT_TRUE(deleted);
