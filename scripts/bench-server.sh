@@ -3,6 +3,7 @@
 #  - warm POST /v1/render latency, median and p99, PNG included, one client on one
 #    keep-alive connection, at 256x256 and 512x512 (cornell-box);
 #  - sustained requests/s at 256x256 with 4 concurrent clients;
+#  - the first render of a newly uploaded scene against its steady frame (PNG and EXR);
 #  - the server's RSS after 10 and after 1000 requests (256x256, 4 clients, direct light
 #    unless RSS_LPV=on).
 # Each render is measured twice: the default request (LPV on) and with
@@ -75,6 +76,24 @@ for lpv in on off; do
     'BEGIN {printf "  lpv %-3s  %.1f requests/s (%d requests in %.1f s)\n", l, n / (b - a), n, b - a}'
 done
 
+echo "== first render of a new upload against its steady frame (256x256, round trips; docs/server.md)"
+# The upload warms the scene up on the worker (Renderer::prepare); its first render should
+# cost what the later ones do. Scenes from assimp-testmodels: a textured box, an engine.
+for scene in /usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb \
+             /usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb; do
+  [ -f "$scene" ] || { echo "  $(basename "$scene"): not installed (assimp-testmodels)"; continue; }
+  id=$(curl -s -f -H 'Content-Type: model/gltf-binary' --data-binary "@$scene" "http://127.0.0.1:$port/v1/scenes" |
+       sed -n 's/.*"id": *"\([0-9a-f]*\)".*/\1/p')
+  for format in png exr; do
+    request="{\"scene\": \"$id\", \"output\": {\"width\": 256, \"height\": 256, \"format\": \"$format\"}}"
+    client 6 "$request" >"$work/first" || true
+    first=$(head -1 "$work/first")
+    tail -n +2 "$work/first" | sort -n | awk -v name="$(basename "$scene") $format" -v first="$first" \
+      '{v[NR] = $1 * 1000} END {m = (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
+        printf "  %-26s first %.1f ms, steady median %.1f ms: %.2fx\n", name, first * 1000, m, first * 1000 / m}'
+  done
+done
+
 echo "== server RSS, 256x256, 4 clients (lpv $rss_lpv), counted from here"
 client 10 "$(body 256 "$rss_lpv")" >/dev/null
 rss10=$(rss_kib)
@@ -82,6 +101,7 @@ rest=$((rss_requests - 10))
 clients=()
 for i in 0 1 2 3; do  # the rest split over 4 clients, the first taking the remainder
   count=$((rest / 4 + (i == 0 ? rest % 4 : 0)))
+  [ "$count" -gt 0 ] || continue
   client "$count" "$(body 256 "$rss_lpv")" >/dev/null &
   clients+=($!)
 done
