@@ -5,7 +5,9 @@
 # one core busy. Prints each run's one-line verdict and the counts (docs/perf-regression.md,
 # "How often the verdicts are wrong").
 #   bench/verdict-rates.sh [RUNS (20)] [SUITE (verdicts)] [LPV_BENCH (build/lpv-bench)]
-# The hog is bounded (it ends with this script, and after an hour at most).
+# LPV_VERDICT_RATES_OUT=DIR keeps every run's ab.json there (aa-1/, ab-1/, ...), to see what a
+# wrong verdict was made of. The hog is bounded (it ends with this script, and after an hour
+# at most).
 set -u
 runs="${1:-20}"
 suite="${2:-verdicts}"
@@ -33,7 +35,9 @@ tally() {  # KIND STATUS
 for kind in A/A A/B; do
   b="$bin"; [ "$kind" = A/B ] && b="$slow"
   for i in $(seq 1 "$runs"); do
-    "$bin" ab --a "$bin" --b "$b" "$suite" -q --no-server -o "$work/run" >"$work/line" 2>"$work/err"
+    out="$work/run"
+    [ -n "${LPV_VERDICT_RATES_OUT:-}" ] && out="$LPV_VERDICT_RATES_OUT/$(echo "$kind" | tr -d / | tr AB ab)-$i"
+    "$bin" ab --a "$bin" --b "$b" "$suite" -q --no-server -o "$out" >"$work/line" 2>"$work/err"
     status=$?
     printf '%s %2d: %s\n' "$kind" "$i" "$(head -c 300 "$work/line" | tr '\n' ' ')"
     case "$status" in 0 | 1 | 4) ;; *) cat "$work/err" >&2 ;; esac

@@ -11,10 +11,12 @@
 namespace bench {
 namespace {
 
-// About 6 ms of integer work on one core of the project's machine: longer than a scheduler
-// slice, so that a core shared with other work shows in the time, and short enough that a
-// probe before each of a suite's few hundred rounds costs a second or two.
-constexpr std::uint32_t kProbeSteps = 2'000'000;
+// About 15 ms of integer work per core on the project's machine: several scheduler slices,
+// so that a steady load (a CPU hog) averages out as it does over a render, and what is left
+// is a load that comes and goes; short enough that a probe before each of a suite's few
+// hundred rounds costs a few seconds. (A 5 ms probe scattered by 13-22% under one hog, when
+// the renders' pairs still agreed.)
+constexpr std::uint32_t kProbeSteps = 6'000'000;
 
 // Where the probe's results go, so that the compiler cannot drop the work.
 volatile std::uint64_t probe_sink = 0;

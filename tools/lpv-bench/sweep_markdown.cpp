@@ -4,6 +4,7 @@
 #include <cstdio>
 
 namespace bench {
+
 namespace {
 
 std::string number(double x, const char* format) {
@@ -16,6 +17,16 @@ std::string number(double x, const char* format) {
 std::string grid_text(const std::array<std::uint32_t, 3>& g) {
   if (g[0] == g[1] && g[1] == g[2]) return std::to_string(g[0]) + "³";
   return std::to_string(g[0]) + "×" + std::to_string(g[1]) + "×" + std::to_string(g[2]);
+}
+
+std::string gpu_text(const api::SweepRow& row) {
+  if (row.frames < 2) return number(row.gpu_ms, "%.1f");
+  return number(row.gpu_ms, "%.1f") + " (" + number(row.gpu_ms_range.first, "%.1f") + "–" +
+         number(row.gpu_ms_range.second, "%.1f") + ")";
+}
+
+std::string pareto_text(const api::SweepRow& row) {
+  return std::string(row.pareto ? "★" : "") + (row.pareto_uncertain ? "?" : "");
 }
 
 }  // namespace
@@ -38,12 +49,14 @@ std::string sweep_markdown(const api::SweepTable& table, const api::ReferenceRep
           lpv_only(std::to_string(s.rsm)) + " | " + lpv_only(std::to_string(s.vpl_downsample)) + " | " +
           lpv_only(std::to_string(s.bounces)) + " | " + lpv_only(s.occlusion ? "on" : "off") + " | " +
           lpv_only(api::to_string(s.transfer)) + " | " +
-          number(row.gpu_ms, "%.1f") + " | " + number(row.final_error.rmse, "%.4g") + " | " +
+          gpu_text(row) + " | " + number(row.final_error.rmse, "%.4g") + " | " +
           number(row.final_error.relative_mse, "%.4g") + " | " + number(row.final_error.ssim, "%.4f") + " | " +
           number(row.indirect_error.rmse, "%.4g") + " | " + number(row.indirect_error.mean_signed_error, "%+.3g") +
-          " | " + (row.pareto ? "★" : "") + " |\n";
+          " | " + pareto_text(row) + " |\n";
   }
-  md += "\nPareto (★): no other row is both faster and more accurate (" + api::error_label(table.axis) + ").\n";
+  md += "\nGPU ms: the median of the row's timed frames (the rows took turns, every row rendered once untimed "
+        "first), the fastest and slowest in brackets. Pareto (★): no other row is both faster and more accurate (" +
+        api::error_label(table.axis) + "); ? where the frames' ranges could put the row on the other side.\n";
   return md;
 }
 
