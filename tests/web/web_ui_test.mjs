@@ -340,6 +340,10 @@ test('the error against the reference, and a sweep whose points load their setti
   assert.equal(await page.locator('#sweep-stop').isDisabled(), true, 'nothing to stop');
   assert.equal(await page.locator('#sweep-plot circle').count(), 3, 'LPV off, 4³ and 8³');
   assert.ok(await page.locator('#sweep-plot circle.pareto').count() >= 1, 'the Pareto front is marked');
+  // Each row timed over 3 frames (the default repeat): the median and its range.
+  const times = await page.locator('#sweep-table tr td:nth-child(2)').allTextContents();
+  assert.equal(times.length, 3);
+  for (const text of times) assert.match(text, /^[\d.]+ \([\d.]+–[\d.]+\)$/, `GPU ms with its range: ${text}`);
   await screenshot(page, '07-sweep');
 
   await page.locator('#sweep-plot circle[aria-label^="grid 8×8×8"]').click();
