@@ -1,6 +1,7 @@
 // lpv-bench compare and ab on constructed results: an image change is flagged even when
 // every time is the same, rounding is not, and failures and missing cases are reported.
 #include "renderer/bench/image_fingerprint.hpp"
+#include "renderer/bench/machine_noise.hpp"
 #include "renderer/bench/results_comparison.hpp"
 
 #include <gtest/gtest.h>
@@ -191,3 +192,38 @@ TEST(BenchFingerprint, ThumbnailIsABoxFilterToAtMost64Pixels) {
 }
 
 }  // namespace
+
+namespace {
+
+api::BenchNoise noise(std::vector<double> probe_ms, double steal = 0.0) { return {std::move(probe_ms), 1.0, 1.0, steal}; }
+
+}  // namespace
+
+TEST(BenchNoise, AProbeThatScattersOrStolenTimeRuleOutAVerdict) {
+  // MAD / median: 2% is a quiet machine, 25% one whose load comes and goes.
+  EXPECT_FALSE(bench::too_noisy(noise({10.0, 10.2, 9.8, 10.1, 9.9, 10.0})));
+  const std::optional<std::string> scattered = bench::too_noisy(noise({10.0, 13.0, 7.0, 12.5, 7.5, 10.0}));
+  ASSERT_TRUE(scattered);
+  EXPECT_NE(scattered->find("scatter by 25%"), std::string::npos) << *scattered;
+  const std::optional<std::string> stolen = bench::too_noisy(noise({10.0, 10.0, 10.0}, 0.2));
+  ASSERT_TRUE(stolen);
+  EXPECT_NE(stolen->find("hypervisor took 20%"), std::string::npos) << *stolen;
+}
+
+TEST(BenchNoise, ANoisyRunIsInconclusiveButAChangedImageStillARegression) {
+  const std::vector<double> slower = {20.0, 20.4, 19.8, 20.2, 20.0, 20.6, 19.6};  // 2x: "slower" on a quiet machine
+  api::BenchResults base = results("base", gradient(1.0f), kTimes);
+  api::BenchResults cand = results("cand", gradient(1.0f), slower);
+  EXPECT_EQ(bench::compare_runs(base, cand, {}).outcome(), bench::Outcome::regression);
+  base.noise = noise({10.0, 13.0, 7.0, 12.5, 7.5, 10.0});
+  const bench::Comparison noisy = bench::compare_runs(base, cand, {});
+  EXPECT_EQ(noisy.outcome(), bench::Outcome::inconclusive);
+  ASSERT_EQ(noisy.noisy.size(), 1u);
+  EXPECT_EQ(noisy.noisy[0].rfind("base: ", 0), 0u) << noisy.noisy[0];
+  // What a noisy machine cannot explain: the image.
+  EXPECT_EQ(bench::compare_runs(base, results("cand", gradient(1.2f), kTimes), {}).outcome(),
+            bench::Outcome::regression);
+  // Quiet runs that say so are judged as before.
+  base.noise = cand.noise = noise({10.0, 10.2, 9.8, 10.1, 9.9, 10.0});
+  EXPECT_EQ(bench::compare_runs(base, cand, {}).outcome(), bench::Outcome::regression);
+}

@@ -41,6 +41,8 @@ check "compare of a run with itself exits 0" test "$rc" -eq 0
 check "no regression said" grep -q "no regression" out.txt
 check "comparison JSON" grep -q '"regression": false' same.json
 check "too few repetitions are warned about" grep -q "cannot show any difference" out.txt
+run compare base.json base.json -q
+check "-q: the verdict alone, one line" test "$(cat out.txt)" = "no regression"
 
 # The same suite with one image made brighter: same work, same times, another image.
 sed 's/"output": {"width": 64, "height": 64}, "lpv": {"enabled": false}/"output": {"width": 64, "height": 64, "exposure": 1}, "lpv": {"enabled": false}/' \
