@@ -32,11 +32,17 @@ api::SweepTable table_of(std::vector<api::SweepRow> rows, api::ParetoAxis axis =
   return {std::move(rows), axis};
 }
 
-std::vector<bool> front_of(api::SweepTable table) {
+// One flag of every row after mark_pareto: pareto, or pareto_uncertain.
+std::vector<bool> flags_of(api::SweepTable table, bool api::SweepRow::*flag) {
   api::mark_pareto(table);
   std::vector<bool> flags;
-  for (const api::SweepRow& r : table.rows) flags.push_back(r.pareto);
+  for (const api::SweepRow& r : table.rows) flags.push_back(r.*flag);
   return flags;
+}
+
+std::vector<bool> front_of(api::SweepTable table) { return flags_of(std::move(table), &api::SweepRow::pareto); }
+std::vector<bool> uncertain_of(api::SweepTable table) {
+  return flags_of(std::move(table), &api::SweepRow::pareto_uncertain);
 }
 
 // ---- Pareto ---------------------------------------------------------------------
@@ -60,13 +66,6 @@ api::SweepRow ranged(double fastest, double median, double slowest, double final
   r.frames = 3;
   r.gpu_ms_range = {fastest, slowest};
   return r;
-}
-
-std::vector<bool> uncertain_of(api::SweepTable table) {
-  api::mark_pareto(table);
-  std::vector<bool> flags;
-  for (const api::SweepRow& r : table.rows) flags.push_back(r.pareto_uncertain);
-  return flags;
 }
 
 TEST(SweepPareto, DecisionsTheRangesCannotSupportAreUncertain) {
