@@ -112,6 +112,13 @@ check "indices out of range are explained" grep -qi "index\|indices" err.txt
 run --scene "$corpus/MissingBin/BoxTextured.gltf"
 check "missing .bin exits 3" test "$rc" -eq 3
 check "missing .bin is named" grep -q "BoxTextured0.bin" err.txt
+run --scene "$corpus/draco/2CylinderEngine.gltf"
+check "a Draco-compressed file exits 3" test "$rc" -eq 3
+check "a Draco-compressed file names the extension" \
+  grep -q "required extension KHR_draco_mesh_compression is not supported" err.txt
+run --scene "$corpus/../glTF/TwoBoxes/TwoBoxes.gltf"
+check "a glTF 1.0 file exits 3" test "$rc" -eq 3
+check "a glTF 1.0 file is named as such" grep -q "glTF 1.0 is not supported (2.0 only)" err.txt
 run --scene no-such-model.glb
 check "missing scene file exits 3" test "$rc" -eq 3
 check "missing scene file is explained" grep -q "^lpv-render: no-such-model.glb: .*no such file" err.txt
