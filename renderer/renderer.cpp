@@ -1,5 +1,6 @@
 #include "renderer/renderer.hpp"
 
+#include "api/counted.hpp"
 #include "api/request_error.hpp"
 #include "renderer/frame_plan.hpp"
 #include "renderer/frame_setup.hpp"
@@ -236,7 +237,7 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
   const std::uint32_t shadow_res = plan.run[kShadow] ? request.shadows.resolution : 1;
   const std::uint64_t atlas_bytes = std::uint64_t(shadow_res) * shadow_res * shadow_layers * 4;
   if (atlas_bytes > kShadowAtlasBudgetBytes)
-    throw api::RequestError("shadows.resolution", std::to_string(shadow_layers) + " shadow maps of " +
+    throw api::RequestError("shadows.resolution", api::counted(shadow_layers, "shadow map") + " of " +
                                                       std::to_string(shadow_res) + "^2 need " + mib(atlas_bytes) +
                                                       ", over the budget of " + mib(kShadowAtlasBudgetBytes) +
                                                       ": lower the resolution");
@@ -246,14 +247,14 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
   const std::uint64_t rsm_bytes =
       std::uint64_t(request.lpv.rsm_resolution) * request.lpv.rsm_resolution * rsm_layers * RsmMaps::kBytesPerTexel;
   if (lpv && rsm_bytes > kRsmBudgetBytes)
-    throw api::RequestError("lpv.rsm", std::to_string(rsm_layers) + " reflective shadow maps of " +
+    throw api::RequestError("lpv.rsm", api::counted(rsm_layers, "reflective shadow map") + " of " +
                                            std::to_string(request.lpv.rsm_resolution) + "^2 need " + mib(rsm_bytes) +
                                            ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
   const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
                             std::to_string(request.lpv.grid.z) + " cells";
   const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades);
   if (lpv && lpv_bytes > kLpvBudgetBytes)
-    throw api::RequestError("lpv.grid", std::to_string(request.lpv.cascades) + " cascades of " + cells + " need " +
+    throw api::RequestError("lpv.grid", api::counted(request.lpv.cascades, "cascade") + " of " + cells + " need " +
                                             mib(lpv_bytes) + ", over the budget of " + mib(kLpvBudgetBytes) +
                                             ": use fewer cells");
   const std::uint64_t buffer_bytes = LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades);

@@ -1,5 +1,6 @@
 // Tests of the request/stats JSON layer (api/): defaults, validation with field
 // paths, round trips, malformed JSON, TimeSummary and the stats JSON shape.
+#include "api/counted.hpp"
 #include "api/render_request.hpp"
 #include "api/render_stats.hpp"
 #include "api/request_error.hpp"
@@ -529,9 +530,18 @@ TEST(ParseRequest, MessagesSayWhatWasExpectedAndWhatWasGot) {
   EXPECT_EQ(message(R"({"output": {"width": 8192, "height": 8192}})"),
             "output: width x height must be at most 16777216 pixels, got 8192 x 8192 = 67108864");
   EXPECT_EQ(message("[1, 2]"), "the request must be an object, got an array of 2 elements");
+  EXPECT_EQ(message("[1]"), "the request must be an object, got an array of 1 element");
   // A long string is cut short in the message.
   const std::string long_name(1000, 'x');
   EXPECT_LT(message(R"({"scene": ")" + long_name + "\"}").size(), 200u);
+}
+
+TEST(Counted, SingularForOneOnly) {
+  EXPECT_EQ(api::counted(1, "light"), "1 light");
+  EXPECT_EQ(api::counted(2, "light"), "2 lights");
+  EXPECT_EQ(api::counted(0, "light"), "0 lights");
+  EXPECT_EQ(api::counted(1, "vertex", "vertices"), "1 vertex");
+  EXPECT_EQ(api::counted(3, "vertex", "vertices"), "3 vertices");
 }
 
 TEST(ParseRequest, RejectsNonFiniteNumbersInABuiltJson) {
