@@ -103,6 +103,7 @@ struct Renderer::Impl {
         shade(device),
         timer(device),
         scene_source(std::move(options.scenes)),
+        progress(std::move(options.progress)),
         scenes(options.scene_cache_bytes) {
     VkCommandPoolCreateInfo pool_ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pool_ci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -131,6 +132,7 @@ struct Renderer::Impl {
   VkCommandBuffer commands = VK_NULL_HANDLE;
 
   SceneSource scene_source;
+  std::function<void(const RenderProgress&)> progress;
   SceneCache scenes;
   std::optional<FrameTargets> targets;
   std::optional<ShadowAtlas> atlas;
@@ -370,6 +372,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   std::vector<std::vector<double>> pass_ms(kPassCount);
   std::vector<std::vector<std::vector<double>>> cascade_ms(kPassCount, std::vector<std::vector<double>>(cascades));
   std::vector<std::uint32_t> iterations_run(iterations.size(), 0);
+  std::size_t passes_done = 0;  // for progress reports
   for (std::uint32_t f = 0; f < request.repeat; ++f) {
     const auto frame_start = Clock::now();
     double frame_record_ms = 0.0, frame_wait_ms = 0.0, frame_gpu_ms = 0.0;
@@ -398,6 +401,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
       if (is_grid_pass(p)) cascade_ms[p][c].push_back(pass_gpu_ms);
       frame_pass_ms[p] += pass_gpu_ms;
       frame_gpu_ms += pass_gpu_ms;
+      if (progress)
+        progress({f + 1, request.repeat, kPassNames[p], double(++passes_done) / double(schedule.size() * request.repeat)});
     }
     for (std::uint32_t p = 0; p < kPassCount; ++p)
       if (plan.run[p]) pass_ms[p].push_back(frame_pass_ms[p]);
