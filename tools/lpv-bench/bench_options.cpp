@@ -7,7 +7,9 @@
 
 namespace bench {
 
-const char* usage() {
+std::string usage(const std::vector<std::string>& suites) {
+  std::string names;
+  for (const std::string& name : suites) names += (names.empty() ? "" : ", ") + name;
   return R"(usage: lpv-bench sweep REQUEST.json|- [options]
        lpv-bench diff REQUEST.json|- [options]
        lpv-bench run SUITE [options]
@@ -22,9 +24,9 @@ sweep    renders the reference once, then every configuration of LPV settings th
 diff     compares a render with a second setting or with the reference (the schema of
          POST /v1/compare): writes base.png, other.png, difference.png (heat map),
          base.exr, other.exr (linear) and compare.json (metrics, stats, reference).
-run      times a benchmark suite (a file, or the name of one in bench/suites: default,
-         quick): per case an image render, warm-up renders, then timed repetitions;
-         writes the results (bench/results.schema.json) and prints a summary table.
+run      times a benchmark suite (a file, or the name of one in bench/suites: below):
+         per case an image render, warm-up renders, then timed repetitions; writes
+         the results (bench/results.schema.json) and prints a summary table.
 compare  a candidate's results against a baseline's: per case and metric the ratio of
          the medians and a verdict (faster, slower, unchanged: Mann-Whitney U and a
          minimum effect), and whether the image changed.
@@ -76,7 +78,7 @@ exit status: 0 success (compare, ab: no regression); 1 failure (device, files, a
              that failed; compare, ab: a total slower (or a pass, with --gate-passes), an
              image changed, a case failing in the candidate, or no case compared at all);
              2 bad usage or bad input
-)";
+suites in bench/suites: )" + (names.empty() ? "none found" : names) + "\n";
 }
 
 namespace {

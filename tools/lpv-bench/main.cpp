@@ -112,7 +112,7 @@ int run_diff(const bench::Options& options, const std::string& text) {
 int run(int argc, char** argv) {
   const bench::Options options = bench::parse(argc, argv);
   if (options.help) {
-    std::fputs(bench::usage(), stdout);
+    std::fputs(bench::usage(bench::suite_names()).c_str(), stdout);
     return 0;
   }
   switch (options.command) {
@@ -132,7 +132,7 @@ int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const bench::UsageError& e) {
-    std::fprintf(stderr, "lpv-bench: %s\n\n%s", e.what(), bench::usage());
+    std::fprintf(stderr, "lpv-bench: %s\nTry 'lpv-bench --help'.\n", e.what());
     return kExitBadInput;
   } catch (const api::RequestError& e) {
     std::fprintf(stderr, "lpv-bench: bad request: %s\n", e.what());
