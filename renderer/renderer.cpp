@@ -70,10 +70,12 @@ void copy_to_host(const vkx::Buffer& readback, const api::Output& out, Image& im
   std::memcpy(image.pixels.data(), readback.mapped(), image.pixels.size() * sizeof(image.pixels[0]));
 }
 
-// Every pass with whether it runs and why, without times.
-std::vector<api::PassStats> pass_list(const FramePlan& plan) {
+// Every pass with whether it runs and why, without times; a dry run's passes are only
+// planned, none ran.
+std::vector<api::PassStats> pass_list(const FramePlan& plan, bool dry_run) {
   std::vector<api::PassStats> passes;
-  for (std::uint32_t p = 0; p < kPassCount; ++p) passes.push_back({kPassNames[p], plan.run[p], plan.reason[p], {}, {}});
+  for (std::uint32_t p = 0; p < kPassCount; ++p)
+    passes.push_back({kPassNames[p], plan.run[p], plan.run[p] && !dry_run, plan.reason[p], {}, {}});
   return passes;
 }
 
@@ -453,7 +455,7 @@ api::RenderStats Renderer::Impl::plan_stats(const scene::Scene& scene, const api
   stats.view = api::to_string(request.output.view);
   stats.plan = api::to_string(request.plan);
   stats.decisions = plan.decisions;
-  stats.passes = pass_list(plan);
+  stats.passes = pass_list(plan, request.dry_run);
   stats.cpu_ms["plan"] = api::TimeSummary::of({plan_ms});
   stats.device = device.info().name;
   stats.driver = device.info().driver;

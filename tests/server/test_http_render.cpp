@@ -118,10 +118,12 @@ TEST(HttpRender, DryRunReturnsThePlanWithoutAnImage) {
   EXPECT_EQ(body["stats"]["plan"]["mode"], "auto");
   ASSERT_EQ(body["stats"]["plan"]["decisions"].size(), 1u);
   for (const auto& pass : body["stats"]["passes"]) {
+    EXPECT_FALSE(pass["ran"]) << "nothing runs in a dry run: " << pass.dump();
     if (pass["name"] == "shadow") {
-      EXPECT_FALSE(pass["ran"]);
+      EXPECT_FALSE(pass["planned"]);
       EXPECT_EQ(pass["reason"], "no light reaches the scene");
     }
+    if (pass["name"] == "forward") EXPECT_TRUE(pass["planned"]) << "what would run is planned: " << pass.dump();
   }
 }
 
