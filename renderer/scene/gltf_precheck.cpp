@@ -19,10 +19,11 @@ std::uint32_t u32le(std::span<const std::uint8_t> bytes, std::size_t at) {
          std::uint32_t(bytes[at + 3]) << 24;
 }
 
-// `what`: "glTF 1.0" and why the file is that, or the version it names.
+// `what`: the version a file names, 'glTF version "3.0"'.
 [[noreturn]] void version_unsupported(const std::string& what) {
   fail(LoadError::Kind::unsupported, what + " is not supported (2.0 only)");
 }
+// `why`: what shows the file is glTF 1.0.
 [[noreturn]] void gltf_1_unsupported(const std::string& why) {
   fail(LoadError::Kind::unsupported, "glTF 1.0 is not supported (2.0 only): " + why);
 }
