@@ -390,6 +390,8 @@ test('the error against the reference, and a sweep whose points load their setti
   assert.ok(await page.locator('#sweep-plot circle.pareto').count() >= 1, 'the Pareto front is marked');
   await screenshot(page, '07-sweep');
 
+  assert.match(await page.locator('#sweep-plot circle[aria-label^="grid 8×8×8"]').getAttribute('aria-label'),
+    /^grid 8×8×8, 4 iterations, 1 cascade, RSM \d+, VPL downsample \d+, 1 bounce, /, 'counted in good English');
   await page.locator('#sweep-plot circle[aria-label^="grid 8×8×8"]').click();
   const loaded = await frameShown(page, (request) => request.lpv?.grid === 8 && request.lpv?.iterations === 4);
   assert.equal(loaded.output.width, 128, 'only the LPV settings change');
