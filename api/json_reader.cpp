@@ -1,5 +1,7 @@
 #include "api/json_reader.hpp"
 
+#include "api/counted.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -52,7 +54,7 @@ std::string describe(const json& v) {
       return v.dump();
     }
     case json::value_t::string: return "string " + quote(v.get_ref<const std::string&>());
-    case json::value_t::array: return "an array of " + std::to_string(v.size()) + " elements";
+    case json::value_t::array: return "an array of " + counted(v.size(), "element");
     case json::value_t::object: return "an object";
     default: return "an unsupported value";
   }

@@ -22,8 +22,9 @@ struct TimeSummary {
 
 struct PassStats {
   std::string name;
-  bool ran = true;
-  std::string reason;  // why it ran or was skipped; may be empty
+  bool planned = false;  // the plan runs it
+  bool ran = false;      // it ran: planned, and the request was no dry run
+  std::string reason;    // why it ran or was skipped; may be empty
   TimeSummary gpu_ms;
   std::vector<TimeSummary> cascade_gpu_ms;  // LPV grid passes: the share of each cascade
 };

@@ -448,7 +448,7 @@ nlohmann::json to_json(const RenderRequest& request) {
 nlohmann::json to_json(const RenderStats& stats) {
   json passes = json::array();
   for (const PassStats& pass : stats.passes) {
-    json p = {{"name", pass.name}, {"ran", pass.ran}};
+    json p = {{"name", pass.name}, {"planned", pass.planned}, {"ran", pass.ran}};
     if (!pass.reason.empty()) p["reason"] = pass.reason;
     p["gpu_ms"] = summary_json(pass.gpu_ms);
     if (!pass.cascade_gpu_ms.empty()) {

@@ -1,5 +1,6 @@
 #include "renderer/frame_setup.hpp"
 
+#include "api/counted.hpp"
 #include "api/request_error.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -53,8 +54,9 @@ std::vector<api::Light> resolve_lights(const scene::Scene& scene, const api::Ren
     const api::LightEdit& edit = request.light_edits[i];
     const std::string field = "light_edits[" + std::to_string(i) + "]";
     if (edit.index >= lights.size())
-      throw api::RequestError(field + ".index", "no light " + std::to_string(edit.index) + ": there are " +
-                                                    std::to_string(lights.size()) + " lights");
+      throw api::RequestError(field + ".index", "no light " + std::to_string(edit.index) + ": there " +
+                                                    (lights.size() == 1 ? "is " : "are ") +
+                                                    api::counted(lights.size(), "light"));
     api::apply_edit(lights[edit.index], edit);
     check_cones(lights[edit.index], field);  // the edit alone could not be checked against the light
   }

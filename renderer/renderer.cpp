@@ -1,5 +1,6 @@
 #include "renderer/renderer.hpp"
 
+#include "api/counted.hpp"
 #include "api/request_error.hpp"
 #include "renderer/frame_plan.hpp"
 #include "renderer/frame_setup.hpp"
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
+#include <utility>
 
 namespace renderer {
 namespace {
@@ -76,10 +78,12 @@ void copy_to_host(const vkx::Buffer& readback, const api::Output& out, Image& im
   std::memcpy(image.pixels.data(), readback.mapped(), image.pixels.size() * sizeof(image.pixels[0]));
 }
 
-// Every pass with whether it runs and why, without times.
-std::vector<api::PassStats> pass_list(const FramePlan& plan) {
+// Every pass with whether it runs and why, without times; a dry run's passes are only
+// planned, none ran.
+std::vector<api::PassStats> pass_list(const FramePlan& plan, bool dry_run) {
   std::vector<api::PassStats> passes;
-  for (std::uint32_t p = 0; p < kPassCount; ++p) passes.push_back({kPassNames[p], plan.run[p], plan.reason[p], {}, {}});
+  for (std::uint32_t p = 0; p < kPassCount; ++p)
+    passes.push_back({kPassNames[p], plan.run[p], plan.run[p] && !dry_run, plan.reason[p], {}, {}});
   return passes;
 }
 
@@ -109,6 +113,7 @@ struct Renderer::Impl {
         shade(device),
         timer(device),
         scene_source(std::move(options.scenes)),
+        progress(std::move(options.progress)),
         scenes(options.scene_cache_bytes),
         test_slowdown(options.test_slowdown) {
     VkCommandPoolCreateInfo pool_ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
@@ -138,6 +143,7 @@ struct Renderer::Impl {
   VkCommandBuffer commands = VK_NULL_HANDLE;
 
   SceneSource scene_source;
+  std::function<void(const RenderProgress&)> progress;
   SceneCache scenes;
   double test_slowdown;
   std::optional<FrameTargets> targets;
@@ -232,12 +238,18 @@ void Renderer::Impl::warm_up(const ResidentScene& scene) {
   api::RenderRequest request;
   request.scene = scene.name;
   request.output.width = request.output.height = 32;
+  // The warm-up's frames are not the request's: no progress is reported for them.
+  const auto quiet = std::exchange(progress, nullptr);
   try {
     for (const unsigned readback : {kReadbackDisplay, kReadbackLinear})
       (void)render(scene.scene, scene.gpu, request, readback, 0.0, 0.0);
   } catch (const api::RequestError&) {
     // A scene the default request does not fit: the request at hand says why, if it fails too.
+  } catch (...) {
+    progress = quiet;
+    throw;
   }
+  progress = quiet;
 }
 
 RenderResult Renderer::render(const api::RenderRequest& request, unsigned readback) {
@@ -269,7 +281,7 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
   const std::uint32_t shadow_res = plan.run[kShadow] ? request.shadows.resolution : 1;
   const std::uint64_t atlas_bytes = std::uint64_t(shadow_res) * shadow_res * shadow_layers * 4;
   if (atlas_bytes > kShadowAtlasBudgetBytes)
-    throw api::RequestError("shadows.resolution", std::to_string(shadow_layers) + " shadow maps of " +
+    throw api::RequestError("shadows.resolution", api::counted(shadow_layers, "shadow map") + " of " +
                                                       std::to_string(shadow_res) + "^2 need " + mib(atlas_bytes) +
                                                       ", over the budget of " + mib(kShadowAtlasBudgetBytes) +
                                                       ": lower the resolution");
@@ -279,14 +291,14 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
   const std::uint64_t rsm_bytes =
       std::uint64_t(request.lpv.rsm_resolution) * request.lpv.rsm_resolution * rsm_layers * RsmMaps::kBytesPerTexel;
   if (lpv && rsm_bytes > kRsmBudgetBytes)
-    throw api::RequestError("lpv.rsm", std::to_string(rsm_layers) + " reflective shadow maps of " +
+    throw api::RequestError("lpv.rsm", api::counted(rsm_layers, "reflective shadow map") + " of " +
                                            std::to_string(request.lpv.rsm_resolution) + "^2 need " + mib(rsm_bytes) +
                                            ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
   const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
                             std::to_string(request.lpv.grid.z) + " cells";
   const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades);
   if (lpv && lpv_bytes > kLpvBudgetBytes)
-    throw api::RequestError("lpv.grid", std::to_string(request.lpv.cascades) + " cascades of " + cells + " need " +
+    throw api::RequestError("lpv.grid", api::counted(request.lpv.cascades, "cascade") + " of " + cells + " need " +
                                             mib(lpv_bytes) + ", over the budget of " + mib(kLpvBudgetBytes) +
                                             ": use fewer cells");
   const std::uint64_t buffer_bytes = LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades);
@@ -402,6 +414,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   std::vector<std::vector<double>> pass_ms(kPassCount);
   std::vector<std::vector<std::vector<double>>> cascade_ms(kPassCount, std::vector<std::vector<double>>(cascades));
   std::vector<std::uint32_t> iterations_run(iterations.size(), 0);
+  std::size_t passes_done = 0;  // for progress reports
   for (std::uint32_t f = 0; f < request.repeat; ++f) {
     const auto frame_start = Clock::now();
     double frame_record_ms = 0.0, frame_wait_ms = 0.0, frame_gpu_ms = 0.0;
@@ -430,6 +443,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
       if (is_grid_pass(p)) cascade_ms[p][c].push_back(pass_gpu_ms);
       frame_pass_ms[p] += pass_gpu_ms;
       frame_gpu_ms += pass_gpu_ms;
+      if (progress)
+        progress({f + 1, request.repeat, kPassNames[p], double(++passes_done) / double(schedule.size() * request.repeat)});
     }
     for (std::uint32_t p = 0; p < kPassCount; ++p)
       if (plan.run[p]) pass_ms[p].push_back(frame_pass_ms[p]);
@@ -481,7 +496,7 @@ api::RenderStats Renderer::Impl::plan_stats(const scene::Scene& scene, const api
   stats.view = api::to_string(request.output.view);
   stats.plan = api::to_string(request.plan);
   stats.decisions = plan.decisions;
-  stats.passes = pass_list(plan);
+  stats.passes = pass_list(plan, request.dry_run);
   stats.cpu_ms["plan"] = api::TimeSummary::of({plan_ms});
   stats.device = device.info().name;
   stats.driver = device.info().driver;

@@ -61,6 +61,14 @@ struct RenderResult {
 // not know. It may throw scene::LoadError. Called on the rendering thread, on a cache miss.
 using SceneSource = std::function<std::optional<scene::Scene>(const std::string& name)>;
 
+// How far a render has come, after one of its passes.
+struct RenderProgress {
+  std::uint32_t frame = 0;   // the frame being rendered, from 1
+  std::uint32_t frames = 0;  // the request's repeat
+  const char* pass = "";     // the pass just done (kPassNames)
+  double done = 0.0;         // the fraction of all the render's pass submissions done, 0 to 1
+};
+
 struct RendererOptions {
   SceneSource scenes;  // empty: built-in scenes only
   // Host and device memory of the scenes kept resident between requests; the least recently
@@ -74,6 +82,9 @@ struct RendererOptions {
   // --test-slowdown): each frame keeps the CPU busy for (test_slowdown - 1) times its own
   // time before its wall time is taken. 1: off.
   double test_slowdown = 1.0;
+  // Called after each pass of each frame, on the rendering thread; empty: not called.
+  // lpv-render shows it on a terminal, for long renders (many frames, or big grids).
+  std::function<void(const RenderProgress&)> progress;
 };
 
 struct SceneCacheStats {

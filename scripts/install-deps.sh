@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The single source of truth for the project's dependencies: Debian 12 packages, and the
-# npm packages of the browser test from its committed lock file (tests/web).
+# npm packages of the browser test and the contract check from their committed lock file
+# (tests/web).
 # Used by scripts/run.sh, scripts/test.sh, .ci/run and docker/Dockerfile.
 # Installs only what is missing, so a second run costs one dpkg query.
 set -euo pipefail

@@ -66,9 +66,9 @@ struct AcceptedRequest {
   std::chrono::milliseconds deadline{};
 };
 
-// A POST body read within --max-body-bytes and parsed by `parse` (400), with its deadline
-// (X-Deadline-Ms within `server_deadline`), what `unservable` finds (an unknown scene: 404)
-// and the server's limits (422) checked, in that order. Answers every failure itself and
+// A POST body read within --max-body-bytes and parsed by `parse` (400; an empty body is
+// "{}"), with its deadline (X-Deadline-Ms within `server_deadline`), what `unservable`
+// finds (an unknown scene: 404) and the server's limits (422) checked, in that order. Answers every failure itself and
 // returns empty then.
 template <class Request, class Unservable>
 std::optional<AcceptedRequest<Request>> accept_request(const httplib::Request& request, httplib::Response& response,
@@ -81,7 +81,8 @@ std::optional<AcceptedRequest<Request>> accept_request(const httplib::Request& r
   if (!body) return std::nullopt;
   AcceptedRequest<Request> accepted;
   try {
-    accepted.request = parse(*body);
+    // An empty body (curl -X POST without -d) is the empty request: every field defaulted.
+    accepted.request = parse(body->empty() ? std::string_view("{}") : std::string_view(*body));
     accepted.deadline = deadline_for(request, server_deadline);
   } catch (const api::RequestError& e) {
     send_error(response, parse_error(e));

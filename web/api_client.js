@@ -68,6 +68,10 @@ export async function uploadScene(file) {
 // leaves out the LPV flux statistics when they are long; the page shows none of them.
 export async function render(request, signal) {
   const response = await call('/v1/render', { method: 'POST', body: request, accept: 'image/png', signal });
+  if (response.headers.get('Content-Type')?.startsWith('application/json')) {  // a dry run: the plan, no image
+    const { stats, queue_ms: queueMs } = await response.json();
+    return { stats, queueMs, png: null };
+  }
   const queue = /(?:^|,)\s*queue;dur=([\d.]+)/.exec(response.headers.get('Server-Timing') ?? '');
   return {
     stats: JSON.parse(response.headers.get('X-Render-Stats')),

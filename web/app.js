@@ -45,14 +45,16 @@ const loop = new RenderLoop({
   debounceMs: DEBOUNCE_MS,
   render,
   show: async (answer, request) => {
-    await showImage($('frame-image'), answer.png);
+    if (answer.png) await showImage($('frame-image'), answer.png);
+    $('frame-image').hidden = !answer.png;  // a dry run has none
     const { stats } = answer;
     showStats(stats, answer.queueMs, {
       chart: $('pass-chart'), totals: $('frame-totals'), passes: $('plan-passes'),
       decisions: $('plan-decisions'), warnings: $('warnings'), warningsBlock: $('warnings-block'),
     });
-    $('frame-caption').textContent = `${stats.scene}, ${stats.width}×${stats.height}, view ${stats.view}: ` +
-      `${stats.gpu_ms.median.toFixed(1)} ms on the device (${stats.device})`;
+    $('frame-caption').textContent = `${stats.scene}, ${stats.width}×${stats.height}, view ${stats.view}: ` + (answer.png
+      ? `${stats.gpu_ms.median.toFixed(1)} ms on the device (${stats.device})`
+      : 'a dry run, the plan alone: no image, nothing timed (see the passes below)');
     $('frame').dataset.request = JSON.stringify(request);
     $('frame').classList.remove('outdated');
     renderErrors.clear();
@@ -63,8 +65,13 @@ const loop = new RenderLoop({
   },
   onError: (error) => {
     renderErrors.show(error);
-    $('frame').classList.add('outdated');
-    $('frame-caption').textContent = 'This frame is for earlier settings: the current ones were refused (see the message).';
+    // With no frame on show (a shared link with a bad value, or after a dry run) there is
+    // none to mark as earlier: the image stays hidden, not broken, and the caption says why.
+    const frameOnShow = !$('frame-image').hidden;
+    $('frame').classList.toggle('outdated', frameOnShow);
+    $('frame-caption').textContent = frameOnShow
+      ? 'This frame is for earlier settings: the current ones were refused (see the message).'
+      : 'No frame: these settings were refused (see the message).';
     // 503: the device is still starting or the queue is full; the server says to retry in a second.
     if (error.status === 503) setTimeout(() => retryRender(), 1000);
   },

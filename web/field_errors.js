@@ -22,6 +22,18 @@ function controlFor(roots, path) {
   }
 }
 
+// The inputs an error is about: those bound to the field (a slider and its box share one),
+// and of a vector only the component the path names ("camera.position[1]": the y box); a
+// block that stands for the field as a whole (data-error-field) has all of its inputs.
+function invalidInputs(block, control, path) {
+  const inputs = [...block.querySelectorAll('input, select')];
+  const field = control.dataset.field;
+  if (!field) return inputs;
+  const index = path.startsWith(field) ? path.slice(field.length).match(/^\[(\d+)\]/)?.[1] : undefined;
+  return inputs.filter((input) => input.dataset.field === field &&
+    (index === undefined || input.dataset.index === undefined || input.dataset.index === index));
+}
+
 export class FieldErrors {
   #slots = [];
 
@@ -37,8 +49,12 @@ export class FieldErrors {
     this.clear();
     const path = error.field ?? '';
     let control = path ? controlFor(this.roots, path) : null;
-    for (const prefix of this.prefixes)
-      if (!control && path.startsWith(prefix)) control = controlFor(this.roots, path.slice(prefix.length));
+    let controlPath = path;  // the path as the control names it, without a prefix
+    for (const prefix of this.prefixes) {
+      if (control || !path.startsWith(prefix)) continue;
+      controlPath = path.slice(prefix.length);
+      control = controlFor(this.roots, controlPath);
+    }
     const text = path ? `${path}: ${error.message}` : error.message;
     if (!control) {
       this.fallback.textContent = text;
@@ -52,7 +68,7 @@ export class FieldErrors {
     slot.setAttribute('role', 'alert');
     slot.textContent = text;
     block.append(slot);
-    const inputs = [...block.querySelectorAll('input, select')];
+    const inputs = invalidInputs(block, control, controlPath);
     for (const input of inputs) {
       input.setAttribute('aria-invalid', 'true');
       input.setAttribute('aria-describedby', slot.id);

@@ -18,6 +18,13 @@ function fromHex(hex) {
   return [1, 3, 5].map((i) => Number((parseInt(hex.slice(i, i + 2), 16) / 255).toFixed(3)));
 }
 
+// A number as a person would write it: values from the server (a scene's lights and camera)
+// are 32-bit floats widened to doubles, 3.0000001 or 1.899999976158142; to a float's 7
+// significant digits they read 3 and 1.9 again.
+function shown(value) {
+  return typeof value === 'number' ? String(Number(value.toPrecision(7))) : String(value);
+}
+
 function asVec3(value) {
   return Array.isArray(value) ? value : [value, value, value];
 }
@@ -63,10 +70,10 @@ function showValue(input, value) {
       input.value = toHex(value ?? [1, 1, 1]);
       return;
     case 'vec3':
-      input.value = value === undefined || value === null ? '' : String(asVec3(value)[Number(input.dataset.index)]);
+      input.value = value === undefined || value === null ? '' : shown(asVec3(value)[Number(input.dataset.index)]);
       return;
     default:
-      input.value = value === undefined || value === null ? '' : String(Array.isArray(value) ? value[0] : value);
+      input.value = value === undefined || value === null ? '' : shown(Array.isArray(value) ? value[0] : value);
   }
 }
 

@@ -33,8 +33,11 @@ function passItem(pass) {
   const name = document.createElement('strong');
   name.textContent = pass.name;
   const state = document.createElement('span');
-  state.className = pass.ran ? 'ran' : 'skipped';
-  state.textContent = pass.ran ? ` ran, ${formatMs(pass.gpu_ms.median)} ms` : ' skipped';
+  // A dry run's passes are planned but none ran: no time to show.
+  const [className, text] = pass.ran ? ['ran', ` ran, ${formatMs(pass.gpu_ms.median)} ms`]
+    : pass.planned ? ['planned', ' planned (dry run)'] : ['skipped', ' skipped'];
+  state.className = className;
+  state.textContent = text;
   const parts = [name, state];
   if (pass.reason) parts.push(`: ${pass.reason}`);
   return parts;

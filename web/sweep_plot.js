@@ -22,11 +22,15 @@ function linearScale(values, from, to) {
   return (v) => from + ((v - low) / span) * (to - from);
 }
 
+// "1 cascade", "2 cascades" (as api::counted words the server's messages).
+const counted = (n, noun) => `${n} ${noun}${n === 1 ? '' : 's'}`;
+
 export function describeSettings(settings) {
   if (!settings.lpv) return 'LPV off';
   const grid = Array.isArray(settings.grid) ? settings.grid.join('×') : settings.grid;
-  return `grid ${grid}, ${settings.iterations} iterations, ${settings.cascades} cascade(s), RSM ${settings.rsm}, ` +
-    `VPL downsample ${settings.vpl_downsample}, ${settings.bounces} bounce(s), occlusion ${settings.occlusion ? 'on' : 'off'}`;
+  return `grid ${grid}, ${counted(settings.iterations, 'iteration')}, ${counted(settings.cascades, 'cascade')}, ` +
+    `RSM ${settings.rsm}, VPL downsample ${settings.vpl_downsample}, ${counted(settings.bounces, 'bounce')}, ` +
+    `occlusion ${settings.occlusion ? 'on' : 'off'}`;
 }
 
 // rows: the sweep's rows so far; axis: {image, metric}; onPick(row) loads a row.

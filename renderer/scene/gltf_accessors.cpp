@@ -1,5 +1,6 @@
 #include "renderer/scene/gltf_accessors.hpp"
 
+#include "api/counted.hpp"
 #include "renderer/scene/gltf_loader.hpp"
 
 #include <algorithm>
@@ -84,14 +85,14 @@ const std::uint8_t* checked_span(const tinygltf::Model& model, int view, std::si
   const std::vector<unsigned char>& data = model.buffers[std::size_t(bv.buffer)].data;
   if (bv.byteOffset > data.size() || bv.byteLength > data.size() - bv.byteOffset)
     invalid(what + ": buffer view " + std::to_string(view) + " reaches past the end of its buffer (" +
-            std::to_string(data.size()) + " bytes)");
+            api::counted(data.size(), "byte") + ")");
   if (count == 0) return data.data();
   // offset + stride * (count - 1) + element_size <= byteLength, without overflow.
   const std::size_t length = bv.byteLength;
   if (offset > length || element_size > length - offset ||
       (count - 1) > (length - offset - element_size) / std::max<std::size_t>(stride, 1))
-    invalid(what + ": " + std::to_string(count) + " elements do not fit in buffer view " + std::to_string(view) +
-            " (" + std::to_string(length) + " bytes)");
+    invalid(what + ": buffer view " + std::to_string(view) + " (" + api::counted(length, "byte") + ") is too short for " +
+            api::counted(count, "element"));
   return data.data() + bv.byteOffset + offset;
 }
 

@@ -3,6 +3,7 @@
 #include "renderer/scene/gltf_loader.hpp"
 
 #include "renderer/scene/gltf_convert.hpp"
+#include "renderer/scene/gltf_precheck.hpp"
 #include "renderer/scene/image_decode.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,7 +13,6 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
-#include <set>
 
 namespace scene {
 namespace {
@@ -20,10 +20,6 @@ namespace {
 using gltf::all_finite;
 using gltf::fail;
 using gltf::invalid;
-
-// Extensions whose meaning the renderer implements; any other required one is refused.
-const std::set<std::string> kSupportedExtensions = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                                    "KHR_mesh_quantization"};
 
 // What tinygltf's callbacks need: the options, the model being parsed, and what went wrong
 // inside them.
@@ -133,6 +129,7 @@ std::string first_lines(const std::string& text) {
 
 tinygltf::Model parse(std::span<const std::uint8_t> bytes, const LoadOptions& options, std::vector<std::string>& warnings) {
   if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail(LoadError::Kind::too_complex, "file over 4 GiB");
+  gltf::check_declarations(bytes);
   tinygltf::Model model;
   ParseState state{options, model};
   tinygltf::TinyGLTF parser;
@@ -161,15 +158,11 @@ tinygltf::Model parse(std::span<const std::uint8_t> bytes, const LoadOptions& op
   return model;
 }
 
-void check_extensions(const tinygltf::Model& model, gltf::Conversion& c) {
-  for (const std::string& ext : model.extensionsRequired)
-    if (!kSupportedExtensions.count(ext))
-      fail(LoadError::Kind::unsupported, "required extension " + ext + " is not supported" +
-                                             (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression"
-                                                  ? " (compressed meshes: export the file uncompressed)"
-                                                  : ""));
+// Required extensions were checked before parsing (check_declarations); those only used
+// may be ignored, with a word.
+void warn_unsupported_extensions(const tinygltf::Model& model, gltf::Conversion& c) {
   for (const std::string& ext : model.extensionsUsed)
-    if (!kSupportedExtensions.count(ext)) c.warn("extension " + ext + " is not supported: ignored");
+    if (!gltf::supported_extension(ext)) c.warn("extension " + ext + " is not supported: ignored");
 }
 
 bool finite(const std::vector<double>& values) {
@@ -375,7 +368,7 @@ Scene load_gltf(std::span<const std::uint8_t> bytes, const LoadOptions& options)
   const tinygltf::Model model = parse(bytes, options, scene.warnings);
   gltf::Conversion c{model, options.limits, scene, {}, {}, {}};
   for (const std::string& w : scene.warnings) c.warned.insert(w);
-  check_extensions(model, c);
+  warn_unsupported_extensions(model, c);
   const bool has_camera = convert_nodes(c);
   scene.update_bounds();
   if (!has_camera) scene.camera = framing_camera(scene.bounds);

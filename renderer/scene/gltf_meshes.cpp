@@ -1,6 +1,7 @@
 // glTF triangle primitives into world-space scene geometry. Strips and fans are unrolled;
 // missing normals are made flat (as the spec asks), unusable ones are replaced by the
 // surface's; a mirroring transform reverses the winding so fronts stay counter-clockwise.
+#include "api/counted.hpp"
 #include "renderer/scene/gltf_accessors.hpp"
 #include "renderer/scene/gltf_convert.hpp"
 
@@ -107,7 +108,7 @@ void add_primitive(Conversion& c, int mesh_index, int primitive_index, const glm
     indices = read_indices(c.model, p.indices, what + " indices");
     for (std::uint32_t i : indices)
       if (i >= n)
-        invalid(what + ": index " + std::to_string(i) + " is out of range (" + std::to_string(n) + " vertices)");
+        invalid(what + ": index " + std::to_string(i) + " is out of range (" + api::counted(n, "vertex", "vertices") + ")");
   } else {
     indices.resize(n);
     for (std::size_t i = 0; i < n; ++i) indices[i] = std::uint32_t(i);
@@ -155,7 +156,7 @@ void add_primitive(Conversion& c, int mesh_index, int primitive_index, const glm
         ++replaced;
       }
     }
-    if (replaced) c.warn(what + ": " + std::to_string(replaced) + " zero or non-finite normals replaced by the surface's");
+    if (replaced) c.warn(what + ": " + api::counted(replaced, "zero or non-finite normal") + " replaced by the surface's");
   }
   if (!p.targets.empty()) c.warn(what + ": morph targets are not supported: the base mesh is drawn");
 

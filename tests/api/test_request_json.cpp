@@ -1,5 +1,6 @@
 // Tests of the request/stats JSON layer (api/): defaults, validation with field
 // paths, round trips, malformed JSON, TimeSummary and the stats JSON shape.
+#include "api/counted.hpp"
 #include "api/render_request.hpp"
 #include "api/render_stats.hpp"
 #include "api/request_error.hpp"
@@ -529,9 +530,18 @@ TEST(ParseRequest, MessagesSayWhatWasExpectedAndWhatWasGot) {
   EXPECT_EQ(message(R"({"output": {"width": 8192, "height": 8192}})"),
             "output: width x height must be at most 16777216 pixels, got 8192 x 8192 = 67108864");
   EXPECT_EQ(message("[1, 2]"), "the request must be an object, got an array of 2 elements");
+  EXPECT_EQ(message("[1]"), "the request must be an object, got an array of 1 element");
   // A long string is cut short in the message.
   const std::string long_name(1000, 'x');
   EXPECT_LT(message(R"({"scene": ")" + long_name + "\"}").size(), 200u);
+}
+
+TEST(Counted, SingularForOneOnly) {
+  EXPECT_EQ(api::counted(1, "light"), "1 light");
+  EXPECT_EQ(api::counted(2, "light"), "2 lights");
+  EXPECT_EQ(api::counted(0, "light"), "0 lights");
+  EXPECT_EQ(api::counted(1, "vertex", "vertices"), "1 vertex");
+  EXPECT_EQ(api::counted(3, "vertex", "vertices"), "3 vertices");
 }
 
 TEST(ParseRequest, RejectsNonFiniteNumbersInABuiltJson) {
@@ -803,8 +813,9 @@ TEST(StatsJson, Shape) {
   stats.height = 480;
   stats.view = api::to_string(api::View::final_);
   stats.frames = 3;
-  stats.passes = {{"shadow", true, "", api::TimeSummary::of({0.5, 0.7, 0.6})},
-                  {"lpv_inject", false, "no lights", {}}};
+  stats.passes = {{"shadow", true, true, "", api::TimeSummary::of({0.5, 0.7, 0.6})},
+                  {"lpv_inject", false, false, "no lights", {}},
+                  {"propagate", true, false, "", {}}};  // planned, not run: a dry run
   stats.gpu_ms = api::TimeSummary::of({1.0, 2.0, 3.0});
   stats.cpu_ms["record"] = api::TimeSummary::of({0.1});
   stats.cpu_ms["readback"] = api::TimeSummary::of({0.4, 0.2});
@@ -827,17 +838,21 @@ TEST(StatsJson, Shape) {
   EXPECT_EQ(j["warnings"], json::array({"shadow resolution clamped"}));
 
   ASSERT_TRUE(j["passes"].is_array());
-  ASSERT_EQ(j["passes"].size(), 2u);
+  ASSERT_EQ(j["passes"].size(), 3u);
   const json& shadow = j["passes"][0];
-  EXPECT_EQ(keys_of(shadow), (std::set<std::string>{"name", "ran", "gpu_ms"}));  // empty reason omitted
+  EXPECT_EQ(keys_of(shadow), (std::set<std::string>{"name", "planned", "ran", "gpu_ms"}));  // empty reason omitted
   EXPECT_EQ(shadow["name"], "shadow");
+  EXPECT_EQ(shadow["planned"], true);
   EXPECT_EQ(shadow["ran"], true);
   EXPECT_EQ(shadow["gpu_ms"], json::parse(R"({"median": 0.6, "min": 0.5, "max": 0.7})"));
   const json& inject = j["passes"][1];
-  EXPECT_EQ(keys_of(inject), (std::set<std::string>{"name", "ran", "reason", "gpu_ms"}));
+  EXPECT_EQ(keys_of(inject), (std::set<std::string>{"name", "planned", "ran", "reason", "gpu_ms"}));
+  EXPECT_EQ(inject["planned"], false);
   EXPECT_EQ(inject["ran"], false);
   EXPECT_EQ(inject["reason"], "no lights");
   EXPECT_EQ(inject["gpu_ms"], json::parse(R"({"median": 0, "min": 0, "max": 0})"));
+  EXPECT_EQ(j["passes"][2]["planned"], true);
+  EXPECT_EQ(j["passes"][2]["ran"], false);
 
   EXPECT_EQ(j["gpu_ms"], json::parse(R"({"median": 2.0, "min": 1.0, "max": 3.0})"));
   EXPECT_EQ(keys_of(j["cpu_ms"]), (std::set<std::string>{"record", "readback"}));

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # lpv-bench as a user runs it: the files of a sweep and of a diff, exit codes and messages.
-#   test_bench.sh LPV_BENCH
+#   test_bench.sh LPV_BENCH SUITES_DIR
 set -u
 . "$(dirname "$0")/script_checks.sh"
 bin="$(realpath "$1")"
+suites="$(realpath "$2")"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -43,10 +44,16 @@ check "nothing written for a bad request" test ! -e bad
 run frobnicate sweep.json
 check "unknown command exits 2" test "$rc" -eq 2
 check "unknown command is named" grep -q "unknown command 'frobnicate'" err.txt
+pointer_not_help() { test "$(tail -n 1 err.txt)" = "Try 'lpv-bench --help'." && ! grep -q "usage:" err.txt; }
+check "unknown command: a pointer to --help, not the help" pointer_not_help
 run sweep missing.json
 check "missing file exits 2" test "$rc" -eq 2
 run --help
 check "help exits 0" test "$rc" -eq 0
 check "help shows usage" grep -q "usage: lpv-bench sweep" out.txt
+for suite in "$suites"/*.json; do
+  name="$(basename "$suite" .json)"
+  check "help lists the suite $name" grep -q "^suites in bench/suites: .*\b$name\b" out.txt
+done
 
 finish

@@ -16,7 +16,7 @@ check "default render writes cornell-box.png" test -s cornell-box.png
 check "PNG signature" test "$(od -An -tx1 -N8 cornell-box.png | tr -d ' ')" = "89504e470d0a1a0a"
 check "PNG width 512" test "$(u32be cornell-box.png 16)" -eq 512
 check "PNG height 512" test "$(u32be cornell-box.png 20)" -eq 512
-check "summary names the device" grep -q "frame(s) on" err.txt
+check "summary names the device" grep -q "1 frame on" err.txt
 
 # A request file, EXR output and stats.
 cat >req.json <<'JSON'
@@ -53,12 +53,50 @@ run scene.json
 check "unknown scene exits 2" test "$rc" -eq 2
 check "unknown scene lists the built-ins" grep -q "cornell-box" err.txt
 
+# Bad usage: one line naming the problem and a pointer to --help, not the whole help.
+one_line_and_pointer() {  # err.txt: "lpv-render: <problem>", then "Try 'lpv-render --help'."
+  test "$(wc -l <err.txt)" -eq 2 && grep -q "^lpv-render: ." err.txt &&
+    test "$(tail -n 1 err.txt)" = "Try 'lpv-render --help'." && ! grep -q "usage:" err.txt
+}
 run --frobnicate
 check "unknown option exits 2" test "$rc" -eq 2
-check "unknown option shows usage" grep -q "usage: lpv-render" err.txt
+check "unknown option is named" grep -q "^lpv-render: unknown option --frobnicate$" err.txt
+check "unknown option: one line and a pointer" one_line_and_pointer
 
 run does-not-exist.json
 check "missing request file exits 2" test "$rc" -eq 2
+check "missing request file is named" grep -q "^lpv-render: .*'does-not-exist.json': no such file" err.txt
+check "missing request file: one line and a pointer" one_line_and_pointer
+
+run -o
+check "-o without a file exits 2" test "$rc" -eq 2
+check "-o without a file is explained" grep -q "^lpv-render: option -o needs a value" err.txt
+check "-o without a file: one line and a pointer" one_line_and_pointer
+run -o -q
+check "-o followed by an option exits 2" test "$rc" -eq 2
+check "-o followed by an option is explained" grep -q "option -o needs a value" err.txt
+check "-o followed by an option writes no file named -q" test ! -e ./-q
+
+# An extension no format has is an error naming those it can write, not a PNG under that name.
+run -o out.jpg
+check "-o out.jpg exits 2" test "$rc" -eq 2
+check "-o out.jpg names the formats" grep -q "'out.jpg'.*\.png, \.exr and \.pfm" err.txt
+check "-o out.jpg: one line and a pointer" one_line_and_pointer
+check "nothing written for out.jpg" test ! -e out.jpg
+echo '{"output": {"width": 32, "height": 24}}' >tiny.json
+run tiny.json -o upper.PNG -q
+check "-o upper.PNG (any case) exits 0" test "$rc" -eq 0
+check "-o upper.PNG writes a PNG" test "$(od -An -tx1 -N4 upper.PNG | tr -d ' ')" = "89504e47"
+
+# Progress ("frame 2/3 propagate") on a terminal, erased when done; never in a log.
+echo '{"output": {"width": 32, "height": 32}, "repeat": 3}' >frames.json
+script -qefc "'$bin' frames.json -o frames.png" /dev/null >tty.txt 2>&1
+check "a render on a terminal exits 0" test $? -eq 0
+check "a render on a terminal shows its progress" grep -q "frame 3/3 propagate" tty.txt
+check "the progress is erased before the summary" grep -q "$(printf '\033\\[K')frames.png: 32x32 final, 3 frames on" tty.txt
+run frames.json -o frames.png
+check "no progress when standard error is a file" test "$(grep -c "frame [0-9]/3" err.txt)" -eq 0
+check "the summary still follows" grep -q "3 frames on" err.txt
 
 # The propagation's column length changes how the work is cut, not the image.
 echo '{"output": {"width": 64, "height": 64, "format": "pfm"}, "lpv": {"grid": [13, 10, 9]}, "plan": "exact"}' >col.json
@@ -112,6 +150,13 @@ check "indices out of range are explained" grep -qi "index\|indices" err.txt
 run --scene "$corpus/MissingBin/BoxTextured.gltf"
 check "missing .bin exits 3" test "$rc" -eq 3
 check "missing .bin is named" grep -q "BoxTextured0.bin" err.txt
+run --scene "$corpus/draco/2CylinderEngine.gltf"
+check "a Draco-compressed file exits 3" test "$rc" -eq 3
+check "a Draco-compressed file names the extension" \
+  grep -q "required extension KHR_draco_mesh_compression is not supported" err.txt
+run --scene "$corpus/../glTF/TwoBoxes/TwoBoxes.gltf"
+check "a glTF 1.0 file exits 3" test "$rc" -eq 3
+check "a glTF 1.0 file is named as such" grep -q "glTF 1.0 is not supported (2.0 only)" err.txt
 run --scene no-such-model.glb
 check "missing scene file exits 3" test "$rc" -eq 3
 check "missing scene file is explained" grep -q "^lpv-render: no-such-model.glb: .*no such file" err.txt

@@ -64,6 +64,25 @@ TEST(ResolveLights, EditThatBreaksConeOrderNamesTheEdit) {
   }
 }
 
+TEST(ResolveLights, EditOfAMissingLightCountsTheLightsInGoodEnglish) {
+  api::RenderRequest request;
+  api::LightEdit edit;
+  edit.index = 3;
+  request.light_edits.push_back(edit);
+  auto message = [&] {
+    try {
+      renderer::resolve_lights(cornell(), request);
+    } catch (const api::RequestError& e) {
+      EXPECT_EQ(e.field(), "light_edits[0].index");
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message().find("no light 3: there is 1 light"), std::string::npos) << message();
+  request.lights = std::vector<api::Light>(2);
+  EXPECT_NE(message().find("no light 3: there are 2 lights"), std::string::npos) << message();
+}
+
 TEST(SetupCamera, FittedPlanesEncloseTheSceneAndFlipYForVulkan) {
   const auto cam = renderer::setup_camera(cornell().camera, cornell().bounds, 1.0f);
   EXPECT_GT(cam.near, 0.0f);

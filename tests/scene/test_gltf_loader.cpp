@@ -226,6 +226,54 @@ TEST(GltfLoader, BrokenFilesAreRefusedWithTheirKind) {
   }
 }
 
+// What a file declares is checked before tinygltf parses it, so a file is refused for what
+// it is rather than for the first thing tinygltf trips over.
+TEST(GltfLoader, AnUnsupportedRequiredExtensionIsNamedBeforeItsDataIsRead) {
+  // As a Draco file has them: accessors whose data is in the extension, not a buffer view.
+  GltfBuilder draco;
+  draco.add_node({{"mesh", draco.add_mesh(kTriangle, {}, {}, {0, 1, 2})}});
+  draco.json()["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  for (auto& accessor : draco.json()["accessors"]) accessor["bufferView"] = 99;
+  std::string message;
+  EXPECT_EQ(failure_of(draco.gltf(), &message), Kind::unsupported);
+  EXPECT_NE(message.find("required extension KHR_draco_mesh_compression is not supported"), std::string::npos)
+      << message;
+  const std::vector<std::uint8_t> glb = draco.glb();
+  EXPECT_EQ(failure_of(std::string(glb.begin(), glb.end()), &message), Kind::unsupported);
+  EXPECT_NE(message.find("KHR_draco_mesh_compression"), std::string::npos) << message;
+
+  GltfBuilder supported;  // a required extension the renderer implements loads
+  supported.add_node({{"mesh", supported.add_mesh(kTriangle, {}, {}, {0, 1, 2})}});
+  supported.json()["extensionsRequired"] = {"KHR_materials_emissive_strength"};
+  EXPECT_NO_THROW(load(supported.gltf()));
+}
+
+TEST(GltfLoader, GltfOneIsRefusedAsSuch) {
+  const std::string kGltf1 = "glTF 1.0 is not supported (2.0 only)";
+  std::string message;
+  // glTF 1.0's objects keyed by name, where 2.0 has arrays.
+  EXPECT_EQ(failure_of(R"({"asset": {"version": "1.0"}, "accessors": {"a": {"bufferView": "v"}}})", &message),
+            Kind::unsupported);
+  EXPECT_NE(message.find(kGltf1), std::string::npos) << message;
+  EXPECT_EQ(failure_of(R"({"asset": {"version": 1}, "meshes": {}})", &message), Kind::unsupported);
+  EXPECT_NE(message.find(kGltf1), std::string::npos) << message;
+  // 1.0 did not require "asset"; 2.0 does.
+  EXPECT_EQ(failure_of(R"({"scenes": {"s": {"nodes": []}}})", &message), Kind::unsupported);
+  EXPECT_NE(message.find(kGltf1), std::string::npos) << message;
+  // Binary glTF 1.0 (KHR_binary_glTF): version 1 in the header.
+  GltfBuilder box;
+  box.add_node({{"mesh", box.add_mesh(kTriangle, {}, {}, {0, 1, 2})}});
+  std::vector<std::uint8_t> glb = box.glb();
+  glb[4] = 1;
+  EXPECT_EQ(failure_of(std::string(glb.begin(), glb.end()), &message), Kind::unsupported);
+  EXPECT_NE(message.find(kGltf1), std::string::npos) << message;
+
+  EXPECT_EQ(failure_of(R"({"asset": {"version": "3.0"}})", &message), Kind::unsupported);
+  EXPECT_NE(message.find("glTF version \"3.0\" is not supported (2.0 only)"), std::string::npos) << message;
+  box.json()["asset"]["version"] = "2.1";  // a later minor version stays readable
+  EXPECT_NO_THROW(load(box.gltf()));
+}
+
 TEST(GltfLoader, ExternalFilesOnlyFromTheScenesOwnDirectory) {
   const auto dir = std::filesystem::temp_directory_path() / "lpv_gltf_external_test";
   std::filesystem::create_directories(dir / "scene");

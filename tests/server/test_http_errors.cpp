@@ -23,7 +23,7 @@ std::ostream& operator<<(std::ostream& out, const BadRequest& r) { return out <<
 
 const std::vector<BadRequest> kBadRequests = {
     {"malformed JSON", "POST", "/v1/render", R"({"output": {)", 400, "malformed_json", ""},
-    {"empty body", "POST", "/v1/render", "", 400, "malformed_json", ""},
+    {"blank body (only an empty one means {})", "POST", "/v1/render", " \n", 400, "malformed_json", ""},
     {"NaN literal", "POST", "/v1/render", R"({"output": {"exposure": NaN}})", 400, "malformed_json", ""},
     {"trailing garbage", "POST", "/v1/render", R"({} {})", 400, "malformed_json", ""},
     {"infinite number", "POST", "/v1/render", R"({"output": {"exposure": 1e999}})", 400, "malformed_json", ""},

@@ -33,6 +33,19 @@ TEST(HttpRender, ReturnsPngOfTheRequestedSize) {
   EXPECT_EQ(size->height, 96);
 }
 
+TEST(HttpRender, AnEmptyBodyIsTheEmptyRequest) {
+  auto http = shared_server().client();
+  const auto r = http->Post("/v1/render", httplib::Headers{}, "", "");  // curl -X POST: no body, no media type
+  ASSERT_TRUE(r) << httplib::to_string(r.error());
+  ASSERT_EQ(r->status, 200) << r->body;
+  EXPECT_EQ(r->get_header_value("Content-Type"), "image/png");
+  EXPECT_EQ(nlohmann::json::parse(r->get_header_value("X-Render-Stats"))["scene"], "cornell-box");
+  const auto size = png_size(r->body);
+  ASSERT_TRUE(size);
+  EXPECT_EQ(size->width, 512);  // the defaults
+  EXPECT_EQ(size->height, 512);
+}
+
 TEST(HttpRender, StatsHeadersParseAndPassTimesAddUpToNoMoreThanTheTotal) {
   auto http = shared_server().client();
   const auto r = post_render(*http, {{"output", {{"width", 128}, {"height", 128}}}, {"repeat", 2}});
@@ -105,10 +118,12 @@ TEST(HttpRender, DryRunReturnsThePlanWithoutAnImage) {
   EXPECT_EQ(body["stats"]["plan"]["mode"], "auto");
   ASSERT_EQ(body["stats"]["plan"]["decisions"].size(), 1u);
   for (const auto& pass : body["stats"]["passes"]) {
+    EXPECT_FALSE(pass["ran"]) << "nothing runs in a dry run: " << pass.dump();
     if (pass["name"] == "shadow") {
-      EXPECT_FALSE(pass["ran"]);
+      EXPECT_FALSE(pass["planned"]);
       EXPECT_EQ(pass["reason"], "no light reaches the scene");
     }
+    if (pass["name"] == "forward") EXPECT_TRUE(pass["planned"]) << "what would run is planned: " << pass.dump();
   }
 }
 

@@ -8,9 +8,10 @@ namespace {
 
 TEST(ServerTiming, ListsPassesThatRanThenTheTotals) {
   api::RenderStats stats;
-  stats.passes = {{"shadow", true, "", {0.5, 0.5, 0.5}, {}},
-                  {"rsm", false, "lpv disabled", {}, {}},
-                  {"shade", true, "", {2.25, 2.0, 3.0}, {}}};
+  stats.passes = {{"shadow", true, true, "", {0.5, 0.5, 0.5}, {}},
+                  {"rsm", false, false, "lpv disabled", {}, {}},
+                  {"shade", true, true, "", {2.25, 2.0, 3.0}, {}},
+                  {"propagate", true, false, "", {}, {}}};  // planned, not run (a dry run): no entry
   stats.gpu_ms = {2.75, 2.5, 3.5};
   stats.wall_ms = {3.0, 3.0, 3.0};
   EXPECT_EQ(server_timing_value(stats, 0.125, 1.0, 4.5),

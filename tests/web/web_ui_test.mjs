@@ -77,8 +77,8 @@ after(async () => {
 });
 
 // A fresh page on `hash`, with every console error and uncaught exception collected, once
-// its first frame is on screen. `expectedErrors`: console messages a test provokes itself.
-async function openPage(t, hash = '') {
+// its first frame is on screen (unless `frame` is false: a link the server refuses).
+async function openPage(t, hash = '', { frame = true } = {}) {
   const context = await browser.newContext({ viewport: { width: 1500, height: 1100 } });
   const page = await context.newPage();
   const errors = [];
@@ -91,7 +91,7 @@ async function openPage(t, hash = '') {
     if (request.method() === 'POST' && request.url().endsWith('/v1/render')) requests.push(JSON.parse(request.postData()));
   });
   await page.goto(`${origin}/${hash}`);
-  await frameShown(page);
+  if (frame) await frameShown(page);
   t.after(() => context.close());
   return { page, errors, requests };
 }
@@ -280,6 +280,54 @@ test('a bad value shows the server\'s message next to its control', async (t) =>
   assert.deepEqual(unexpected(errors), []);
 });
 
+test('a shared link with a bad value shows that field\'s error, and no frame', async (t) => {
+  const link = '#request=' + encodeURIComponent(JSON.stringify({ output: { width: 0, height: 96 } }));
+  const { page, errors } = await openPage(t, link, { frame: false });
+  const widthError = page.locator('.control:has(#output-width) .field-error');
+  await widthError.waitFor({ timeout: 30_000 });
+  assert.equal(await widthError.textContent(), 'output.width: must be an integer in [1, 8192], got 0');
+  assert.equal(await page.locator('#output-width').getAttribute('aria-invalid'), 'true');
+  assert.equal(await page.locator('#output-height').getAttribute('aria-invalid'), null, 'its neighbour is not outlined');
+  assert.equal(await page.locator('[aria-invalid="true"]').count(), 1, 'only the invalid field is outlined');
+  assert.equal(await page.locator('#frame-image').isVisible(), false, 'no image, so no broken one');
+  assert.equal(await page.locator('#frame').evaluate((f) => f.classList.contains('outdated')), false);
+  const caption = await page.locator('#frame-caption').textContent();
+  assert.doesNotMatch(caption, /earlier settings/, 'there was no earlier frame');
+  assert.match(caption, /refused/);
+  await screenshot(page, '06-shared-bad-link');
+
+  await page.locator('#output-width').fill('128');
+  await frameShown(page, (request) => request.output?.width === 128 && request.output?.height === 96);
+  assert.equal(await page.locator('#frame-image').isVisible(), true);
+  assert.equal(await page.locator('[aria-invalid="true"]').count(), 0);
+  assert.deepEqual(unexpected(errors), []);
+});
+
+test('a dry run shows its plan, its passes planned, and no image', async (t) => {
+  const { page, errors } = await openPage(t, '#request=' + encodeURIComponent('{"dry_run":true}'), { frame: false });
+  await page.waitForFunction(() => document.getElementById('plan-passes').textContent.includes('planned (dry run)'), null, { timeout: 30_000 });
+  assert.doesNotMatch(await page.locator('#plan-passes').textContent(), / ran, /, 'nothing ran');
+  assert.equal(await page.locator('#frame-image').isVisible(), false, 'no image, so no broken one');
+  assert.match(await page.locator('#frame-caption').textContent(), /dry run/);
+  await screenshot(page, '06-dry-run');
+  assert.deepEqual(errors, []);
+});
+
+test('the light editor shows values as a person would write them', async (t) => {
+  // Doubles carrying a float's rounding (a light exported in 32 bits, a computed position)
+  // show as a float's 7 significant digits: 3 and 1.9. The request keeps what it holds.
+  const light = { type: 'spot', position: [0, 1.899999976158142, 0], direction: [0, -1, 0], intensity: 3.0000001,
+    inner_cone_deg: 35, outer_cone_deg: 40 };
+  const { page, errors, requests } = await openPage(t, '#request=' + encodeURIComponent(JSON.stringify({ lights: [light] })));
+  assert.equal(await page.locator('#lights [data-field="lights[0].intensity"]').inputValue(), '3');
+  const position = await page.locator('#lights [data-field="lights[0].position"]').evaluateAll((inputs) => inputs.map((i) => i.value));
+  assert.deepEqual(position, ['0', '1.9', '0']);
+  for (const value of await page.locator('#lights input[type="number"]').evaluateAll((inputs) => inputs.map((i) => i.value)))
+    assert.match(value, /^(-?\d+(\.\d{1,6})?)?$/, 'no float noise on show');
+  assert.equal(requests[0].lights[0].intensity, 3.0000001, 'the request is sent as it is');
+  assert.deepEqual(errors, []);
+});
+
 test('a shared URL restores the same settings, A included', async (t) => {
   const first = await openPage(t);
   await first.page.locator('#ab-pin').click();
@@ -346,6 +394,8 @@ test('the error against the reference, and a sweep whose points load their setti
   for (const text of times) assert.match(text, /^[\d.]+ \([\d.]+–[\d.]+\)$/, `GPU ms with its range: ${text}`);
   await screenshot(page, '07-sweep');
 
+  assert.match(await page.locator('#sweep-plot circle[aria-label^="grid 8×8×8"]').getAttribute('aria-label'),
+    /^grid 8×8×8, 4 iterations, 1 cascade, RSM \d+, VPL downsample \d+, 1 bounce, /, 'counted in good English');
   await page.locator('#sweep-plot circle[aria-label^="grid 8×8×8"]').click();
   const loaded = await frameShown(page, (request) => request.lpv?.grid === 8 && request.lpv?.iterations === 4);
   assert.equal(loaded.output.width, 128, 'only the LPV settings change');

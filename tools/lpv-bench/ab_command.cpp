@@ -5,7 +5,7 @@
 // and what the machine's load does to both cancels in their ratio.
 #include "commands.hpp"
 #include "input_files.hpp"
-#include "progress_bar.hpp"
+#include "tools/common/progress_bar.hpp"
 #include "worker_client.hpp"
 
 #include <nlohmann/json.hpp>
@@ -33,7 +33,7 @@ int ab_command(const Options& options) {
 
   WorkerCaseRunner a("A", a_binary, file, options);
   WorkerCaseRunner b("B", b_binary, file, options);
-  ProgressBar bar(!options.quiet);
+  tools::ProgressBar bar(!options.quiet);
   auto [a_results, b_results] = run_suite_paired(file.suite, a.runners(), b.runners(), run, suite_progress(bar, file.suite));
   bar.finish();
 

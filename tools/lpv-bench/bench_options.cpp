@@ -7,7 +7,9 @@
 
 namespace bench {
 
-const char* usage() {
+std::string usage(const std::vector<std::string>& suites) {
+  std::string names;
+  for (const std::string& name : suites) names += (names.empty() ? "" : ", ") + name;
   return R"(usage: lpv-bench sweep REQUEST.json|- [options]
        lpv-bench diff REQUEST.json|- [options]
        lpv-bench run SUITE [options]
@@ -22,17 +24,18 @@ sweep    renders the reference once, then every configuration of LPV settings th
 diff     compares a render with a second setting or with the reference (the schema of
          POST /v1/compare): writes base.png, other.png, difference.png (heat map),
          base.exr, other.exr (linear) and compare.json (metrics, stats, reference).
-run      times a benchmark suite (a file, or the name of one in bench/suites: default,
-         quick): per case an image render, warm-up renders, then timed repetitions;
-         writes the results (bench/results.schema.json) and prints a summary table.
+run      times a benchmark suite (a file, or the name of one in bench/suites: below):
+         per case an image render, warm-up renders, then timed repetitions; writes
+         the results (bench/results.schema.json) and prints a summary table.
 compare  a candidate's results against a baseline's: per case and metric the ratio,
          its confidence interval (Hodges-Lehmann, Mann-Whitney U) and a verdict: slower
          or faster only when the whole interval is beyond the minimum effect; and
          whether the image changed.
 ab       runs the suite with two builds' lpv-bench taking turns render by render (A B,
          B A, ...) and compares them pair by pair (the interval of the Wilcoxon
-         signed-rank test on the ratios): the comparison that holds on a shared machine. Writes ab.json (the comparison),
-         a.json and b.json (each build's results).
+         signed-rank test on the ratios): the comparison that holds on a shared
+         machine. Writes ab.json (the comparison), a.json and b.json (each build's
+         results).
 worker   one build's side of ab: renders the suite's cases when told to on standard input
          and answers on standard output (the build must have it: ab starts it).
 See docs/perf-regression.md.
@@ -81,7 +84,7 @@ exit status: 0 success (compare, ab: no regression); 1 failure (device, files, a
              image changed, a case failing in the candidate, or no case compared at all);
              2 bad usage or bad input; 4 compare, ab: inconclusive, the machine was too
              noisy for a verdict on the times (docs/perf-regression.md)
-)";
+suites in bench/suites: )" + (names.empty() ? "none found" : names) + "\n";
 }
 
 namespace {

@@ -48,6 +48,7 @@ class UsageError : public std::runtime_error {
 };
 
 Options parse(int argc, char** argv);
-const char* usage();
+// The help text; `suites`: the names `run` and `ab` accept (suite_names()).
+std::string usage(const std::vector<std::string>& suites);
 
 }  // namespace bench

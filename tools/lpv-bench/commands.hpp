@@ -3,7 +3,7 @@
 #pragma once
 
 #include "bench_options.hpp"
-#include "progress_bar.hpp"
+#include "tools/common/progress_bar.hpp"
 #include "renderer/bench/suite_runner.hpp"
 #include "renderer/bench/results_comparison.hpp"
 
@@ -23,6 +23,6 @@ int worker_command(const Options& options);   // lpv-bench worker: one side of a
 int publish(const Comparison& comparison, const Options& options, const std::optional<std::filesystem::path>& json_file);
 
 // The progress of a suite's renders on `bar`: "3/12 cornell-box/lpv-32-i8".
-RunObserver suite_progress(ProgressBar& bar, const api::BenchSuite& suite);
+RunObserver suite_progress(tools::ProgressBar& bar, const api::BenchSuite& suite);
 
 }  // namespace bench

@@ -3,6 +3,7 @@
 #include "api/request_error.hpp"
 #include "renderer/image/file_io.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <span>
 #include <sstream>
@@ -42,6 +43,15 @@ SuiteFile load_suite(const std::string& name_or_path) {
   for (api::BenchCase& c : file.suite.cases)
     if (c.scene_file) c.scene_file = (file.path.parent_path() / *c.scene_file).lexically_normal().string();
   return file;
+}
+
+std::vector<std::string> suite_names() {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(LPV_BENCH_SUITE_DIR, error))
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 api::BenchResults load_results(const std::filesystem::path& path) {

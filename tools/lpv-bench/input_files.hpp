@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace bench {
 
@@ -22,8 +23,11 @@ struct SuiteFile {
 };
 
 // `name_or_path`: a suite file, or the name of one in bench/suites of the source tree this
-// lpv-bench was built from ("default", "quick").
+// lpv-bench was built from (suite_names()).
 SuiteFile load_suite(const std::string& name_or_path);
+// The names load_suite finds in bench/suites, sorted: read from the directory, so the help
+// lists every suite there is.
+std::vector<std::string> suite_names();
 
 api::BenchResults load_results(const std::filesystem::path& path);
 

@@ -10,7 +10,7 @@
 #include "commands.hpp"
 #include "input_files.hpp"
 #include "lab.hpp"
-#include "progress_bar.hpp"
+#include "tools/common/progress_bar.hpp"
 #include "renderer/accuracy/compare.hpp"
 #include "renderer/accuracy/sweep.hpp"
 #include "renderer/image/exr.hpp"
@@ -43,7 +43,7 @@ int run_sweep(const bench::Options& options, const std::string& text) {
   const api::SweepRequest request = api::parse_sweep_request(text);
   const std::size_t total = api::sweep_configurations(request).size();
   bench::Lab lab(options);
-  bench::ProgressBar bar(!options.quiet);
+  tools::ProgressBar bar(!options.quiet);
   accuracy::SweepObserver observer;
   observer.reference_progress = [&](double fraction) {
     bar.update("reference", fraction, std::to_string(request.reference.samples) + " spp");
@@ -77,7 +77,7 @@ int run_sweep(const bench::Options& options, const std::string& text) {
 int run_diff(const bench::Options& options, const std::string& text) {
   const api::CompareRequest request = api::parse_compare_request(text);
   bench::Lab lab(options);
-  bench::ProgressBar bar(!options.quiet && request.reference.has_value());
+  tools::ProgressBar bar(!options.quiet && request.reference.has_value());
   const accuracy::Comparison c =
       accuracy::compare(lab.bench, request, [&](double fraction) { bar.update("reference", fraction); });
   bar.finish();
@@ -115,7 +115,7 @@ int run_diff(const bench::Options& options, const std::string& text) {
 int run(int argc, char** argv) {
   const bench::Options options = bench::parse(argc, argv);
   if (options.help) {
-    std::fputs(bench::usage(), stdout);
+    std::fputs(bench::usage(bench::suite_names()).c_str(), stdout);
     return 0;
   }
   switch (options.command) {
@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const bench::UsageError& e) {
-    std::fprintf(stderr, "lpv-bench: %s\n\n%s", e.what(), bench::usage());
+    std::fprintf(stderr, "lpv-bench: %s\nTry 'lpv-bench --help'.\n", e.what());
     return kExitBadInput;
   } catch (const api::RequestError& e) {
     std::fprintf(stderr, "lpv-bench: bad request: %s\n", e.what());

@@ -36,7 +36,7 @@ api::BenchResults run_suite_through(const std::string& url, const api::BenchSuit
 
 }  // namespace
 
-RunObserver suite_progress(ProgressBar& bar, const api::BenchSuite& suite) {
+RunObserver suite_progress(tools::ProgressBar& bar, const api::BenchSuite& suite) {
   RunObserver observer;
   observer.progress = [&bar, &suite](std::size_t done, std::size_t total, const api::BenchCase& c) {
     const auto index = std::ranges::find(suite.cases, c.name, &api::BenchCase::name) - suite.cases.begin();
@@ -51,7 +51,7 @@ int run_command(const Options& options) {
   const api::BenchSuite& suite = file.suite;
   const RunOptions run{options.repetitions.value_or(suite.repetitions), options.warmup.value_or(suite.warmup)};
 
-  ProgressBar bar(!options.quiet);
+  tools::ProgressBar bar(!options.quiet);
   const RunObserver observer = suite_progress(bar, suite);
   api::BenchResults results = options.url ? run_suite_through(*options.url, suite, run, observer)
                                           : run_suite_here(options, suite, run, observer);

@@ -1,5 +1,7 @@
 #include "sweep_markdown.hpp"
 
+#include "api/counted.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -33,8 +35,8 @@ std::string pareto_text(const api::SweepRow& row) {
 
 std::string sweep_markdown(const api::SweepTable& table, const api::ReferenceReport& reference) {
   std::string md;
-  md += "Reference: " + std::to_string(reference.settings.samples) + " samples per pixel, " +
-        std::to_string(reference.settings.bounces) + " bounce(s), " +
+  md += "Reference: " + api::counted(reference.settings.samples, "sample") + " per pixel, " +
+        api::counted(reference.settings.bounces, "bounce") + ", " +
         number(reference.build_ms + reference.trace_ms, "%.0f") + " ms, noise RMSE " +
         number(reference.noise_rmse, "%.3g") + " (" + number(100.0 * reference.relative_noise, "%.2g") +
         "% of its mean indirect light).\n\n";

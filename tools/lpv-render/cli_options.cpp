@@ -13,8 +13,8 @@ Renders a request (JSON, the schema of POST /v1/render) to an image file.
 With no request, renders the built-in scene cornell-box to cornell-box.png.
 
 options:
-  -o, --output FILE      output file (default: <scene>.<format>); the extension
-                         .exr or .pfm selects that format when the request has none
+  -o, --output FILE      output file (default: <scene>.<format>): .png, .exr or .pfm,
+                         which selects that format when the request has none
   --stats FILE           write timing stats as JSON ("-" for standard output)
   --scene NAME           render this built-in scene instead of the request's
   --scene FILE           render a glTF 2.0 file (.gltf or .glb, or any path with a
@@ -27,7 +27,8 @@ options:
                          its synchronization validation unless $LPV_VALIDATION_SYNC=0
   --list-devices         list Vulkan devices and exit
   --list-scenes          list built-in scenes and exit
-  -q, --quiet            no summary on standard error
+  -q, --quiet            no progress or summary on standard error (progress, "frame
+                         3/100" and the pass, shows only on a terminal)
   -h, --help             this text
 
 environment: LPV_DEVICE, LPV_VALIDATION, LPV_VALIDATION_SYNC, LPV_PIPELINE_CACHE (a file,
@@ -57,8 +58,11 @@ Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
+    // The next argument, unless it is missing or another option ("-o -q" forgot the file;
+    // "-" alone is a value: standard input or output).
     auto value = [&](std::string_view name) -> std::string {
-      if (i + 1 >= argc) throw UsageError("option " + std::string(name) + " needs a value");
+      const bool missing = i + 1 >= argc || (argv[i + 1][0] == '-' && argv[i + 1][1] != '\0');
+      if (missing) throw UsageError("option " + std::string(name) + " needs a value");
       return argv[++i];
     };
     if (arg == "-h" || arg == "--help") {

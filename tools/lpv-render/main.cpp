@@ -1,4 +1,5 @@
 // lpv-render: one request in, one image file (and optionally stats) out.
+#include "api/counted.hpp"
 #include "api/request_error.hpp"
 #include "api/request_json.hpp"
 #include "cli_options.hpp"
@@ -7,9 +8,14 @@
 #include "renderer/renderer.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/gltf_loader.hpp"
+#include "tools/common/progress_bar.hpp"
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -50,28 +56,36 @@ std::string read_request_text(const std::string& file) {
     text << std::cin.rdbuf();
     return text.str();
   }
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) throw cli::UsageError("cannot read request file '" + file + "': no such file");
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw cli::UsageError("cannot read request file '" + file + "'");
+  if (!in || std::filesystem::is_directory(file, ec)) throw cli::UsageError("cannot read request file '" + file + "'");
   text << in.rdbuf();
   return text.str();
 }
 
 // The format follows the request; an .exr or .pfm output name picks that format when the
-// request left the default, and a name that contradicts an explicit format is an error.
+// request left the default, and a name that contradicts an explicit format is an error. So
+// is an extension no format has: "-o out.jpg" must not write a PNG under that name. A name
+// without one (/dev/stdout) takes the request's format.
 void reconcile_format(api::RenderRequest& request, const std::string& output_file, bool format_given) {
-  const std::string ext = std::filesystem::path(output_file).extension().string();
-  for (api::ImageFormat f : {api::ImageFormat::png, api::ImageFormat::exr, api::ImageFormat::pfm}) {
-    if (ext != renderer::file_extension(f)) continue;
-    if (!format_given) request.output.format = f;
-    if (request.output.format != f)
-      throw cli::UsageError("output file '" + output_file + "' does not match the requested format '" +
-                            api::to_string(request.output.format) + "'");
-  }
+  std::string ext = std::filesystem::path(output_file).extension().string();
+  if (ext.empty()) return;
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  constexpr api::ImageFormat kFormats[] = {api::ImageFormat::png, api::ImageFormat::exr, api::ImageFormat::pfm};
+  const auto f = std::find_if(std::begin(kFormats), std::end(kFormats),
+                              [&](api::ImageFormat f) { return ext == renderer::file_extension(f); });
+  if (f == std::end(kFormats))
+    throw cli::UsageError("cannot write '" + output_file + "': lpv-render writes .png, .exr and .pfm files");
+  if (!format_given) request.output.format = *f;
+  if (request.output.format != *f)
+    throw cli::UsageError("output file '" + output_file + "' does not match the requested format '" +
+                          api::to_string(request.output.format) + "'");
 }
 
 void print_summary(const api::RenderStats& s, const std::string& file) {
-  std::fprintf(stderr, "%s: %ux%u %s, %u frame(s) on %s\n", file.c_str(), s.width, s.height, s.view.c_str(), s.frames,
-               s.device.c_str());
+  std::fprintf(stderr, "%s: %ux%u %s, %s on %s\n", file.c_str(), s.width, s.height, s.view.c_str(),
+               api::counted(s.frames, "frame").c_str(), s.device.c_str());
   std::fprintf(stderr, "  gpu %.3f ms (median):", s.gpu_ms.median);
   for (const auto& p : s.passes)
     if (p.ran) std::fprintf(stderr, " %s %.3f", p.name.c_str(), p.gpu_ms.median);
@@ -124,7 +138,15 @@ int run(int argc, char** argv) {
   if (options.device) device_options.selector = *options.device;
   if (options.validation) device_options.validation = true;
   vkx::Device device(device_options);
-  renderer::Renderer renderer(device, renderer::RendererOptions{.propagate_column = options.propagate_column});
+  // Progress on a terminal, erased when the render is done: the summary stays, not the bar.
+  const bool show_progress = !options.quiet && isatty(STDERR_FILENO) == 1;
+  tools::ProgressBar bar(show_progress);
+  renderer::RendererOptions renderer_options{.propagate_column = options.propagate_column};
+  if (show_progress)
+    renderer_options.progress = [&](const renderer::RenderProgress& p) {
+      bar.update("render", p.done, "frame " + std::to_string(p.frame) + "/" + std::to_string(p.frames) + " " + p.pass);
+    };
+  renderer::Renderer renderer(device, std::move(renderer_options));
   renderer::RenderResult result;
   if (file_scene) {
     try {
@@ -135,6 +157,7 @@ int run(int argc, char** argv) {
   } else {
     result = renderer.render(request);
   }
+  bar.erase();
 
   if (request.dry_run) {  // the plan alone: its stats on standard output (or --stats), no image
     const std::string json = api::to_json(result.stats).dump(2) + "\n";
@@ -163,7 +186,7 @@ int run(int argc, char** argv) {
   }
   if (!options.quiet) print_summary(result.stats, output_file);
   if (device_options.validation && !device.validation_messages().empty()) {
-    std::fprintf(stderr, "lpv-render: %zu validation message(s)\n", device.validation_messages().size());
+    std::fprintf(stderr, "lpv-render: %s\n", api::counted(device.validation_messages().size(), "validation message").c_str());
     return kExitFailure;
   }
   return 0;
@@ -175,7 +198,7 @@ int main(int argc, char** argv) {
   try {
     return run(argc, argv);
   } catch (const cli::UsageError& e) {
-    std::fprintf(stderr, "lpv-render: %s\n\n%s", e.what(), cli::usage());
+    std::fprintf(stderr, "lpv-render: %s\nTry 'lpv-render --help'.\n", e.what());
     return kExitBadInput;
   } catch (const SceneFileError& e) {
     std::fprintf(stderr, "lpv-render: %s\n", e.what());

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace bench {
+namespace tools {
 
 ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), terminal_(isatty(STDERR_FILENO) == 1) {}
 
@@ -41,4 +41,9 @@ void ProgressBar::finish() {
   last_stage_.clear();
 }
 
-}  // namespace bench
+void ProgressBar::erase() {
+  if (enabled_ && terminal_ && !last_stage_.empty()) std::fputs("\r\033[K", stderr);  // to the line's start, clear it
+  last_stage_.clear();
+}
+
+}  // namespace tools

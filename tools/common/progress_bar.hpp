@@ -5,7 +5,7 @@
 #include <chrono>
 #include <string>
 
-namespace bench {
+namespace tools {
 
 class ProgressBar {
  public:
@@ -13,6 +13,7 @@ class ProgressBar {
   // `fraction` of `stage` done; `detail` follows the bar ("row 3/33").
   void update(const std::string& stage, double fraction, const std::string& detail = "");
   void finish();  // ends the line
+  void erase();   // takes the bar off the terminal, for progress that leaves no trace
 
  private:
   bool enabled_;
@@ -22,4 +23,4 @@ class ProgressBar {
   std::chrono::steady_clock::time_point stage_start_;
 };
 
-}  // namespace bench
+}  // namespace tools
