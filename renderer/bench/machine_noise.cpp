@@ -1,21 +1,21 @@
 #include "renderer/bench/machine_noise.hpp"
 
-#include <algorithm>
+#include <string>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
-#include <thread>
-#include <vector>
+#include <tuple>
 
 namespace bench {
 namespace {
 
-// About 15 ms of integer work per core on the project's machine: several scheduler slices,
-// so that a steady load (a CPU hog) averages out as it does over a render, and what is left
-// is a load that comes and goes; short enough that a probe before each of a suite's few
-// hundred rounds costs a few seconds. (A 5 ms probe scattered by 13-22% under one hog, when
-// the renders' pairs still agreed.)
+// About 11 ms of integer work on one thread of the project's machine: several scheduler
+// slices, so that a steady load averages out as it does over a render and what is left is a
+// load that comes and goes; short enough that a probe before each of a suite's few hundred
+// rounds costs a few seconds. One thread, not one per core: with a CPU hog on one of two
+// cores, a thread per core put one of them beside the hog at the scheduler's whim and
+// scattered the probe by 10-22% while the renders' pairs still agreed.
 constexpr std::uint32_t kProbeSteps = 6'000'000;
 
 // Where the probe's results go, so that the compiler cannot drop the work.
@@ -70,17 +70,9 @@ NoiseMonitor::NoiseMonitor() {
 }
 
 void NoiseMonitor::probe() {
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::uint64_t> results(cores);
   const auto start = std::chrono::steady_clock::now();
-  {
-    std::vector<std::jthread> threads;
-    for (unsigned c = 1; c < cores; ++c) threads.emplace_back([&results, c] { results[c] = probe_work(c); });
-    results[0] = probe_work(0);
-  }
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  for (const std::uint64_t r : results) probe_sink = probe_sink ^ r;
-  noise_.probe_ms.push_back(ms);
+  probe_sink = probe_sink ^ probe_work(noise_.probe_ms.size());
+  noise_.probe_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
 }
 
 api::BenchNoise NoiseMonitor::noise() const {
