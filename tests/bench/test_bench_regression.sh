@@ -26,6 +26,8 @@ check "per-pass metrics" grep -q '"pass.propagate"' base.json
 check "3 samples each" grep -q '"n": 3' base.json
 check "the build's commit" grep -q '"commit": "' base.json
 check "summary table on standard output" grep -q "cornell-box/lpv-8-i2 *gpu_ms" out.txt
+check "the summary says how steady the machine was" grep -q "^machine noise: CPU probe .* ms, scatter" out.txt
+check "results carry the noise probe" grep -q '"name": "probe_ms"' base.json
 check "Markdown report" grep -q "^| cornell-box/direct | gpu_ms |" base.md
 check "progress on standard error" grep -q "quick" err.txt
 

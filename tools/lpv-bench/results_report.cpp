@@ -1,5 +1,6 @@
 #include "results_report.hpp"
 
+#include "renderer/bench/machine_noise.hpp"
 #include "text_table.hpp"
 
 #include <algorithm>
@@ -23,6 +24,13 @@ std::string about(const api::BenchResults& r) {
   text += format("build %s %s, %s, commit %s%s%s%s\n", r.build.version.c_str(), r.build.build_type.c_str(),
                  r.build.compiler.c_str(), r.build.commit.c_str(), r.build.dirty ? " (with uncommitted changes)" : "",
                  r.build.sanitizers ? ", sanitizers" : "", r.url.empty() ? "" : (", server " + r.url).c_str());
+  if (r.noise) {
+    const api::BenchSummary probe = api::summarize(r.noise->probe_ms);
+    const std::optional<std::string> noisy = too_noisy(*r.noise);
+    text += format("machine noise: CPU probe %.1f ms, scatter %.1f%%; load %.2f to %.2f; %s\n", probe.median,
+                   100.0 * probe.spread, r.noise->load_start, r.noise->load_end,
+                   noisy ? ("too noisy to compare with: " + *noisy).c_str() : "steady enough to compare with");
+  }
   return text;
 }
 
