@@ -110,7 +110,8 @@ void log_event(const std::string& event, nlohmann::json fields = nlohmann::json:
 
 // Uploaded scenes go to --data-dir/scenes; without a data dir they live in memory.
 server::SceneStore::Config scene_store_config(const server::ServerOptions& options) {
-  return {options.data_dir.empty() ? std::filesystem::path() : options.data_dir / "scenes", options.scene_limits};
+  return {options.data_dir.empty() ? std::filesystem::path() : options.data_dir / "scenes", options.scene_limits,
+          {options.max_store_bytes, options.max_store_scenes}};
 }
 
 void log_scene_store(const server::SceneStore& store) {

@@ -155,6 +155,8 @@ void handle_upload(const httplib::Request& request, httplib::Response& response,
     response.set_header("Location", "/v1/scenes/" + id);
   } catch (const scene::LoadError& e) {
     send_error(response, load_error(e));
+  } catch (const StoreFull& e) {
+    send_error(response, {507, "insufficient_storage", e.what(), ""});
   }
 }
 

@@ -1,5 +1,7 @@
 #include "server/scene_store.hpp"
 
+#include "api/counted.hpp"
+
 #include "server/durable_files.hpp"
 #include "server/scene_report.hpp"
 #include "server/sha256.hpp"
@@ -40,7 +42,8 @@ bool is_scene_id(std::string_view text) {
          std::all_of(text.begin(), text.end(), [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
 }
 
-SceneStore::SceneStore(Config config) : directory_(std::move(config.directory)), limits_(config.limits) {
+SceneStore::SceneStore(Config config)
+    : directory_(std::move(config.directory)), limits_(config.limits), quota_(config.quota) {
   if (!directory_.empty()) open_directory();
 }
 
@@ -82,11 +85,13 @@ scene::Scene SceneStore::load_bytes(std::string_view bytes, const std::string& i
 SceneStore::Added SceneStore::add(std::string_view bytes, const std::string& name) {
   const std::string id = sha256_hex(bytes);
   if (std::optional<nlohmann::json> stored = report(id)) return {std::move(*stored), false};
+  check_room(bytes.size());  // before the slow part too: a full store decodes nothing
   // Loading is the validation and the slow part: no lock is held meanwhile.
   const scene::Scene scene = load_bytes(bytes, id);
 
   const std::lock_guard writing(writing_);
   if (std::optional<nlohmann::json> stored = report(id)) return {std::move(*stored), false};  // raced
+  check_room(bytes.size());  // again: other uploads may have filled it meanwhile
   Entry entry;
   entry.report = uploaded_scene_report(scene, {id, name.empty() ? id : name, bytes.size(), utc_timestamp()});
   if (in_memory()) {
@@ -172,6 +177,17 @@ std::optional<scene::Scene> SceneStore::load(const std::string& id) const {
     bytes = std::make_shared<const std::string>(std::move(*read));
   }
   return load_bytes(*bytes, id);
+}
+
+void SceneStore::check_room(std::uint64_t bytes) const {
+  const Totals stored = totals();
+  if (stored.scenes + 1 > quota_.scenes)
+    throw StoreFull("the scene store is full: it holds " + api::counted(stored.scenes, "scene") + ", its most (" +
+                    "--max-store-scenes); delete one to make room");
+  if (stored.bytes + bytes > quota_.bytes)
+    throw StoreFull("the scene store is full: " + std::to_string(stored.bytes) + " bytes stored and " +
+                    std::to_string(bytes) + " more would pass its quota of " + std::to_string(quota_.bytes) +
+                    " bytes (--max-store-bytes); delete scenes to make room");
 }
 
 SceneStore::Totals SceneStore::totals() const {

@@ -21,6 +21,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,11 +31,25 @@ namespace server {
 // ^[0-9a-f]{64}$
 bool is_scene_id(std::string_view text);
 
+// An upload the store has no room for (its quota of bytes or of scenes): HTTP 507. What is
+// stored stays as it is.
+class StoreFull : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class SceneStore {
  public:
+  // How much the store keeps at most, counted as uploaded: a hostile client could otherwise
+  // fill the disk (or, in memory, the RAM) with 64 MiB uploads.
+  struct Quota {
+    std::uint64_t bytes = 4ull << 30;
+    std::size_t scenes = 1000;
+  };
   struct Config {
     std::filesystem::path directory;  // empty: in memory only
     scene::LoadLimits limits;         // for uploads, and for loads when rendering
+    Quota quota;
   };
   // What opening the directory found, for the start-up log.
   struct Opened {
@@ -60,8 +75,9 @@ class SceneStore {
     bool created = false;  // false: these bytes were stored already; the report is the first upload's
   };
   // Loads `bytes` with scene::load_gltf (external files refused; throws scene::LoadError) and
-  // stores them. `name` is what the listing shows; empty: the id. Throws std::system_error
-  // when the files cannot be written.
+  // stores them. `name` is what the listing shows; empty: the id. Throws StoreFull when the
+  // new scene would pass the quota (the same bytes again are no new scene: never refused),
+  // std::system_error when the files cannot be written.
   Added add(std::string_view bytes, const std::string& name);
 
   // Every stored scene's report, oldest upload first.
@@ -90,10 +106,13 @@ class SceneStore {
   };
 
   void open_directory();
+  // Throws StoreFull when one more scene of `bytes` would pass the quota.
+  void check_room(std::uint64_t bytes) const;
   scene::Scene load_bytes(std::string_view bytes, const std::string& id) const;
 
   const std::filesystem::path directory_;
   const scene::LoadLimits limits_;
+  const Quota quota_;
   Opened opened_;
   std::mutex writing_;  // one change of the files at a time; the index stays readable meanwhile
   mutable std::mutex mutex_;

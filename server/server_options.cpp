@@ -66,6 +66,10 @@ const std::vector<Setting>& settings() {
        [](ServerOptions& o, S s, S v) { o.max_body_bytes = parse_count(s, v, 64, 64u << 20); }},
       {"--max-scene-bytes", true,
        [](ServerOptions& o, S s, S v) { o.max_scene_bytes = parse_count(s, v, 64, 1u << 30); }},
+      {"--max-store-bytes", true,
+       [](ServerOptions& o, S s, S v) { o.max_store_bytes = parse_count(s, v, 1, 1ull << 50); }},
+      {"--max-store-scenes", true,
+       [](ServerOptions& o, S s, S v) { o.max_store_scenes = parse_count(s, v, 1, 1'000'000); }},
       {"--max-scene-triangles", true,
        [](ServerOptions& o, S s, S v) { o.scene_limits.max_triangles = parse_count(s, v, 1, 100'000'000); }},
       {"--scene-cache-mb", true,
@@ -120,6 +124,10 @@ options (each also read from the environment variable in brackets; a flag wins):
   --max-body-bytes N     request body size before 413, scene uploads aside (262144)
                          [LPV_SERVER_MAX_BODY_BYTES]
   --max-scene-bytes N    scene upload size before 413 (67108864) [LPV_SERVER_MAX_SCENE_BYTES]
+  --max-store-bytes N    uploaded scenes' bytes in all before an upload gets 507 (4294967296)
+                         [LPV_SERVER_MAX_STORE_BYTES]
+  --max-store-scenes N   uploaded scenes before an upload gets 507 (1000)
+                         [LPV_SERVER_MAX_STORE_SCENES]
   --max-scene-triangles N  triangles of one uploaded scene before 422 (8000000)
                          [LPV_SERVER_MAX_SCENE_TRIANGLES]
   --scene-cache-mb N     memory for scenes kept resident per render worker (1024)

@@ -31,6 +31,8 @@ struct ServerOptions {
   std::chrono::milliseconds accuracy_deadline{600000};  // from arrival to a compare's or sweep's answer
   std::size_t max_body_bytes = 256 * 1024;         // every request but scene uploads
   std::size_t max_scene_bytes = 64 * 1024 * 1024;  // POST /v1/scenes
+  std::uint64_t max_store_bytes = 4ull << 30;      // all uploaded scenes together, as uploaded
+  std::size_t max_store_scenes = 1000;             // uploaded scenes
   scene::LoadLimits scene_limits;                  // what one uploaded scene may hold
   std::uint64_t scene_cache_bytes = 1ull << 30;    // scenes kept resident per render worker
   RenderLimits limits;

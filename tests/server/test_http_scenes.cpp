@@ -206,6 +206,39 @@ TEST(HttpScenes, UploadListRenderRestartDeleteAndRenderNoMore) {
   EXPECT_TRUE(uploaded_scenes(*http).empty());
 }
 
+TEST(HttpScenes, AFullStoreRefusesNewScenesWith507AndKeepsWhatItHas) {
+  DataDir data;
+  const std::string glb = read_file(kBoxGlb), gltf = read_file(kBoxGltf), triangle = triangle_gltf().dump();
+  {
+    // A quota of scenes: one.
+    ServerProcess server({"--data-dir", data.path(), "--max-store-scenes", "1"});
+    auto http = server.client();
+    const auto first = upload(*http, glb);
+    ASSERT_EQ(first->status, 201) << first->body;
+    const std::string id = nlohmann::json::parse(first->body)["id"];
+    const auto refused = upload(*http, triangle);
+    EXPECT_TRUE(is_json_error(refused, 507, "insufficient_storage", ""));
+    EXPECT_NE(refused->body.find("holds 1 scene, its most"), std::string::npos) << refused->body;
+    EXPECT_EQ(upload(*http, glb)->status, 200) << "the same bytes again are no new scene";
+    EXPECT_EQ(uploaded_scenes(*http).size(), 1u);
+    EXPECT_TRUE(renders_png(render(*http, id))) << "what was stored is untouched";
+    ASSERT_EQ(http->Delete("/v1/scenes/" + id)->status, 204);
+    EXPECT_EQ(upload(*http, triangle)->status, 201) << "room again after a delete";
+  }
+  {
+    // A quota of bytes: the stored triangle and the box's .glb fit, the box's bigger .gltf then not.
+    const std::string quota = std::to_string(triangle.size() + glb.size() + gltf.size() - 1);
+    ServerProcess server({"--data-dir", data.path(), "--max-store-bytes", quota});
+    auto http = server.client();
+    EXPECT_EQ(upload(*http, glb)->status, 201);
+    const auto refused = upload(*http, gltf);
+    EXPECT_TRUE(is_json_error(refused, 507, "insufficient_storage", ""));
+    EXPECT_NE(refused->body.find("--max-store-bytes"), std::string::npos) << refused->body;
+    EXPECT_EQ(uploaded_scenes(*http).size(), 2u);
+    EXPECT_EQ(data.scene_files().size(), 4u) << "two scenes, each its report and its bytes; nothing half-written";
+  }
+}
+
 TEST(HttpScenes, TheSameBytesTwiceAreOneScene) {
   DataDir data;
   ServerProcess server({"--data-dir", data.path()});
