@@ -83,15 +83,11 @@ api::BenchNoise NoiseMonitor::noise() const {
   return noise;
 }
 
-std::optional<std::string> too_noisy(const api::BenchNoise& noise) {
+std::optional<std::string> too_noisy(const api::BenchNoise& noise, double max_probe_spread) {
   const api::BenchSummary probe = api::summarize(noise.probe_ms);
-  if (probe.spread > kMaxProbeSpread)
-    return "the CPU probe's times scatter by " + percent(probe.spread) + " (MAD / median of " + std::to_string(probe.n) +
-           "; at most " + percent(kMaxProbeSpread) + " for a verdict)";
-  if (noise.steal > kMaxSteal)
-    return "a hypervisor took " + percent(noise.steal) + " of the CPU time (at most " + percent(kMaxSteal) +
-           " for a verdict)";
-  return std::nullopt;
+  if (probe.spread <= max_probe_spread) return std::nullopt;
+  return "the CPU probe's times scatter by " + percent(probe.spread) + " (MAD / median of " + std::to_string(probe.n) +
+         "; at most " + percent(max_probe_spread) + " for a verdict)";
 }
 
 }  // namespace bench

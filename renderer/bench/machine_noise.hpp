@@ -15,12 +15,13 @@
 
 namespace bench {
 
-// Beyond these a run's times are not judged: the probe's MAD / median, and the share of
-// stolen time. Measured on the project's 2-core machine: 0.007 quiet, 0.009 with a CPU hog on
-// one core, 0.020 with a hog on each, 0.048 with loads on both cores that come and go every
-// few tenths of a second (which scattered the renders' own times by 8-48%).
-inline constexpr double kMaxProbeSpread = 0.03;
-inline constexpr double kMaxSteal = 0.05;
+// Beyond this the probe's MAD / median rules out a verdict on a run's times (lpv-bench
+// --max-probe-spread sets another). Measured on the project's 2-core VM: 0.007 quiet,
+// 0.009 with a CPU hog on one core, 0.020 with a hog on each, 0.018-0.024 idle while the
+// hypervisor stole 12-23% of the time, 0.048 with loads on both cores that come and go every
+// few tenths of a second. Stolen time is reported, not judged: on that VM it was high on an
+// idle machine whose probe stayed steady, and the probe measures what the renders feel.
+inline constexpr double kMaxProbeSpread = 0.05;
 
 class NoiseMonitor {
  public:
@@ -37,8 +38,8 @@ class NoiseMonitor {
   std::uint64_t steal_start_ = 0, total_start_ = 0;
 };
 
-// Why a run's noise rules out a verdict ("the probe's times scatter by 23% (MAD / median; at
-// most 10% for a verdict)"), or nothing when it is steady enough.
-std::optional<std::string> too_noisy(const api::BenchNoise& noise);
+// Why a run's noise rules out a verdict ("the CPU probe's times scatter by 23% (MAD / median
+// of 65; at most 5% for a verdict)"), or nothing when it is steady enough.
+std::optional<std::string> too_noisy(const api::BenchNoise& noise, double max_probe_spread = kMaxProbeSpread);
 
 }  // namespace bench

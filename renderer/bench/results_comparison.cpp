@@ -40,12 +40,13 @@ std::vector<std::string> setting_warnings(const api::BenchResults& base, const a
 
 // Why either run's times cannot be judged. Paired runs measured one machine at one time: its
 // noise is said once.
-std::vector<std::string> noise_reasons(const api::BenchResults& base, const api::BenchResults& cand, bool paired) {
+std::vector<std::string> noise_reasons(const api::BenchResults& base, const api::BenchResults& cand, bool paired,
+                                       double max_probe_spread) {
   std::vector<std::string> reasons;
   for (const auto* r : {&base, &cand}) {
     if (paired && r == &cand) break;
     if (!r->noise) continue;
-    if (std::optional<std::string> why = too_noisy(*r->noise)) reasons.push_back(paired ? *why : r->label + ": " + *why);
+    if (std::optional<std::string> why = too_noisy(*r->noise, max_probe_spread)) reasons.push_back(paired ? *why : r->label + ": " + *why);
   }
   return reasons;
 }
@@ -73,7 +74,7 @@ Comparison compare_with(const api::BenchResults& base, const api::BenchResults& 
   comparison.baseline = run_info(base);
   comparison.candidate = run_info(cand);
   comparison.warnings = setting_warnings(base, cand);
-  comparison.noisy = noise_reasons(base, cand, paired);
+  comparison.noisy = noise_reasons(base, cand, paired, options.max_probe_spread);
   std::set<std::pair<std::size_t, std::size_t>> too_few;  // sample sizes that cannot reach alpha
 
   for (const api::BenchCaseResult& b : base.cases) {

@@ -5,6 +5,7 @@
 
 #include "api/bench_results.hpp"
 #include "renderer/bench/image_fingerprint.hpp"
+#include "renderer/bench/machine_noise.hpp"
 #include "renderer/bench/metric_verdict.hpp"
 
 #include <nlohmann/json_fwd.hpp>
@@ -22,6 +23,9 @@ struct CompareOptions {
   // hiccup of a shared machine, and with a hundred of them some are "slower" by chance
   // (docs/perf-regression.md); their verdicts still say where a change comes from.
   bool gate_passes = false;
+  // A run whose noise probe scatters by more (MAD / median) gets no verdict on its times
+  // (machine_noise.hpp).
+  double max_probe_spread = kMaxProbeSpread;
 };
 
 // gpu_ms, wall_ms, round_trip_ms: what a regression is judged on by default.

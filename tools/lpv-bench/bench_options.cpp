@@ -73,6 +73,8 @@ compare, ab:
   --image-tolerance E    relative MSE of the thumbnails still "the same image" (default: 1e-4)
   --gate-passes          a pass slower is a regression too (default: only the frame's totals,
                          gpu_ms, wall_ms and round_trip_ms, are; passes are reported)
+  --max-probe-spread F   a run whose CPU noise probe scattered more (MAD / median) gets no
+                         verdict on its times: inconclusive, exit 4 (default: 0.05)
 ab:
   --a PATH, --b PATH     lpv-bench of the baseline (A) and of the candidate (B)
   --rounds N             pairs of timed renders per case (default: the suite's repetitions)
@@ -160,6 +162,8 @@ const std::vector<Flag>& flags() {
       {"--image-tolerance", "", kVerdicts,
        [](Options& o, S v) { o.compare.image_tolerance = number<double>("--image-tolerance", v, 0.0, 1e6); }},
       {"--gate-passes", "", kVerdicts, [](Options& o, S) { o.compare.gate_passes = true; }, false},
+      {"--max-probe-spread", "", kVerdicts,
+       [](Options& o, S v) { o.compare.max_probe_spread = number<double>("--max-probe-spread", v, 0.0, 1e6); }},
       {"--a", "", bit(Command::ab), [](Options& o, S v) { o.build_a = v; }},
       {"--b", "", bit(Command::ab), [](Options& o, S v) { o.build_b = v; }},
       {"--rounds", "", bit(Command::ab), [](Options& o, S v) { o.rounds = number<std::uint32_t>("--rounds", v, 1, 1000); }},

@@ -26,7 +26,7 @@ std::string about(const api::BenchResults& r) {
                  r.build.sanitizers ? ", sanitizers" : "", r.url.empty() ? "" : (", server " + r.url).c_str());
   if (r.noise) {
     const api::BenchSummary probe = api::summarize(r.noise->probe_ms);
-    const std::optional<std::string> noisy = too_noisy(*r.noise);
+    const std::optional<std::string> noisy = too_noisy(*r.noise);  // at the default threshold
     text += format("machine noise: CPU probe %.1f ms, scatter %.1f%%; load %.2f to %.2f; %s\n", probe.median,
                    100.0 * probe.spread, r.noise->load_start, r.noise->load_end,
                    noisy ? ("too noisy to compare with: " + *noisy).c_str() : "steady enough to compare with");
