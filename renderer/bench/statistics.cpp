@@ -76,6 +76,12 @@ std::size_t critical_order(const std::vector<double>& counts, double tail) {
   return k;
 }
 
+// critical_order beyond the exact range: the statistic as normal with this mean and variance.
+std::size_t normal_critical_order(double mean, double variance, double tail) {
+  const double c = mean - normal_upper_quantile(tail) * std::sqrt(variance);
+  return c < 1.0 ? 0 : std::size_t(c);
+}
+
 // The null distribution of the signed-rank statistic T+ for n untied differences: how
 // many of the 2^n sign patterns give each sum of positive ranks 0 .. n(n+1)/2.
 std::vector<double> signed_rank_counts(std::size_t n) {
@@ -211,14 +217,9 @@ ShiftEstimate hodges_lehmann_paired(std::span<const double> d, double confidence
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i; j < n; ++j) walsh.push_back(0.5 * (x[i] + x[j]));
   const double tail = (1.0 - confidence) / 2.0;
-  std::size_t k = 0;
-  if (n <= kMaxExact) {
-    k = critical_order(signed_rank_counts(n), tail);
-  } else {
-    const double nn = double(n);
-    const double c = nn * (nn + 1) / 4.0 - normal_upper_quantile(tail) * std::sqrt(nn * (nn + 1) * (2 * nn + 1) / 24.0);
-    k = c < 1.0 ? 0 : std::size_t(c);
-  }
+  const double nn = double(n);
+  const std::size_t k = n <= kMaxExact ? critical_order(signed_rank_counts(n), tail)
+                                       : normal_critical_order(nn * (nn + 1) / 4.0, nn * (nn + 1) * (2 * nn + 1) / 24.0, tail);
   return interval_of(std::move(walsh), k);
 }
 
@@ -231,14 +232,9 @@ ShiftEstimate hodges_lehmann_shift(std::span<const double> x_samples, std::span<
   for (const double a : x)
     for (const double b : y) differences.push_back(b - a);
   const double tail = (1.0 - confidence) / 2.0;
-  std::size_t k = 0;
-  if (x.size() + y.size() <= kMaxExact) {
-    k = critical_order(mann_whitney_counts(x.size(), y.size()), tail);
-  } else {
-    const double m = double(x.size()), n = double(y.size());
-    const double c = m * n / 2.0 - normal_upper_quantile(tail) * std::sqrt(m * n * (m + n + 1) / 12.0);
-    k = c < 1.0 ? 0 : std::size_t(c);
-  }
+  const double m = double(x.size()), n = double(y.size());
+  const std::size_t k = x.size() + y.size() <= kMaxExact ? critical_order(mann_whitney_counts(x.size(), y.size()), tail)
+                                                          : normal_critical_order(m * n / 2.0, m * n * (m + n + 1) / 12.0, tail);
   return interval_of(std::move(differences), k);
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 
 namespace {
@@ -52,6 +53,21 @@ TEST(BenchStatistics, NormalApproximationsBeyondTheExactRange) {
   const auto a = times.times(150, 10.0, 0.05);
   const auto same = times.times(150, 10.0, 0.05);
   const auto shifted = times.times(150, 11.0, 0.05);
+  // The intervals there too: log 1.1 = 0.095 inside the shifted one, 0 inside the unshifted.
+  std::vector<double> log_a, log_same, log_shifted;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    log_a.push_back(std::log(a[i]));
+    log_same.push_back(std::log(same[i]));
+    log_shifted.push_back(std::log(shifted[i]));
+  }
+  const bench::ShiftEstimate up = bench::hodges_lehmann_shift(log_a, log_shifted, 0.99);
+  EXPECT_LT(up.low, std::log(1.1));
+  EXPECT_GT(up.high, std::log(1.1));
+  EXPECT_GT(up.low, 0.0);
+  const bench::ShiftEstimate none = bench::hodges_lehmann_shift(log_a, log_same, 0.99);
+  EXPECT_LT(none.low, 0.0);
+  EXPECT_GT(none.high, 0.0);
+  EXPECT_LT(none.high - none.low, 0.05) << "150 against 150 pin the shift to a few percent";
   EXPECT_GT(bench::mann_whitney_p(a, same), 0.01);
   EXPECT_LT(bench::mann_whitney_p(a, shifted), 1e-6);
   std::vector<double> differences;

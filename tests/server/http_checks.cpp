@@ -6,6 +6,12 @@
 #define STBI_ONLY_PNG
 #include <stb/stb_image.h>
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <sys/time.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -66,6 +72,30 @@ std::optional<ImageSize> png_size(const std::string& bytes) {
 std::string base64_decode(const std::string& text) {
   const auto bytes = server::base64_decode(text);
   return bytes ? std::string(bytes->begin(), bytes->end()) : std::string();
+}
+
+std::string send_raw(int port, const std::string& bytes, int answer_timeout_s) {
+  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) throw std::runtime_error("send_raw: no socket");
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(std::uint16_t(port));
+  inet_pton(AF_INET, "127.0.0.1", &address.sin_addr);
+  const timeval wait{answer_timeout_s, 0};
+  setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof(wait));
+  if (connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) != 0 ||
+      send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL) != ssize_t(bytes.size())) {
+    close(fd);
+    throw std::runtime_error("send_raw: could not send the request to port " + std::to_string(port));
+  }
+  std::string answer;
+  if (answer_timeout_s > 0) {
+    char buffer[256];
+    for (ssize_t n; answer.find("\r\n") == std::string::npos && (n = recv(fd, buffer, sizeof(buffer), 0)) > 0;)
+      answer.append(buffer, std::size_t(n));
+  }
+  close(fd);
+  return answer.substr(0, answer.find("\r\n"));
 }
 
 std::map<std::string, double> parse_server_timing(const std::string& header) {

@@ -26,6 +26,12 @@ std::optional<ImageSize> png_size(const std::string& bytes);
 // The bytes of strict base64 text (server::base64_decode); empty when it is not base64.
 std::string base64_decode(const std::string& text);
 
+// Sends `bytes` as they are on a new loopback connection to `port` (what no HTTP client
+// library would send: a request cut short, one without a length header). With
+// `answer_timeout_s` > 0, returns the first line of the answer, empty when none came within
+// it; else closes at once and returns "". Throws std::runtime_error when it cannot send.
+std::string send_raw(int port, const std::string& bytes, int answer_timeout_s = 0);
+
 // Server-Timing "name;dur=1.5;desc=..., ..." as name -> dur.
 std::map<std::string, double> parse_server_timing(const std::string& header);
 

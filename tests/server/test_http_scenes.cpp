@@ -7,11 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
 #include <signal.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -281,19 +277,10 @@ TEST(HttpScenes, ADeletedSceneIsNotRenderedFromAWorkersCache) {
 // Sends the headers of an upload of 100000 bytes and only the first `sent` of them, then
 // closes the connection, as a client that crashed would.
 void send_partial_upload(int port, const std::string& bytes, std::size_t sent) {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
-  ASSERT_GE(fd, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(std::uint16_t(port));
-  inet_pton(AF_INET, "127.0.0.1", &address.sin_addr);
-  ASSERT_EQ(connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof(address)), 0);
-  const std::string request =
-      "POST /v1/scenes HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: model/gltf-binary\r\n"
-      "Content-Length: 100000\r\n\r\n" +
-      bytes.substr(0, sent);
-  ASSERT_EQ(send(fd, request.data(), request.size(), MSG_NOSIGNAL), ssize_t(request.size()));
-  close(fd);
+  send_raw(port,
+           "POST /v1/scenes HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: model/gltf-binary\r\n"
+           "Content-Length: 100000\r\n\r\n" +
+               bytes.substr(0, sent));
 }
 
 TEST(HttpScenes, AnUploadThatBreaksOffLeavesNothingBehind) {
