@@ -87,6 +87,14 @@ std::string to_string(Transfer t) {
   throw std::invalid_argument("api::to_string: invalid Transfer");
 }
 
+std::string to_string(Blocking b) {
+  switch (b) {
+    case Blocking::projected: return "projected";
+    case Blocking::sh_lobe: return "sh_lobe";
+  }
+  throw std::invalid_argument("api::to_string: invalid Blocking");
+}
+
 bool plan_applies(const RenderRequest& request, PlanRule r) {
   return request.plan == PlanMode::auto_ &&
          std::find(request.plan_keep.begin(), request.plan_keep.end(), r) == request.plan_keep.end();

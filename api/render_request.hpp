@@ -72,6 +72,12 @@ enum class Injection { trilinear, nearest };
 // directional terms sharpened so that the light above a lit plane propagates unchanged
 // (no self-illumination, light travels straight).
 enum class Transfer { cosine, sharpened };
+// How much of the light crossing a cell face its blockers (the geometry volume) stop
+// (docs/lpv.md, "Blocking"): their projected area across the light's direction, from
+// either side, as an opaque surface blocks; or the paper's one-sided 2-band SH lobe, which
+// also stops a quarter of the light grazing a surface and only 3/4 of the light meeting it
+// head-on.
+enum class Blocking { projected, sh_lobe };
 
 struct Output {
   std::uint32_t width = 512;
@@ -102,6 +108,7 @@ struct Lpv {
   std::uint32_t bounces = 1;           // 2: light the geometry volume blocks is reflected on
   Injection injection = Injection::trilinear;
   Transfer transfer = Transfer::sharpened;
+  Blocking blocking = Blocking::projected;
   float injection_offset = 0.5f;       // VPLs move this many cells along their normal
   float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
   // With plan "auto": propagation stops once the remaining iterations would add less than
@@ -159,6 +166,7 @@ std::string to_string(PlanMode p);
 std::string to_string(PlanRule r);
 std::string to_string(Injection i);
 std::string to_string(Transfer t);
+std::string to_string(Blocking b);
 
 // Whether the planner's rule `r` applies: plan "auto" and not in plan_keep.
 bool plan_applies(const RenderRequest& request, PlanRule r);

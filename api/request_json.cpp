@@ -93,11 +93,12 @@ constexpr auto light_edit_keys = [] {
 }();
 constexpr std::array<Keys, 6> output_keys{"width", "height", "format", "view", "exposure", "tonemap"};
 constexpr std::array<Keys, 2> shadows_keys{"enabled", "resolution"};
-constexpr std::array<Keys, 16> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
-                                        "vpl_downsample", "occlusion", "occlusion_sources", "bounces",
+constexpr std::array<Keys, 17> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
+                                        "vpl_downsample", "occlusion", "occlusion_sources", "blocking", "bounces",
                                         "injection", "injection_offset", "transfer", "intensity", "convergence",
                                         "origin", "extent"};
 constexpr std::array injections{Injection::trilinear, Injection::nearest};
+constexpr std::array blockings{Blocking::projected, Blocking::sh_lobe};
 constexpr std::string_view occlusion_source_rsm = "rsm";
 constexpr std::string_view occlusion_source_camera = "camera";
 
@@ -267,6 +268,7 @@ Lpv read_lpv(const Field& f) {
   }
   if (auto v = obj.get("occlusion")) lpv.occlusion = as_bool(*v);
   if (auto v = obj.get("occlusion_sources")) read_occlusion_sources(*v, lpv);
+  if (auto v = obj.get("blocking")) lpv.blocking = as_enum(*v, blockings);
   if (auto v = obj.get("bounces")) lpv.bounces = as_uint<std::uint32_t>(*v, 1, limits::max_bounces);
   if (auto v = obj.get("injection")) lpv.injection = as_enum(*v, injections);
   if (auto v = obj.get("transfer")) lpv.transfer = read_transfer(*v);
@@ -343,6 +345,7 @@ json lpv_json(const Lpv& lpv) {
             {"vpl_downsample", lpv.vpl_downsample},
             {"occlusion", lpv.occlusion},
             {"occlusion_sources", std::move(sources)},
+            {"blocking", to_string(lpv.blocking)},
             {"bounces", lpv.bounces},
             {"injection", to_string(lpv.injection)},
             {"injection_offset", shortest(lpv.injection_offset)},

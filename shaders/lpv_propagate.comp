@@ -86,11 +86,19 @@ Sender load_sender(ivec3 cell, uint which, uvec3 dims, float inside) {
 }
 
 // The blocking SH of a face as h = (1 - its constant term, its linear terms / sqrt(5)) in the
-// axes' order, so that the fraction it lets through along w is clamp(h.x + sqrt(5) <h.yzw, w>,
-// 0, 1) (the face's blocking potential is B(-w)); (1, 0, 0, 0), all through, when off.
+// axes' order, so that with u = sqrt(5) <h.yzw, w> the fraction it lets through along w is
+// lpv_transmitted's: clamp(h.x + u, 0, 1) for the one-sided lobe, clamp(1 - 2 |u|, 0, 1) for
+// the projected area (transmitted() below); (1, 0, 0, 0), all through, when off.
 vec4 face_transmission(vec4 blocking, float on) {
   vec4 g = blocking * on;
   return vec4(1.0 - SH_C0 * g.x, vec3(-g.w, -g.y, g.z) * (SH_C1 / LPV_SQRT5));
+}
+
+// The fraction let through for the faces' values u (see face_transmission): lpv.transfer.z
+// selects the projected area (1) or the one-sided lobe (0), a uniform rather than a pipeline
+// variant since it costs one abs and one mix.
+vec4 transmitted(float h0, vec4 u) {
+  return clamp(mix(h0 + u, 1.0 - 2.0 * abs(u), lpv.transfer.z), 0.0, 1.0);
 }
 
 // One channel of a neighbour on axis a, travelling along sigma * a, in the axes' order
@@ -112,9 +120,11 @@ void receive(inout vec4 far, inout vec4 side, vec4 e, float sigma, float t_far, 
 // The light the blockers of a face stop, reflected back (bounces: 2): diffuse around their
 // mean normal, times their mean albedo. `unblocked` is the face's flux before blocking
 // (solid angle included), w its direction.
+// Projected blocking stops light from either side, so the normal turns to face the light.
 void reflect_blocked(inout Gathered g, vec4 blocking, vec3 albedo, vec3 w, vec3 unblocked, float blocked) {
   vec3 mean_normal = vec3(-blocking.w, -blocking.y, blocking.z);
   vec3 n = dot(mean_normal, mean_normal) > 0.0 ? normalize(mean_normal) : -w;
+  if (lpv.transfer.z > 0.0 && dot(n, w) > 0.0) n = -n;
   vec3 reflected = unblocked * blocked * albedo;
   for (int c = 0; c < 3; ++c) g.reflected[c] += reflected[c] * vec4(1.0, n);
 }
@@ -128,7 +138,7 @@ void reflect_neighbour(inout Gathered g, Sender n, vec4 blocking, vec3 albedo, v
     float omega = f == 0 ? LPV_FAR_FACE_SOLID_ANGLE : LPV_SIDE_FACE_SOLID_ANGLE;
     vec3 unblocked;
     for (int k = 0; k < 3; ++k) unblocked[k] = omega * max(n.e[k].x + LPV_SQRT5 * dot(n.e[k].yzw, w), 0.0);
-    float blocked = clamp(dot(blocking, sh_basis(-w)), 0.0, 1.0);
+    float blocked = 1.0 - lpv_transmitted(blocking, w, lpv.transfer.z);
     reflect_blocked(g, blocking, albedo, w, unblocked, blocked);
   }
 }
@@ -156,9 +166,9 @@ void gather(inout Gathered g, Sender n, int axis, float sigma, Face face, float 
   float t_far = 1.0;
   vec4 t_side = vec4(1.0);
   if (OCCLUDED) {
-    t_far = clamp(h.x + (sigma * LPV_SQRT5) * h.y, 0.0, 1.0);
-    float shared_term = h.x + (2.0 * sigma) * h.y;
-    t_side = clamp(vec4(shared_term + h.z, shared_term - h.z, shared_term + h.w, shared_term - h.w), 0.0, 1.0);
+    t_far = transmitted(h.x, vec4((sigma * LPV_SQRT5) * h.y)).x;
+    float shared_term = (2.0 * sigma) * h.y;
+    t_side = transmitted(h.x, vec4(shared_term + h.z, shared_term - h.z, shared_term + h.w, shared_term - h.w));
   }
   for (int c = 0; c < 3; ++c) {
     if (axis == 0) receive(g.far[c], g.side[c], n.e[c], sigma, t_far, t_side);

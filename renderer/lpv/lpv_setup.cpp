@@ -121,7 +121,8 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene
   const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);
   g.camera = glm::vec4(pixel_footprint, camera.position);
   const TransferFactors factors = transfer_factors(lpv.transfer);
-  g.transfer = glm::vec4(factors.propagated, factors.injected, 0.0f, 0.0f);
+  g.transfer = glm::vec4(factors.propagated, factors.injected, lpv.blocking == api::Blocking::projected ? 1.0f : 0.0f,
+                         0.0f);
 
   for (const LightView& view : views) {
     gpu::GpuRsmView v{};

@@ -153,7 +153,8 @@ struct GpuLpv {
   vec4 camera;    // x: camera pixel footprint at unit depth (m); yzw: unused
   vec4 transfer;  // x: factor on the directional terms of each propagated lobe (1: cosine lobes,
                   // LPV_SHARPENED_TRANSFER: sharpened); y: the same for each injected VPL's lobe
-                  // (1, LPV_SHARPENED_INJECTION); zw: unused
+                  // (1, LPV_SHARPENED_INJECTION); z: blocking, 1 projected, 0 the one-sided
+                  // lobe (lpv_transmitted); w: unused
 };
 
 // One light view of the RSM pass: where its texels are and how big they are.

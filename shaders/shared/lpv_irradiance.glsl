@@ -28,9 +28,12 @@ vec4 shared_corner(vec4 of_a, vec4 of_b, uint k, bool in_a) {
   return in_a ? a : b;
 }
 
-// The intensity of one cell, per channel, against a cosine lobe.
+// The intensity of one cell, per channel, against a cosine lobe: each channel's SH made
+// nowhere negative first (sh_nonnegative_irradiance), so that a cell next to a lit surface does
+// not shade it with negative light that cancels what other cells send.
 vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
-  return vec3(dot(red, lobe), dot(green, lobe), dot(blue, lobe));
+  return vec3(dot(sh_nonnegative_irradiance(red), lobe), dot(sh_nonnegative_irradiance(green), lobe),
+              dot(sh_nonnegative_irradiance(blue), lobe));
 }
 
 // Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units) onto a

@@ -36,7 +36,9 @@ using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 #endif
 using glm::abs;
+using glm::clamp;
 using glm::dot;
+using std::sqrt;
 using glm::max;
 using glm::normalize;
 #define LPV_FUNC inline
@@ -99,6 +101,40 @@ LPV_FUNC vec4 sh_cosine_lobe(vec3 n) {
 
 // The function an SH vector represents, in direction d.
 LPV_FUNC lpv_real sh_evaluate(vec4 sh, vec3 d) { return dot(sh, sh_basis(d)); }
+
+// Blocking (api::Blocking, docs/lpv.md "Blocking"). A face's blocking SH b is the sum of its
+// blockers' potentials p (area / face area) times their cosine lobes (lpv_geometry_inject.comp),
+// so b holds sum p in its constant term and the first moment m = sum p n in band 1, and its
+// value towards -w is sum p (1/4 + 1/2 <n, -w>): the one-sided lobe the paper evaluates
+// (sh_lobe, `projected` = 0). That lobe stops a quarter of the light grazing a surface, which
+// over the steps along a floor or a wall removes most of the light travelling beside it, and
+// only 3/4 of the light meeting it head-on. An opaque surfel stops the fraction p |<n, w>| of
+// light along w, its area projected across w, from either side (projected, `projected` = 1):
+// |<m, w>| = 2 |band-1 part|, exact for one plane and for both sides of a thin wall (the
+// first moment of surfels facing many ways partly cancels: clutter smaller than a cell blocks
+// less than it should). Returns the fraction let through, in [0, 1].
+LPV_FUNC lpv_real lpv_transmitted(vec4 b, vec3 w, lpv_real projected) {
+  const lpv_real one_sided = sh_evaluate(b, -w);
+  const lpv_real directional = one_sided - SH_C0 * b.x;
+  const lpv_real blocked = one_sided + projected * (lpv_real(2) * abs(directional) - one_sided);
+  return lpv_real(1) - clamp(blocked, lpv_real(0), lpv_real(1));
+}
+
+// An SH vector whose irradiance is nowhere negative (docs/lpv.md, "Shading"). The irradiance of
+// a 2-band SH onto a surface facing n, <s, cosine lobe(-n)>, is least against the band-1 vector,
+// where it is c0' s0 - c1' |band 1|: a cell whose light is more directional than a hemisphere
+// (the sharpened lobes next to a lit surface are) shades the surface it leaves with negative
+// light, which cancels what other surfaces send there before the clamp at zero. Band 1 is
+// scaled down to the largest length that keeps every direction's irradiance >= 0 (the flux,
+// the constant term, is kept); nothing else changes.
+LPV_FUNC vec4 sh_nonnegative_irradiance(vec4 s) {
+  const lpv_real limit = SH_COSINE_C0 / SH_COSINE_C1 * max(s.x, lpv_real(0));
+  const vec3 band1 = vec3(s.y, s.z, s.w);
+  const lpv_real length1 = sqrt(dot(band1, band1));
+  if (length1 <= limit) return s;
+  const vec3 kept = band1 * (limit / length1);
+  return vec4(max(s.x, lpv_real(0)), kept.x, kept.y, kept.z);
+}
 
 // The flux of an intensity distribution: its integral over the sphere.
 LPV_FUNC lpv_real sh_flux(vec4 sh) { return 2.0f * LPV_SQRT_PI * sh.x; }

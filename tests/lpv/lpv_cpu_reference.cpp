@@ -26,6 +26,9 @@ struct Maths;
     static VEC4 emitter(vec3 n, real phi) { return NS::sh_diffuse_emitter(n, phi); }                 \
     static real outgoing_scale(const VEC4& sh) { return NS::lpv_outgoing_scale(sh); }                \
     static real evaluate(const VEC4& sh, vec3 d) { return NS::sh_evaluate(sh, d); }                  \
+    static real transmitted(const VEC4& b, vec3 w, real projected) {                                 \
+      return NS::lpv_transmitted(b, w, projected);                                                   \
+    }                                                                                                \
     static vec3 face_direction(vec3 ahead, vec3 side) { return NS::lpv_face_direction(ahead, side); } \
   };
 LPV_REF_MATHS(glm::vec4, gpu)
@@ -77,7 +80,8 @@ BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cel
 }
 
 template <class Vec4>
-BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking, double transfer) {
+BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking, double transfer,
+                          api::Blocking model) {
   using M = Maths<Vec4>;
   using real = typename M::real;
   using vec3 = typename M::vec3;
@@ -102,7 +106,7 @@ BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<V
               const vec3 w = far ? ahead : M::face_direction(ahead, normal);
               const real omega = far ? M::far_omega : M::side_omega;
               real flux = omega * std::max(M::evaluate(sent, w), real(0));
-              if (!blocking.empty()) flux *= real(1) - std::clamp(M::evaluate(block, -w), real(0), real(1));
+              if (!blocking.empty()) flux *= M::transmitted(block, w, model == api::Blocking::projected ? 1 : 0);
               next.at(cell, c) += M::emitter(normal, flux);
             }
           }
@@ -159,7 +163,7 @@ template struct BasicGrid<glm::vec4>;
 template struct BasicGrid<glm::dvec4>;
 template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool, double);
 template GridD inject<glm::dvec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool, double);
-template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&, double);
-template GridD propagate<glm::dvec4>(const GridD&, const BasicFaceBlocking<glm::dvec4>&, double);
+template Grid propagate<glm::vec4>(const Grid&, const FaceBlocking&, double, api::Blocking);
+template GridD propagate<glm::dvec4>(const GridD&, const BasicFaceBlocking<glm::dvec4>&, double, api::Blocking);
 
 }  // namespace lpv_ref

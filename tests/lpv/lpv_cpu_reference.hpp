@@ -6,6 +6,8 @@
 // or iteration counts too large for a frame.
 #pragma once
 
+#include "api/render_request.hpp"
+
 #include <glm/glm.hpp>
 
 #include <cstddef>
@@ -71,11 +73,12 @@ BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels,
                                              glm::ivec3 dims);
 
 // One propagation iteration from `grid` (what each cell holds), with the face blocking
-// applied if given; each cell's gathered lobes have their directional terms times `transfer`
-// (1: cosine lobes; LPV_SHARPENED_TRANSFER: the sharpened transfer, lpv_sh.h).
+// applied if given (by `model`: lpv_transmitted in lpv_sh.h); each cell's gathered lobes have
+// their directional terms times `transfer` (1: cosine lobes; LPV_SHARPENED_TRANSFER: the
+// sharpened transfer, lpv_sh.h).
 template <class Vec4>
 BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<Vec4>& blocking = {},
-                          double transfer = 1.0);
+                          double transfer = 1.0, api::Blocking model = api::Blocking::projected);
 
 // The float forms most tests use.
 inline Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
