@@ -20,6 +20,10 @@ layout(constant_id = 6) const bool UNIFORM_BRANCHES = true;
 // Which of the 8 cells around a point corner k is: one step up along x, y, z for bits 0, 1, 2.
 bvec3 corner_step(uint k) { return bvec3(k & 1u, k & 2u, k & 4u); }
 
+float in_front(ivec3 cell, vec3 surface, vec3 n) {
+  return clamp(dot(vec3(cell) + 0.5 - surface, n) + 0.5, 0.0, 1.0);
+}
+
 // Corner k of set A or of set B, whichever this lane filters. Every lane shuffles both, and
 // only then chooses: a shuffle reads the value of a lane that runs it, and a lane that took
 // the other side of a branch would not.
@@ -60,7 +64,9 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   vec3 f = t - vec3(low);
   ivec3 high = min(low + 1, last);
   vec4 lobe = sh_cosine_lobe(-n);
+  vec3 surface = q - 0.5 * n;
   vec3 e = vec3(0.0);
+  float total = 0.0;
   int key = lpv_accumulated_texel(low, c, g.dims.xyz);
   int key_a = key, key_b = key;
   bool shared_cells = false;
@@ -84,19 +90,23 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     bool in_a = key == key_a;
     for (uint corner = 0u; corner < 8u; ++corner) {
       vec3 w3 = mix(1.0 - f, f, corner_step(corner));
-      e += (w3.x * w3.y * w3.z) * cell_irradiance(shared_corner(red_a, red_b, corner, in_a),
+      float w = (w3.x * w3.y * w3.z) * in_front(mix(low, high, corner_step(corner)), surface, n);
+      total += w;
+      e += w * cell_irradiance(shared_corner(red_a, red_b, corner, in_a),
                                                   shared_corner(green_a, green_b, corner, in_a),
                                                   shared_corner(blue_a, blue_b, corner, in_a), lobe);
     }
   } else {
     for (uint corner = 0u; corner < 8u; ++corner) {
       vec3 w3 = mix(1.0 - f, f, corner_step(corner));
+      float w = (w3.x * w3.y * w3.z) * in_front(mix(low, high, corner_step(corner)), surface, n);
+      total += w;
       int cell = lpv_accumulated_texel(mix(low, high, corner_step(corner)), c, g.dims.xyz);
-      e += (w3.x * w3.y * w3.z) * cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell),
+      e += w * cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell),
                                                   imageLoad(accumulated_b, cell), lobe);
     }
   }
-  return max(e, vec3(0.0)) / (g.origin.w * g.origin.w);
+  return max(e, vec3(0.0)) / (max(total, 1e-6) * g.origin.w * g.origin.w);
 }
 
 // Indirect irradiance at p: the finest cascade that holds p, handing over to the next coarser
