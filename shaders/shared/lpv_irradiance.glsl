@@ -20,6 +20,10 @@ layout(constant_id = 6) const bool UNIFORM_BRANCHES = true;
 // Which of the 8 cells around a point corner k is: one step up along x, y, z for bits 0, 1, 2.
 bvec3 corner_step(uint k) { return bvec3(k & 1u, k & 2u, k & 4u); }
 
+// The part of a cell in front of the plane through `surface` (cell units) facing n: for a
+// normal along an axis, exactly the fraction of the cell on the plane's front side. Light in a
+// cell behind a surface cannot reach its front: the cell beyond a thin wall, or the surface's
+// own cell, whose light its own blockers have partly stopped (docs/lpv.md, "Shading").
 float in_front(ivec3 cell, vec3 surface, vec3 n) {
   return clamp(dot(vec3(cell) + 0.5 - surface, n) + 0.5, 0.0, 1.0);
 }
@@ -40,9 +44,12 @@ vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
               dot(sh_nonnegative_irradiance(blue), lobe));
 }
 
-// Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units) onto a
-// surface with normal n: trilinear between cell centres, then E = <I, cosine lobe of -n> / s^2
-// (a cell's intensity per unit face area is the radiance that crosses it). q is clamped to
+// Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units, half a
+// cell in front of the surface) onto a surface with normal n: trilinear between cell centres,
+// each cell's weight times the part of it in front of the surface (in_front) and the weights
+// renormalised (they sum to at least 3/4: the cells half a cell or more in front count fully),
+// then E = <I, cosine lobe of -n> / s^2 (a cell's intensity per unit face area is the radiance
+// that crosses it). q is clamped to
 // the centres of the border cells, so the filter never mixes in the next cascade, stacked
 // above this one in the same buffers.
 //

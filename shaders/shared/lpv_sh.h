@@ -110,9 +110,10 @@ LPV_FUNC lpv_real sh_evaluate(vec4 sh, vec3 d) { return dot(sh, sh_basis(d)); }
 // over the steps along a floor or a wall removes most of the light travelling beside it, and
 // only 3/4 of the light meeting it head-on. An opaque surfel stops the fraction p |<n, w>| of
 // light along w, its area projected across w, from either side (projected, `projected` = 1):
-// |<m, w>| = 2 |band-1 part|, exact for one plane and for both sides of a thin wall (the
-// first moment of surfels facing many ways partly cancels: clutter smaller than a cell blocks
-// less than it should). Returns the fraction let through, in [0, 1].
+// |<m, w>| = 2 |band-1 part|, exact for one plane. Blockers facing opposite ways on one face
+// cancel in m (both sides of a wall thinner than a cell, where both are seen), and clutter
+// facing many ways partly: they block less than they should. Returns the fraction let
+// through, in [0, 1].
 LPV_FUNC lpv_real lpv_transmitted(vec4 b, vec3 w, lpv_real projected) {
   const lpv_real one_sided = sh_evaluate(b, -w);
   const lpv_real directional = one_sided - SH_C0 * b.x;

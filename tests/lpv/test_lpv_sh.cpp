@@ -169,4 +169,70 @@ TEST(SenderForm, EvaluatesTheShAndGivesTheFaceValues) {
   }
 }
 
+
+// Blocking: a face's blocking SH is its blockers' potentials times their cosine lobes
+// (lpv_geometry_inject.comp). Projected, one plane of potential p stops p |<n, w>| of the
+// light along w from either side: nothing that grazes it, all of p head-on. The paper's
+// one-sided lobe stops p (1/4 + 1/2 <n, -w>): a quarter grazing, 3/4 head-on, none from behind.
+TEST(Blocking, ProjectedStopsTheBlockersProjectedAreaFromEitherSide) {
+  const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 1.0f, -0.2f));
+  const float p = 0.8f;
+  const glm::vec4 b = gpu::sh_cosine_lobe(n) * p;
+  std::mt19937 rng(5);
+  std::normal_distribution<float> g(0.0f, 1.0f);
+  for (int i = 0; i < 200; ++i) {
+    const glm::vec3 w = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
+    EXPECT_NEAR(gpu::lpv_transmitted(b, w, 1.0f), 1.0f - p * std::abs(glm::dot(n, w)), 1e-5f);
+    const float one_sided = p * (0.25f + 0.5f * glm::dot(n, -w));
+    EXPECT_NEAR(gpu::lpv_transmitted(b, w, 0.0f), 1.0f - std::clamp(one_sided, 0.0f, 1.0f), 1e-5f);
+  }
+  const glm::vec3 grazing = glm::normalize(glm::cross(n, glm::vec3(1, 0, 0)));
+  EXPECT_NEAR(gpu::lpv_transmitted(b, grazing, 1.0f), 1.0f, 1e-6f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, grazing, 0.0f), 1.0f - p / 4.0f, 1e-6f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, -n, 1.0f), 1.0f - p, 1e-6f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, n, 1.0f), 1.0f - p, 1e-6f) << "from behind, as an opaque surface";
+  EXPECT_NEAR(gpu::lpv_transmitted(b, -n, 0.0f), 1.0f - 0.75f * p, 1e-6f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, n, 0.0f), 1.0f, 1e-6f);
+  // The first moment of blockers facing opposite ways cancels (a limit, docs/lpv.md); more
+  // than a face's worth of one plane stops everything.
+  const glm::vec4 wall = gpu::sh_cosine_lobe(glm::vec3(1, 0, 0)) + gpu::sh_cosine_lobe(glm::vec3(-1, 0, 0));
+  EXPECT_NEAR(gpu::lpv_transmitted(wall * 0.5f, glm::vec3(1, 0, 0), 1.0f), 1.0f, 1e-6f) << "the first moments cancel";
+  EXPECT_EQ(gpu::lpv_transmitted(gpu::sh_cosine_lobe(glm::vec3(1, 0, 0)) * 3.0f, glm::vec3(1, 0, 0), 1.0f), 0.0f);
+}
+
+// Shading reads each cell's SH made nowhere negative: its irradiance onto any surface is >= 0,
+// an SH already so is unchanged, and the constant term (the flux) is kept.
+TEST(ShNonnegativeIrradiance, NoDirectionGetsNegativeLightAndTheFluxIsKept) {
+  std::mt19937 rng(9);
+  std::normal_distribution<float> g(0.0f, 1.0f);
+  int changed = 0;
+  for (int i = 0; i < 500; ++i) {
+    const glm::vec4 s(std::abs(g(rng)), g(rng), g(rng), g(rng));
+    const glm::vec4 kept = gpu::sh_nonnegative_irradiance(s);
+    EXPECT_EQ(kept.x, s.x);
+    // Random directions, and the one the band-1 vector points away from, where it is least.
+    float least = 1e30f, least_before = 1e30f;
+    for (int j = 0; j <= 200; ++j) {
+      const glm::vec3 n = j < 200 ? glm::normalize(glm::vec3(g(rng), g(rng), g(rng)))
+                                  : glm::normalize(glm::vec3(s.w, s.y, -s.z));
+      least = std::min(least, glm::dot(kept, gpu::sh_cosine_lobe(n)));
+      least_before = std::min(least_before, glm::dot(s, gpu::sh_cosine_lobe(n)));
+    }
+    EXPECT_GE(least, -1e-5f * s.x);
+    if (least_before >= 0.0f) {
+      EXPECT_EQ(kept, s);
+    }
+    changed += kept != s;
+  }
+  EXPECT_GT(changed, 100) << "many of the random SH need it";
+  // A hemisphere above a lit plane, I = A (1 + 3/2 <up, w>), is the limit: it lights the plane
+  // with exactly zero, and stays as it is.
+  const glm::vec4 hemisphere(1.0f / gpu::SH_C0, -1.5f / gpu::SH_C1, 0.0f, 0.0f);
+  EXPECT_NEAR(glm::dot(gpu::sh_nonnegative_irradiance(hemisphere), gpu::sh_cosine_lobe(glm::vec3(0, -1, 0))), 0.0f,
+              1e-5f);
+  const glm::vec4 beam = hemisphere * glm::vec4(1, 2, 2, 2);
+  EXPECT_NEAR(glm::length(gpu::sh_nonnegative_irradiance(beam) - hemisphere), 0.0f, 1e-5f);
+  EXPECT_EQ(gpu::sh_nonnegative_irradiance(glm::vec4(-1, 1, 0, 0)), glm::vec4(0.0f));
+}
+
 }  // namespace

@@ -24,9 +24,11 @@ class IndirectLookup : public gpu_test::GpuTest {};
 
 constexpr std::uint32_t kSize = 256;
 
-// Irradiance at p (normal n) from one cascade (its accumulated light `grid`), as
-// cascade_irradiance computes it: trilinear between cell centres (clamped to the border
-// cells' centres), then <I, cosine lobe of -n> / s^2.
+// Irradiance at p (normal n) from one cascade (its accumulated light `grid`, p + s/2 n at q),
+// as cascade_irradiance computes it: trilinear between cell centres (clamped to the border
+// cells' centres), each cell weighted again by the part of it in front of the surface's plane
+// and the weights renormalised, each cell's SH made nowhere negative, then <I, cosine lobe of
+// -n> / s^2.
 glm::dvec3 cascade_irradiance(const renderer::LpvSnapshot::Cascade& c, const lpv_ref::GridD& grid, glm::dvec3 q,
                               glm::dvec3 n) {
   const glm::dvec3 t = glm::clamp(q - 0.5, glm::dvec3(0.0), glm::dvec3(grid.dims - 1));
@@ -34,15 +36,19 @@ glm::dvec3 cascade_irradiance(const renderer::LpvSnapshot::Cascade& c, const lpv
   const glm::dvec3 f = t - glm::dvec3(low);
   const glm::ivec3 high = glm::min(low + 1, grid.dims - 1);
   const glm::dvec4 lobe = gpu_double::sh_cosine_lobe(-n);
+  const glm::dvec3 surface = q - 0.5 * n;
   glm::dvec3 e(0.0);
+  double total = 0.0;
   for (unsigned corner = 0; corner < 8; ++corner) {
     const glm::bvec3 up(corner & 1u, corner & 2u, corner & 4u);
     const glm::ivec3 cell(up.x ? high.x : low.x, up.y ? high.y : low.y, up.z ? high.z : low.z);
-    const double w = (up.x ? f.x : 1.0 - f.x) * (up.y ? f.y : 1.0 - f.y) * (up.z ? f.z : 1.0 - f.z);
-    for (int k = 0; k < 3; ++k) e[k] += w * glm::dot(grid.at(cell, k), lobe);
+    const double in_front = std::clamp(glm::dot(glm::dvec3(cell) + 0.5 - surface, n) + 0.5, 0.0, 1.0);
+    const double w = (up.x ? f.x : 1.0 - f.x) * (up.y ? f.y : 1.0 - f.y) * (up.z ? f.z : 1.0 - f.z) * in_front;
+    total += w;
+    for (int k = 0; k < 3; ++k) e[k] += w * glm::dot(gpu_double::sh_nonnegative_irradiance(grid.at(cell, k)), lobe);
   }
   const double s = c.cell_size;
-  return glm::max(e, glm::dvec3(0.0)) / (s * s);
+  return glm::max(e, glm::dvec3(0.0)) / (std::max(total, 1e-6) * s * s);
 }
 
 // Irradiance at p as indirect_irradiance computes it: the finest cascade holding p + s/2 n,
