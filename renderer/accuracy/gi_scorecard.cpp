@@ -71,8 +71,12 @@ SceneScore score_request(Workbench& bench, api::RenderRequest request, const Sco
   const image::Mask& interior = truth.interior_mask;
   score.relative_noise = truth.relative_noise;
 
-  score.gain = ratio(image::compare_images(final_image, truth.final_image, interior).rmse,
-                     image::compare_images(off_image, truth.final_image, interior).rmse);
+  const double off_rmse = image::compare_images(off_image, truth.final_image, interior).rmse;
+  score.gain = ratio(image::compare_images(final_image, truth.final_image, interior).rmse, off_rmse);
+  image::RgbaF32Image with_true_indirect = direct;
+  for (std::size_t i = 0; i < with_true_indirect.pixels.size(); ++i)
+    if (i % 4 != 3) with_true_indirect.pixels[i] += truth.indirect.pixels[i];
+  score.best_gain = ratio(image::compare_images(with_true_indirect, truth.final_image, interior).rmse, off_rmse);
   const auto everywhere = [](std::uint32_t, std::uint32_t) { return true; };
   const double our_indirect = masked_mean(indirect, interior, everywhere);
   score.indirect_ratio = ratio(our_indirect, masked_mean(truth.indirect, interior, everywhere));

@@ -22,6 +22,10 @@ struct SceneScore {
   // RMSE of the final image over that of the same request with LPV off: below 1 the indirect
   // light helps, 0 would be the truth.
   double gain = 0.0;
+  // The gain if the indirect light were the reference's own, added to the render's direct
+  // light: the least gain any indirect light could reach, set by the direct light's error
+  // (shadow edges a pixel's one sample cuts where the reference's many average).
+  double best_gain = 0.0;
   // Mean indirect light over the reference's (NaN where the reference has none).
   double indirect_ratio = 0.0;
   // Mean indirect light over mean direct light, both the render's (the lone plane's measure).
