@@ -300,9 +300,12 @@ TEST_F(Invariants, LightLeakingThroughAThinWallIsMeasuredAndBounded) {
     // The wall is a sixth of a cell (about 13 cm at 32^3): the grid cannot separate the rooms
     // within a cell of it, so some light crosses whatever occlusion does. Occlusion may only
     // reduce that, and it must stay a small share of the lit room's light.
-    // Measured: 0.0018 sharpened, 0.0176 cosine (whose lobes carry more light sideways).
+    // Measured: 0.0089 sharpened, 0.0162 cosine (whose lobes carry more light sideways). The
+    // sharpened transfer leaked 0.0018 with the one-sided lobe's blocking and the plain lookup:
+    // the lobe blocked much of the light travelling beside the floor and the wall, and negative
+    // lobes cancelled some of what crossed (docs/lpv.md, "Blocking" and "Shading").
     EXPECT_LE(occluded, open);
-    EXPECT_LT(occluded, transfer == api::Transfer::sharpened ? 0.005 : 0.03);
+    EXPECT_LT(occluded, transfer == api::Transfer::sharpened ? 0.012 : 0.03);
   }
 }
 
