@@ -22,8 +22,8 @@ using namespace reader;
 constexpr std::array<std::string_view, 3> reference_keys{"samples", "bounces", "seed"};
 constexpr std::array<std::string_view, 5> compare_keys{"base", "against", "reference", "mask", "heatmap_scale"};
 constexpr std::array<std::string_view, 6> sweep_keys{"base", "parameters", "lpv_off_row", "reference", "axis", "mask"};
-constexpr std::array<std::string_view, 8> parameter_keys{"grid",           "iterations", "cascades",  "rsm",
-                                                         "vpl_downsample", "bounces",    "occlusion", "transfer"};
+constexpr std::array<std::string_view, 9> parameter_keys{"grid",      "iterations", "cascades", "rsm",     "vpl_downsample",
+                                                         "bounces",   "occlusion",  "transfer", "blocking"};
 constexpr std::array<std::string_view, 2> axis_keys{"image", "metric"};
 constexpr std::array masks{MetricMask::all, MetricMask::surfaces, MetricMask::interior};
 constexpr std::array sweep_images{SweepImage::final_, SweepImage::indirect};
@@ -84,6 +84,7 @@ SweepParameters read_parameters(const Field& f) {
   if (auto v = obj.get("bounces")) p.bounces = read_values<std::uint32_t>(*v, uint_in(1, limits::max_bounces));
   if (auto v = obj.get("occlusion")) p.occlusion = read_values<bool>(*v, as_bool);
   if (auto v = obj.get("transfer")) p.transfer = read_values<Transfer>(*v, read_transfer);
+  if (auto v = obj.get("blocking")) p.blocking = read_values<Blocking>(*v, read_blocking);
   return p;
 }
 
@@ -106,6 +107,7 @@ SweepSettings settings_of(const Lpv& lpv) {
   s.bounces = lpv.bounces;
   s.occlusion = lpv.occlusion;
   s.transfer = lpv.transfer;
+  s.blocking = lpv.blocking;
   return s;
 }
 
@@ -116,7 +118,8 @@ void check_configurations(const SweepRequest& sweep) {
   for (const std::size_t n : {sweep.parameters.grid.size(), sweep.parameters.iterations.size(),
                               sweep.parameters.cascades.size(), sweep.parameters.rsm.size(),
                               sweep.parameters.vpl_downsample.size(), sweep.parameters.bounces.size(),
-                              sweep.parameters.occlusion.size(), sweep.parameters.transfer.size()})
+                              sweep.parameters.occlusion.size(), sweep.parameters.transfer.size(),
+                              sweep.parameters.blocking.size()})
     combinations *= std::max<std::size_t>(n, 1);
   count += combinations;
   if (count > limits::max_sweep_configurations)
@@ -204,6 +207,7 @@ std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep) {
   vary(p.bounces, [](SweepSettings& s, std::uint32_t v) { s.bounces = v; });
   vary(p.occlusion, [](SweepSettings& s, bool v) { s.occlusion = v; });
   vary(p.transfer, [](SweepSettings& s, Transfer v) { s.transfer = v; });
+  vary(p.blocking, [](SweepSettings& s, Blocking v) { s.blocking = v; });
   configurations.insert(configurations.end(), grid.begin(), grid.end());
   return configurations;
 }
@@ -220,6 +224,7 @@ RenderRequest request_for(const RenderRequest& base, const SweepSettings& settin
   lpv.bounces = settings.bounces;
   lpv.occlusion = settings.occlusion;
   lpv.transfer = settings.transfer;
+  lpv.blocking = settings.blocking;
   return request;
 }
 

@@ -48,6 +48,7 @@ struct SweepParameters {
   std::vector<std::uint32_t> bounces;
   std::vector<bool> occlusion;
   std::vector<Transfer> transfer;
+  std::vector<Blocking> blocking;
 };
 
 // A sweep times each row's frame this many times unless its base says otherwise: the fewest

@@ -98,7 +98,6 @@ constexpr std::array<Keys, 17> lpv_keys{"enabled",   "grid",      "cascades",   
                                         "injection", "injection_offset", "transfer", "intensity", "convergence",
                                         "origin", "extent"};
 constexpr std::array injections{Injection::trilinear, Injection::nearest};
-constexpr std::array blockings{Blocking::projected, Blocking::sh_lobe};
 constexpr std::string_view occlusion_source_rsm = "rsm";
 constexpr std::string_view occlusion_source_camera = "camera";
 
@@ -250,6 +249,10 @@ Transfer reader::read_transfer(const Field& f) {
   return as_enum(f, std::array{Transfer::sharpened, Transfer::cosine});
 }
 
+Blocking reader::read_blocking(const Field& f) {
+  return as_enum(f, std::array{Blocking::projected, Blocking::sh_lobe});
+}
+
 namespace {
 
 Lpv read_lpv(const Field& f) {
@@ -268,7 +271,7 @@ Lpv read_lpv(const Field& f) {
   }
   if (auto v = obj.get("occlusion")) lpv.occlusion = as_bool(*v);
   if (auto v = obj.get("occlusion_sources")) read_occlusion_sources(*v, lpv);
-  if (auto v = obj.get("blocking")) lpv.blocking = as_enum(*v, blockings);
+  if (auto v = obj.get("blocking")) lpv.blocking = read_blocking(*v);
   if (auto v = obj.get("bounces")) lpv.bounces = as_uint<std::uint32_t>(*v, 1, limits::max_bounces);
   if (auto v = obj.get("injection")) lpv.injection = as_enum(*v, injections);
   if (auto v = obj.get("transfer")) lpv.transfer = read_transfer(*v);

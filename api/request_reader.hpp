@@ -18,5 +18,7 @@ glm::uvec3 read_grid(const Field& f);
 std::uint32_t read_vpl_downsample(const Field& f);
 // "transfer": "sharpened" or "cosine".
 Transfer read_transfer(const Field& f);
+// "blocking": "projected" or "sh_lobe".
+Blocking read_blocking(const Field& f);
 
 }  // namespace api::reader

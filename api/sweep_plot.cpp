@@ -112,7 +112,7 @@ std::string settings_text(const SweepSettings& s) {
          ", " + count_of(s.iterations, "iteration") + ", " + count_of(s.cascades, "cascade") + ", RSM " +
          std::to_string(s.rsm) + ", VPL downsample " + std::to_string(s.vpl_downsample) + ", " +
          count_of(s.bounces, "bounce") + ", occlusion " + (s.occlusion ? "on" : "off") + ", transfer " +
-         to_string(s.transfer);
+         to_string(s.transfer) + ", blocking " + to_string(s.blocking);
 }
 
 std::string tooltip(const SweepRow& row, double error, const ParetoAxis& axis) {

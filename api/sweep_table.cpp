@@ -78,7 +78,7 @@ std::vector<std::string> pass_names(const std::vector<SweepRow>& rows) {
 
 std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
   std::vector<std::string> header = {"lpv",      "grid_x", "grid_y",         "grid_z",  "iterations",
-                                     "cascades", "rsm",    "vpl_downsample", "bounces", "occlusion", "transfer",
+                                     "cascades", "rsm",    "vpl_downsample", "bounces", "occlusion", "transfer", "blocking",
                                      "frames",   "gpu_ms", "gpu_ms_min",     "gpu_ms_max", "wall_ms"};
   for (const char* image : {"final_", "indirect_"}) {
     for (const auto& [name, field] : error_fields) header.push_back(std::string(image) + name);
@@ -103,6 +103,7 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
                                      std::to_string(s.bounces),
                                      bool_text(s.occlusion),
                                      to_string(s.transfer),
+                                     to_string(s.blocking),
                                      std::to_string(row.frames),
                                      number_text(row.gpu_ms),
                                      number_text(row.gpu_ms_range.first),
@@ -145,7 +146,8 @@ json settings_json(const SweepSettings& s) {
           {"vpl_downsample", s.vpl_downsample},
           {"bounces", s.bounces},
           {"occlusion", s.occlusion},
-          {"transfer", to_string(s.transfer)}};
+          {"transfer", to_string(s.transfer)},
+          {"blocking", to_string(s.blocking)}};
 }
 
 }  // namespace

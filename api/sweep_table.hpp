@@ -24,6 +24,7 @@ struct SweepSettings {
   std::uint32_t iterations = 8, cascades = 1, rsm = 256, vpl_downsample = 1, bounces = 1;
   bool occlusion = true;
   Transfer transfer = Transfer::sharpened;
+  Blocking blocking = Blocking::projected;
 };
 
 struct PassTime {
@@ -88,7 +89,7 @@ void mark_pareto(SweepTable& table);
 
 // RFC 4180 (CRLF line ends, fields with a comma, quote or line break quoted): a header and
 // one line per row with every field of the row: lpv, grid_x, grid_y, grid_z, iterations,
-// cascades, rsm, vpl_downsample, bounces, occlusion, transfer, frames, gpu_ms, gpu_ms_min,
+// cascades, rsm, vpl_downsample, bounces, occlusion, transfer, blocking, frames, gpu_ms, gpu_ms_min,
 // gpu_ms_max, wall_ms, final_<metric> and indirect_<metric> for every ErrorMetrics field,
 // pareto, pareto_uncertain, then one "<pass>_gpu_ms" column
 // per pass name (the union over the rows, in pipeline order; empty where the pass did not
@@ -98,7 +99,7 @@ void mark_pareto(SweepTable& table);
 std::string to_csv(const SweepTable& table);
 
 // {"settings": {"lpv", "grid": [x, y, z], "iterations", "cascades", "rsm", "vpl_downsample",
-//  "bounces", "occlusion", "transfer"}, "passes": [{"name", "gpu_ms"}], "frames", "gpu_ms",
+//  "bounces", "occlusion", "transfer", "blocking"}, "passes": [{"name", "gpu_ms"}], "frames", "gpu_ms",
 //  "gpu_ms_range": [min, max], "wall_ms", "final_error": {every ErrorMetrics field},
 //  "indirect_error": {...}, "pareto", "pareto_uncertain"}.
 // JSON has no infinity or NaN: a non-finite number (e.g. psnr_db of identical images, +inf)

@@ -135,7 +135,7 @@ export class SweepPanel {
     if (!settings.lpv) return this.state.setAll({ 'lpv.enabled': false });
     const cubic = settings.grid.every((cells) => cells === settings.grid[0]);
     const values = { 'lpv.enabled': true, 'lpv.grid': cubic ? settings.grid[0] : settings.grid };
-    for (const name of ['iterations', 'cascades', 'rsm', 'vpl_downsample', 'bounces', 'occlusion', 'transfer'])
+    for (const name of ['iterations', 'cascades', 'rsm', 'vpl_downsample', 'bounces', 'occlusion', 'transfer', 'blocking'])
       values[`lpv.${name}`] = settings[name];
     this.state.setAll(values);
   }

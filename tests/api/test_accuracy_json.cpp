@@ -102,6 +102,16 @@ TEST(SweepRequest, VariesTheTransferToCompareTheMethods) {
   EXPECT_EQ(rows[4].grid[0], 16u);
 }
 
+TEST(SweepRequest, VariesTheBlockingToCompareTheModels) {
+  const api::SweepRequest s =
+      api::parse_sweep_request(R"({"base": {}, "parameters": {"blocking": ["sh_lobe", "projected"]}})");
+  const auto rows = api::sweep_configurations(s);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].blocking, api::Blocking::projected);  // the LPV-off row keeps the base's
+  EXPECT_EQ(api::request_for(s.base, rows[1]).lpv.blocking, api::Blocking::sh_lobe);
+  EXPECT_EQ(api::request_for(s.base, rows[2]).lpv.blocking, api::Blocking::projected);
+}
+
 TEST(SweepRequest, KeepsAPlanTheBaseAsksFor) {
   EXPECT_EQ(api::parse_sweep_request(R"({"base": {"plan": "auto"}})").base.plan, api::PlanMode::auto_);
   const auto rows = api::sweep_configurations(api::parse_sweep_request(R"({"base": {}, "lpv_off_row": false})"));
@@ -119,6 +129,8 @@ TEST(SweepRequest, ErrorsNameTheirField) {
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"occlusion": [1]}})"), "parameters.occlusion[0]");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"transfer": ["cosine", "narrow"]}})"),
             "parameters.transfer[1]");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"blocking": ["two_sided"]}})"),
+            "parameters.blocking[0]");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"speed": [1]}})"), "parameters.speed");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "axis": {"metric": "psnr"}})"), "axis.metric");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {"output": {"width": 0}}})"), "base.output.width");

@@ -199,7 +199,8 @@ TEST(ParseRequest, ReadsEveryField) {
     "shadows": {"enabled": false, "resolution": 2048},
     "lpv": {"enabled": false, "grid": [16, 8, 4], "cascades": 3, "iterations": 0, "rsm": 64, "vpl_downsample": 4,
             "occlusion": false, "occlusion_sources": ["camera"], "bounces": 2, "injection": "nearest",
-            "injection_offset": 0.25, "transfer": "cosine", "intensity": 2.5, "origin": [-1, 0, -1], "extent": 2},
+            "injection_offset": 0.25, "transfer": "cosine", "blocking": "sh_lobe", "intensity": 2.5,
+            "origin": [-1, 0, -1], "extent": 2},
     "repeat": 10
   })");
   EXPECT_EQ(r.scene, "sponza_v2.1");
@@ -251,6 +252,7 @@ TEST(ParseRequest, ReadsEveryField) {
   EXPECT_EQ(r.lpv.injection, api::Injection::nearest);
   EXPECT_EQ(r.lpv.injection_offset, 0.25f);
   EXPECT_EQ(r.lpv.transfer, api::Transfer::cosine);
+  EXPECT_EQ(r.lpv.blocking, api::Blocking::sh_lobe);
   EXPECT_EQ(r.lpv.intensity, 2.5f);
   EXPECT_EQ(r.lpv.origin, glm::vec3(-1, 0, -1));
   EXPECT_EQ(r.lpv.extent, 2.0f);
@@ -469,6 +471,7 @@ std::vector<BadRequest> bad_requests() {
       {R"({"lpv": {"bounces": 3}})", "lpv.bounces"},
       {R"({"lpv": {"injection_offset": -0.1}})", "lpv.injection_offset"},
       {R"({"lpv": {"transfer": "narrow"}})", "lpv.transfer"},
+      {R"({"lpv": {"blocking": "two_sided"}})", "lpv.blocking"},
       {R"({"lpv": {"injection": "bilinear"}})", "lpv.injection"},
       {R"({"lpv": {"injection_offset": 2.5}})", "lpv.injection_offset"},
       {R"({"lpv": {"intensity": -1}})", "lpv.intensity"},

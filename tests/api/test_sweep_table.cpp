@@ -222,7 +222,7 @@ TEST(SweepCsv, HeaderHasEveryFieldOfTheRow) {
       "lpv",                     "grid_x",                   "grid_y",
       "grid_z",                  "iterations",               "cascades",
       "rsm",                     "vpl_downsample",           "bounces",
-      "occlusion",               "transfer",                 "frames",
+      "occlusion",               "transfer",                 "blocking",                 "frames",
       "gpu_ms",                  "gpu_ms_min",               "gpu_ms_max",               "wall_ms",
       "final_rmse",              "final_relative_mse",       "final_psnr_db",
       "final_ssim",              "final_mean_abs_error",     "final_max_abs_error",
@@ -235,7 +235,7 @@ TEST(SweepCsv, HeaderHasEveryFieldOfTheRow) {
 
 TEST(SweepCsv, OneLinePerRowWithItsValues) {
   api::SweepRow r;
-  r.settings = {true, {16, 24, 48}, 12, 2, 512, 4, 2, false, api::Transfer::cosine};
+  r.settings = {true, {16, 24, 48}, 12, 2, 512, 4, 2, false, api::Transfer::cosine, api::Blocking::sh_lobe};
   r.frames = 3;
   r.gpu_ms = 0.1;
   r.gpu_ms_range = {0.09, 0.125};
@@ -251,7 +251,7 @@ TEST(SweepCsv, OneLinePerRowWithItsValues) {
   for (const auto& record : csv) EXPECT_EQ(record.size(), csv[0].size());
   EXPECT_EQ(csv[1], (std::vector<std::string>{"true",  "16",     "24",    "48",      "12",
                                               "2",     "512",    "4",     "2",       "false",
-                                              "cosine", "3", "0.1", "0.09", "0.125", "0.3333333333333333",         "0.25",
+                                              "cosine", "sh_lobe", "3", "0.1", "0.09", "0.125", "0.3333333333333333",         "0.25",
                                               "0.5",   "31.5",   "0.875", "0.125",   "2",
                                               "-0.0625", "262144", "1.25", "1.5",    "inf",
                                               "0.75",  "1.125",  "3",     "nan",     "7",
@@ -316,7 +316,8 @@ TEST(SweepJson, EveryFieldWithItsValue) {
   r.pareto = true;
   const json expected = json::parse(R"({
     "settings": {"lpv": false, "grid": [16, 24, 48], "iterations": 12, "cascades": 2, "rsm": 512,
-                 "vpl_downsample": 4, "bounces": 2, "occlusion": false, "transfer": "sharpened"},
+                 "vpl_downsample": 4, "bounces": 2, "occlusion": false, "transfer": "sharpened",
+                 "blocking": "projected"},
     "passes": [{"name": "shadow", "gpu_ms": 0.125}, {"name": "shade", "gpu_ms": 0.5}],
     "frames": 5, "gpu_ms": 0.625, "gpu_ms_range": [0.5, 0.75], "wall_ms": 2.5,
     "final_error": {"rmse": 0.25, "relative_mse": 0.5, "psnr_db": 31.5, "ssim": 0.875, "mean_abs_error": 0.125,
@@ -542,7 +543,7 @@ TEST(SweepSvg, TooltipsListSettingsTimeAndError) {
   api::mark_pareto(table);
   const std::string svg = api::to_svg_plot(table, "t");
   EXPECT_NE(svg.find("<title>LPV 16x24x48, 12 iterations, 2 cascades, RSM 512, VPL downsample 4, 1 bounce, "
-                     "occlusion off, transfer sharpened\nGPU 2.5 ms per frame (wall 4 ms)\nRMSE (final): 0.0125\non the Pareto front"
+                     "occlusion off, transfer sharpened, blocking projected\nGPU 2.5 ms per frame (wall 4 ms)\nRMSE (final): 0.0125\non the Pareto front"
                      "</title>"),
             std::string::npos)
       << svg;

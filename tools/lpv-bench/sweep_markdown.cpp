@@ -40,9 +40,9 @@ std::string sweep_markdown(const api::SweepTable& table, const api::ReferenceRep
         number(reference.build_ms + reference.trace_ms, "%.0f") + " ms, noise RMSE " +
         number(reference.noise_rmse, "%.3g") + " (" + number(100.0 * reference.relative_noise, "%.2g") +
         "% of its mean indirect light).\n\n";
-  md += "| LPV | grid | iterations | cascades | RSM | VPL downsample | bounces | occlusion | transfer | GPU ms | "
-        "final RMSE | final rel. MSE | final SSIM | indirect RMSE | indirect bias | Pareto |\n";
-  md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  md += "| LPV | grid | iterations | cascades | RSM | VPL downsample | bounces | occlusion | transfer | blocking | "
+        "GPU ms | final RMSE | final rel. MSE | final SSIM | indirect RMSE | indirect bias | Pareto |\n";
+  md += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const api::SweepRow& row : table.rows) {
     const api::SweepSettings& s = row.settings;
     const auto lpv_only = [&](const std::string& text) { return s.lpv ? text : std::string("–"); };
@@ -50,7 +50,7 @@ std::string sweep_markdown(const api::SweepTable& table, const api::ReferenceRep
           lpv_only(std::to_string(s.iterations)) + " | " + lpv_only(std::to_string(s.cascades)) + " | " +
           lpv_only(std::to_string(s.rsm)) + " | " + lpv_only(std::to_string(s.vpl_downsample)) + " | " +
           lpv_only(std::to_string(s.bounces)) + " | " + lpv_only(s.occlusion ? "on" : "off") + " | " +
-          lpv_only(api::to_string(s.transfer)) + " | " +
+          lpv_only(api::to_string(s.transfer)) + " | " + lpv_only(api::to_string(s.blocking)) + " | " +
           gpu_text(row) + " | " + number(row.final_error.rmse, "%.4g") + " | " +
           number(row.final_error.relative_mse, "%.4g") + " | " + number(row.final_error.ssim, "%.4f") + " | " +
           number(row.indirect_error.rmse, "%.4g") + " | " + number(row.indirect_error.mean_signed_error, "%+.3g") +
