@@ -28,7 +28,8 @@ ms() { awk '{printf "%.1f ms", $1 * 1000}'; }
 cache_bytes() { curl -s "$base/metrics" | awk '/^lpv_scene_cache_bytes/ {print $2}'; }
 
 echo "== $(basename "$file"), ${size}x${size}, LPV on (the default request)"
-upload=$(curl -s -o "$work/scene.json" -w '%{time_total}' -X POST --data-binary @"$file" "$base/v1/scenes")
+upload=$(curl -s -o "$work/scene.json" -w '%{time_total}' -H 'Content-Type: application/octet-stream' \
+  --data-binary @"$file" "$base/v1/scenes")
 id=$(sed -n 's/.*"id":"\([0-9a-f]*\)".*/\1/p' "$work/scene.json")
 [ -n "$id" ] || { echo "upload refused: $(cat "$work/scene.json")"; exit 1; }
 echo "upload (parse, validate, store): $(echo "$upload" | ms)"

@@ -2,6 +2,7 @@
 
 #include <arpa/inet.h>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace server {
@@ -39,6 +40,51 @@ bool is_loopback_host(std::string_view host) {
   in6_addr v6{};
   if (inet_pton(AF_INET6, text.c_str(), &v6) == 1) return IN6_IS_ADDR_LOOPBACK(&v6);
   return false;
+}
+
+std::string authority_host(std::string_view authority) {
+  std::string_view host = authority;
+  if (host.starts_with('[')) {  // an IPv6 literal: [::1]:8080
+    const auto close = host.find(']');
+    if (close == std::string_view::npos) return {};
+    const std::string_view rest = host.substr(close + 1);
+    if (!rest.empty() && !rest.starts_with(':')) return {};
+    host = host.substr(1, close - 1);
+  } else if (const auto colon = host.rfind(':'); colon != std::string_view::npos) {
+    if (host.find(':') != colon) return {};  // a bare IPv6 address is no authority
+    host = host.substr(0, colon);
+  }
+  std::string lower(host);
+  for (char& c : lower) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+  return lower;
+}
+
+std::string origin_authority(std::string_view origin) {
+  const auto scheme_end = origin.find("://");
+  if (scheme_end == std::string_view::npos || scheme_end == 0) return {};
+  const std::string_view authority = origin.substr(scheme_end + 3);
+  if (authority.empty() || authority.find_first_of("/?#@ ") != std::string_view::npos) return {};
+  std::string lower(authority);
+  for (char& c : lower) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+  return lower;
+}
+
+HostPolicy::HostPolicy(std::vector<std::string> allowed) {
+  for (std::string& name : allowed) {
+    if (name == "*") {
+      any_ = true;
+      continue;
+    }
+    for (char& c : name) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+    allowed_.push_back(std::move(name));
+  }
+}
+
+bool HostPolicy::allows(std::string_view host) const {
+  if (any_) return true;
+  const std::string name = authority_host(host);
+  if (name.empty()) return false;
+  return is_loopback_host(name) || std::find(allowed_.begin(), allowed_.end(), name) != allowed_.end();
 }
 
 }  // namespace server

@@ -75,6 +75,27 @@ std::optional<std::string> read_body(const httplib::Request& request, httplib::R
   return body;
 }
 
+bool media_type_accepted(const httplib::Request& request, httplib::Response& response,
+                         std::span<const std::string_view> types) {
+  const bool typed = request.has_header("Content-Type");
+  const bool no_body = !request.has_header("Transfer-Encoding") &&
+                       (!request.has_header("Content-Length") || request.get_header_value("Content-Length") == "0");
+  if (!typed && no_body) return true;
+  const std::string value = request.get_header_value("Content-Type");
+  std::string type = value.substr(0, value.find(';'));
+  type.erase(std::remove_if(type.begin(), type.end(), [](char c) { return c == ' ' || c == '\t'; }), type.end());
+  for (char& c : type) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+  if (std::find(types.begin(), types.end(), type) != types.end()) return true;
+  std::string listed;
+  for (const std::string_view t : types) listed += (listed.empty() ? "" : ", ") + std::string(t);
+  send_error(response, {415, "unsupported_media_type",
+                        (typed ? "a body of type '" + value + "'" : std::string("a body without a Content-Type")) +
+                            " is not read here: send it as " + listed,
+                        ""});
+  response.set_header("Accept-Post", listed);
+  response.set_header("Connection", "close");  // the body is left unread
+  return false;
+}
 
 Clock::time_point request_arrival() {
   return Clock::now() - std::chrono::duration_cast<Clock::duration>(

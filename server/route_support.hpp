@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -49,6 +50,18 @@ std::optional<std::string> read_body(const httplib::Request& request, httplib::R
                                      const httplib::ContentReader& content, const ServerOptions& options,
                                      std::size_t limit, const char* flag);
 
+// The media types a route reads: its body must carry one (type/subtype, any case, any
+// parameters), else 415 with Accept-Post listing them, decided from the headers before any
+// of the body is read (the connection then closes). A request with no body and no
+// Content-Type passes (an empty render is "{}"). The three types a web page may send
+// elsewhere without asking first (text/plain, forms) are none of them, so no other site's
+// page can make a browser post here (docs/server.md, "Cross-site requests").
+inline constexpr std::string_view kJsonMediaTypes[] = {"application/json"};
+inline constexpr std::string_view kSceneMediaTypes[] = {"model/gltf-binary", "model/gltf+json", "application/json",
+                                                        "application/octet-stream"};
+bool media_type_accepted(const httplib::Request& request, httplib::Response& response,
+                         std::span<const std::string_view> types);
+
 // The server's deadline for this kind of work, shortened by the client's X-Deadline-Ms;
 // throws api::RequestError for a malformed header.
 std::chrono::milliseconds deadline_for(const httplib::Request& request, std::chrono::milliseconds server_deadline);
@@ -76,6 +89,7 @@ std::optional<AcceptedRequest<Request>> accept_request(const httplib::Request& r
                                                        Request (*parse)(std::string_view),
                                                        std::chrono::milliseconds server_deadline,
                                                        Unservable unservable) {
+  if (!media_type_accepted(request, response, kJsonMediaTypes)) return std::nullopt;
   const std::optional<std::string> body =
       read_body(request, response, content, service.options, service.options.max_body_bytes, "--max-body-bytes");
   if (!body) return std::nullopt;

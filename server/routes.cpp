@@ -32,11 +32,12 @@ struct Route {
   const char* methods;  // the methods it answers, as Allow lists them; others get 405
   bool open = false;    // answered without the token: probes, and the web page, which holds no
                         // data (the API calls it makes carry the token; it asks for it on a 401)
+  bool probe = false;   // answered whatever the Host: orchestrators probe by address
 };
 
 constexpr std::array kRoutes = {
-    Route{"/healthz", "/healthz", "GET", true},
-    Route{"/readyz", "/readyz", "GET", true},
+    Route{"/healthz", "/healthz", "GET", true, true},
+    Route{"/readyz", "/readyz", "GET", true, true},
     Route{"/metrics", "/metrics", "GET"},
     Route{"/v1/scenes", "/v1/scenes", "GET, POST"},
     Route{"/v1/scenes/([^/]+)", "/v1/scenes/{id}", "GET, DELETE"},
@@ -143,6 +144,7 @@ void handle_upload(const httplib::Request& request, httplib::Response& response,
     send_error(response, parse_error(e));
     return;
   }
+  if (!media_type_accepted(request, response, kSceneMediaTypes)) return;
   const std::optional<std::string> body =
       read_body(request, response, content, service.options, service.options.max_scene_bytes, "--max-scene-bytes");
   if (!body) return;
@@ -231,6 +233,47 @@ void install_method_not_allowed(httplib::Server& http, const Route& route) {
   http.Options(route.regex, refuse);
 }
 
+bool changes_state(const std::string& method) {
+  return method == "POST" || method == "PUT" || method == "PATCH" || method == "DELETE";
+}
+
+// What a web page elsewhere must not make a browser do here (docs/server.md, "Cross-site
+// requests"): without a token, be answered under a name that is not this server's (a
+// DNS-rebinding page reads the answers: 421); ever, change state from another origin (403).
+// Requests without Host or Origin come from no browser and pass.
+std::optional<HttpError> cross_site_refusal(const httplib::Request& request, const Service& service,
+                                            const HostPolicy& hosts) {
+  const std::string host = request.get_header_value("Host");
+  if (service.options.token.empty() && request.has_header("Host") && !hosts.allows(host)) {
+    const Route* route = route_of(request.path);
+    if (!route || !route->probe)
+      return HttpError{421, "misdirected_request",
+                       "this server answers requests for loopback names and those --allowed-host names, not '" +
+                           host + "' (without a token, another name may be a page's DNS rebinding)",
+                       ""};
+  }
+  if (changes_state(request.method) && request.has_header("Origin")) {
+    const std::string origin = request.get_header_value("Origin");
+    const std::string authority = origin_authority(origin);
+    std::string own = host;
+    for (char& c : own) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+    if (authority.empty() || (authority != own && !hosts.allows(authority)))
+      return HttpError{403, "forbidden_origin",
+                       "a page from '" + origin + "' may not " + request.method + " here: only this server's own "
+                       "page, loopback origins and --allowed-host names may",
+                       ""};
+  }
+  return std::nullopt;
+}
+
+// The names requests may carry: loopback ones, --allowed-host's, and the address the server
+// listens on when it is one (not 0.0.0.0 or ::).
+HostPolicy host_policy(const ServerOptions& options) {
+  std::vector<std::string> allowed = options.allowed_hosts;
+  if (options.host != "0.0.0.0" && options.host != "::" && !options.host.empty()) allowed.push_back(options.host);
+  return HostPolicy(std::move(allowed));
+}
+
 }  // namespace
 
 std::string route_pattern(const std::string& path) {
@@ -239,8 +282,13 @@ std::string route_pattern(const std::string& path) {
 }
 
 void install_routes(httplib::Server& http, Service& service) {
-  http.set_pre_routing_handler([&service](const httplib::Request& request, httplib::Response& response) {
+  auto hosts = std::make_shared<const HostPolicy>(host_policy(service.options));
+  http.set_pre_routing_handler([&service, hosts](const httplib::Request& request, httplib::Response& response) {
     start_request_clock();
+    if (const std::optional<HttpError> refusal = cross_site_refusal(request, service, *hosts)) {
+      send_error(response, *refusal);
+      return httplib::Server::HandlerResponse::Handled;
+    }
     if (service.options.token.empty()) return httplib::Server::HandlerResponse::Unhandled;
     // The token first: a request that has it never runs the route regexes here.
     if (bearer_token_matches(request.get_header_value("Authorization"), service.options.token))

@@ -26,6 +26,23 @@ bool parse_switch(std::string_view source, std::string_view text) {
   throw OptionsError(std::string(source) + ": expected 1/0, true/false or yes/no, got '" + std::string(text) + "'");
 }
 
+// --allowed-host: one name or several separated by commas, and the flag may repeat. A host
+// name or address without a port, or "*".
+void add_allowed_hosts(ServerOptions& o, std::string_view source, std::string_view list) {
+  while (true) {
+    const auto comma = list.find(',');
+    const std::string_view name = list.substr(0, comma);
+    const bool bracketed = name.size() > 2 && name.starts_with('[') && name.ends_with(']');  // [v6]
+    const bool valid = !name.empty() && (name == "*" || name.find_first_of("*/@?# \t") == std::string_view::npos);
+    if (!valid || (name.find(':') != std::string_view::npos && !bracketed))
+      throw OptionsError(std::string(source) + ": expected host names without ports (or \"*\"), separated by "
+                         "commas, got '" + std::string(name) + "'");
+    o.allowed_hosts.emplace_back(bracketed ? name.substr(1, name.size() - 2) : name);
+    if (comma == std::string_view::npos) return;
+    list = list.substr(comma + 1);
+  }
+}
+
 // One setting: its flag, its environment variable, and how a value is stored.
 struct Setting {
   std::string_view flag;  // "--port"
@@ -51,6 +68,7 @@ const std::vector<Setting>& settings() {
          o.token = std::string(v);
        }},
       {"--insecure", false, [](ServerOptions& o, S s, S v) { o.insecure = parse_switch(s, v); }},
+      {"--allowed-host", true, [](ServerOptions& o, S s, S v) { add_allowed_hosts(o, s, v); }},
       {"--threads", true, [](ServerOptions& o, S s, S v) { o.http_threads = parse_count(s, v, 1, 1024); }},
       {"--workers", true, [](ServerOptions& o, S s, S v) { o.render_workers = parse_count(s, v, 1, 16); }},
       {"--queue", true, [](ServerOptions& o, S s, S v) { o.queue_capacity = parse_count(s, v, 1, 10000); }},
@@ -114,6 +132,9 @@ options (each also read from the environment variable in brackets; a flag wins):
                          without it uploads live in memory until exit [LPV_SERVER_DATA_DIR]
   --token TOKEN          require "Authorization: Bearer TOKEN" [LPV_SERVER_TOKEN]
   --insecure             allow a non-loopback --host without a token [LPV_SERVER_INSECURE=1]
+  --allowed-host NAME    without a token, requests must name a loopback host or one of these
+                         (repeatable, or comma-separated; "*": any) in Host, else 421; the
+                         --host address is allowed too [LPV_SERVER_ALLOWED_HOST]
   --threads N            HTTP connections served at once (16) [LPV_SERVER_THREADS]
   --workers N            render workers, each with its own device (1) [LPV_SERVER_WORKERS]
   --queue N              renders that may wait for a worker; more get 503 (8) [LPV_SERVER_QUEUE]

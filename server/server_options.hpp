@@ -13,6 +13,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace server {
 
@@ -23,6 +24,8 @@ struct ServerOptions {
   // memory until exit, and nothing is on disk besides LPV_PIPELINE_CACHE.
   std::filesystem::path data_dir;
   std::string token;               // empty: no authentication
+  // Without a token, the Host names besides loopback ones that requests may carry ("*": any).
+  std::vector<std::string> allowed_hosts;
   bool insecure = false;           // allow a non-loopback address without a token
   std::size_t http_threads = 16;   // connections served at once
   std::size_t render_workers = 1;  // each owns its own device and renderer

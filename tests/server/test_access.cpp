@@ -27,6 +27,41 @@ TEST(Access, BearerTokenNeedsTheSchemeAndTheExactToken) {
   EXPECT_FALSE(bearer_token_matches("Bearer ", "abc"));
 }
 
+TEST(Access, AuthorityHostDropsThePortAndBracketsAndLowercases) {
+  EXPECT_EQ(authority_host("127.0.0.1:8080"), "127.0.0.1");
+  EXPECT_EQ(authority_host("LocalHost"), "localhost");
+  EXPECT_EQ(authority_host("[::1]:8080"), "::1");
+  EXPECT_EQ(authority_host("[::1]"), "::1");
+  EXPECT_EQ(authority_host("Render.Example.COM:443"), "render.example.com");
+  EXPECT_EQ(authority_host("::1"), "") << "a bare IPv6 address is no authority";
+  EXPECT_EQ(authority_host("[::1"), "");
+  EXPECT_EQ(authority_host("[::1]x"), "");
+}
+
+TEST(Access, OriginAuthorityIsTheHostAndPortOfTheOrigin) {
+  EXPECT_EQ(origin_authority("http://127.0.0.1:8080"), "127.0.0.1:8080");
+  EXPECT_EQ(origin_authority("https://Evil.Example"), "evil.example");
+  EXPECT_EQ(origin_authority("null"), "");
+  EXPECT_EQ(origin_authority("http://a.example/path"), "");
+  EXPECT_EQ(origin_authority("http://user@a.example"), "");
+  EXPECT_EQ(origin_authority("://a.example"), "");
+}
+
+TEST(Access, HostPolicyAllowsLoopbackAndTheNamedHostsOnly) {
+  const HostPolicy loopback_only({});
+  EXPECT_TRUE(loopback_only.allows("127.0.0.1:8080"));
+  EXPECT_TRUE(loopback_only.allows("localhost:8080"));
+  EXPECT_TRUE(loopback_only.allows("[::1]:8080"));
+  EXPECT_FALSE(loopback_only.allows("evil.example:8080")) << "a DNS-rebinding page's name";
+  EXPECT_FALSE(loopback_only.allows("192.168.1.2"));
+  EXPECT_FALSE(loopback_only.allows(""));
+  const HostPolicy named({"Render.Example.com", "10.0.0.5"});
+  EXPECT_TRUE(named.allows("render.example.com:8080"));
+  EXPECT_TRUE(named.allows("10.0.0.5"));
+  EXPECT_FALSE(named.allows("other.example.com"));
+  EXPECT_TRUE(HostPolicy({"*"}).allows("anything.example"));
+}
+
 TEST(Access, LoopbackHosts) {
   EXPECT_TRUE(is_loopback_host("127.0.0.1"));
   EXPECT_TRUE(is_loopback_host("127.8.9.10"));

@@ -75,6 +75,15 @@ TEST(ServerOptions, BadValuesNameTheFlagOrVariable) {
   EXPECT_NE(message({}, {{"LPV_SERVER_SCENE_CACHE_MB", "lots"}}).find("LPV_SERVER_SCENE_CACHE_MB"), std::string::npos);
 }
 
+TEST(ServerOptions, AllowedHostsRepeatSplitAtCommasAndRefusePorts) {
+  EXPECT_TRUE(parse({}).allowed_hosts.empty());
+  EXPECT_EQ(parse({"--allowed-host", "a.example,b.example", "--allowed-host=[::2]"}).allowed_hosts,
+            (std::vector<std::string>{"a.example", "b.example", "::2"}));
+  EXPECT_EQ(parse({}, {{"LPV_SERVER_ALLOWED_HOST", "*"}}).allowed_hosts, (std::vector<std::string>{"*"}));
+  for (const char* bad : {"a.example:8080", "", "a.example,", "http://a.example", "::1", "[::1]:80", "*.example"})
+    EXPECT_THROW(parse({"--allowed-host", bad}), OptionsError) << bad;
+}
+
 TEST(ServerOptions, APublicAddressNeedsATokenOrInsecure) {
   EXPECT_THROW(parse({"--host", "0.0.0.0"}), OptionsError);
   EXPECT_THROW(parse({}, {{"LPV_SERVER_HOST", "192.168.1.5"}}), OptionsError);
