@@ -144,6 +144,7 @@ struct Renderer::Impl {
 
   SceneSource scene_source;
   std::function<void(const RenderProgress&)> progress;
+  std::function<bool()> stop_check;
   SceneCache scenes;
   double test_slowdown;
   std::optional<FrameTargets> targets;
@@ -270,6 +271,8 @@ RenderResult Renderer::render(const scene::Scene& scene, const api::RenderReques
 }
 
 void Renderer::forget_scene(const std::string& name) { impl_->scenes.erase(name); }
+
+void Renderer::set_stop_check(std::function<bool()> stop) { impl_->stop_check = std::move(stop); }
 
 SceneCacheStats Renderer::scene_cache() const { return {impl_->scenes.size(), impl_->scenes.bytes()}; }
 
@@ -422,11 +425,15 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     for (const auto& [p, c] : schedule) {
       // Propagation that may stop early runs in chunks, the flux of each chunk's last step
       // read in between; every other pass is one submission.
+      // A stop check is asked between chunks too. The chunks' results are the same bits as one
+      // submission's: the same dispatches in the same order.
       const std::uint32_t steps = p == kPropagate ? iterations[c] : 1;
-      const std::uint32_t chunk = p == kPropagate && plan.convergence > 0.0f ? kConvergenceChunk : steps;
+      const bool chunked = p == kPropagate && (plan.convergence > 0.0f || stop_check);
+      const std::uint32_t chunk = chunked ? kConvergenceChunk : steps;
       double pass_gpu_ms = 0.0;
       std::uint32_t done = 0;
       while (done < steps) {
+        if (stop_check && stop_check()) throw RenderStopped();
         const std::uint32_t n = std::min(chunk, steps - done);
         const auto record_start = Clock::now();
         record_pass(p, c, {done + 1, n}, context);
@@ -437,7 +444,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
         frame_wait_ms += waited;
         pass_gpu_ms += timer.device_ms(waited);
         done += n;
-        if (p == kPropagate && done < steps && converged(c, done, steps, plan.convergence)) break;
+        if (p == kPropagate && done < steps && plan.convergence > 0.0f && converged(c, done, steps, plan.convergence))
+          break;
       }
       if (p == kPropagate) iterations_run[c] = done;
       if (is_grid_pass(p)) cascade_ms[p][c].push_back(pass_gpu_ms);

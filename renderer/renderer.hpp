@@ -15,6 +15,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,12 @@ struct RendererOptions {
   std::function<void(const RenderProgress&)> progress;
 };
 
+// Thrown by render() (and prepare()) when the stop check says to stop: between passes, between
+// propagation chunks and between frames. What the device was doing finishes first.
+struct RenderStopped : std::runtime_error {
+  RenderStopped() : std::runtime_error("the render was stopped before it finished") {}
+};
+
 struct SceneCacheStats {
   std::size_t scenes = 0;
   std::uint64_t bytes = 0;
@@ -122,6 +129,10 @@ class Renderer {
 
   // Drops a resident scene (one that was deleted), so the next request asks the source again.
   void forget_scene(const std::string& name);
+  // Asked before every submission of every render from now on (empty: never): true stops the
+  // render with RenderStopped. A server stops work nobody waits for any more; propagation
+  // then runs in chunks of a few steps, so a stop waits for no more than one chunk.
+  void set_stop_check(std::function<bool()> stop);
   SceneCacheStats scene_cache() const;
 
  private:

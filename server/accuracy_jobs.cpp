@@ -10,7 +10,12 @@ constexpr auto kProgressInterval = std::chrono::milliseconds(200);
 
 }  // namespace
 
-void CompareJob::run(accuracy::Workbench& bench) { result = accuracy::compare(bench, request); }
+void CompareJob::run(accuracy::Workbench& bench) {
+  // The reference (seconds to minutes of path tracing) stops at its next progress report.
+  result = accuracy::compare(bench, request, [this](double) {
+    if (should_interrupt()) throw JobStopped();
+  });
+}
 
 void EventChannel::push(nlohmann::json event) {
   {

@@ -180,13 +180,14 @@ int run(int argc, char** argv) {
   std::fprintf(stderr, "lpv-server: try  %s\n", example_curl(options, port).c_str());
 
   signals.start([&](int signal) {
-    log_event("shutdown", {{"signal", signal == SIGINT ? "SIGINT" : "SIGTERM"}});
+    log_event("shutdown", {{"signal", signal == SIGINT ? "SIGINT" : "SIGTERM"}, {"drain_ms", options.drain.count()}});
+    queue.begin_drain(options.drain);   // what still runs after the drain is stopped
     stop_server(http, listening_over);  // listen_after_bind returns once open requests are answered
   });
   http.listen_after_bind();
   listening_over = true;
   signals.stop();
-  queue.shutdown();  // renders still queued or running finish before their device closes
+  queue.shutdown();  // work still queued or running finishes (or stops at the drain) before its device closes
   log_event("stopped", {{"exit_code", exit_code.load()}});
   return exit_code;
 }

@@ -24,7 +24,11 @@ void warm_up(renderer::Renderer& renderer) {
 }  // namespace
 
 RenderQueue::RenderQueue(Config config, const SceneStore& scenes, FatalHandler on_fatal)
-    : config_(std::move(config)), scenes_(scenes), on_fatal_(std::move(on_fatal)), scene_caches_(config_.workers) {
+    : config_(std::move(config)),
+      scenes_(scenes),
+      on_fatal_(std::move(on_fatal)),
+      running_(config_.workers),
+      scene_caches_(config_.workers) {
   for (std::size_t i = 0; i < config_.workers; ++i) workers_.emplace_back([this, i] { work(i); });
 }
 
@@ -96,6 +100,26 @@ std::optional<nlohmann::json> RenderQueue::device_report() const {
   return device_report_;
 }
 
+void RenderQueue::begin_drain(std::chrono::milliseconds grace) {
+  {
+    std::lock_guard lock(mutex_);
+    if (stopping_ && drainer_.joinable()) return;  // one drain
+    stopping_ = true;
+  }
+  work_available_.notify_all();
+  const Clock::time_point end = Clock::now() + grace;
+  drainer_ = std::thread([this, end] { abandon_at(end); });
+}
+
+void RenderQueue::abandon_at(Clock::time_point end) {
+  std::unique_lock lock(mutex_);
+  // Woken by every finished job; done early when nothing is left.
+  while (Clock::now() < end && (in_flight_ > 0 || !queue_.empty())) job_finished_.wait_until(lock, end);
+  for (const auto& job : queue_) job->abandoned = true;  // dropped when a worker takes it
+  for (const auto& job : running_)
+    if (job) job->abandoned = true;
+}
+
 void RenderQueue::shutdown() {
   {
     std::lock_guard lock(mutex_);
@@ -104,12 +128,19 @@ void RenderQueue::shutdown() {
   work_available_.notify_all();
   for (auto& worker : workers_)
     if (worker.joinable()) worker.join();
+  job_finished_.notify_all();
+  if (drainer_.joinable()) drainer_.join();
 }
 
 void RenderQueue::run(Job& job, accuracy::Workbench& bench) const {
   // A deleted scene may still be resident on this worker's device: dropped, so the job
   // asks the store, which no longer has it, and answers "unknown scene".
   if (is_scene_id(job.scene) && !scenes_.contains(job.scene)) bench.renderer.forget_scene(job.scene);
+  bench.renderer.set_stop_check([&job] { return job.should_interrupt(); });
+  struct ClearStopCheck {
+    renderer::Renderer& renderer;
+    ~ClearStopCheck() { renderer.set_stop_check({}); }
+  } clear{bench.renderer};
   job.run(bench);
 }
 
@@ -159,12 +190,13 @@ void RenderQueue::work(std::size_t index) {
       queue_.pop_front();
       const auto now = Clock::now();
       job->queue_wait_ms = ms_between(job->submitted_, now);
-      if (now >= job->deadline) {
+      if (now >= job->deadline || job->abandoned) {
         job->state_ = Job::State::expired;
         job_finished_.notify_all();
         continue;
       }
       job->state_ = Job::State::running;
+      running_[index] = job;
       ++in_flight_;
     }
     std::exception_ptr error;
@@ -177,6 +209,7 @@ void RenderQueue::work(std::size_t index) {
     {
       std::lock_guard lock(mutex_);
       scene_caches_[index] = {cache.scenes, cache.bytes};
+      running_[index] = nullptr;
       --in_flight_;
       job->error = error;
       job->state_ = Job::State::done;

@@ -56,6 +56,10 @@ class Job {
   // For long jobs (a sweep, a benchmark suite) to ask between steps: abandoned, or past the
   // deadline.
   bool should_stop() const { return abandoned.load() || Clock::now() >= deadline; }
+  // What the worker's renderer asks between its submissions (Renderer::set_stop_check): stop
+  // what nobody waits for, and a job past its deadline unless it answers partially (which
+  // stops between its own steps, keeping what it has).
+  bool should_interrupt() const { return abandoned.load() || (!answers_partially() && Clock::now() >= deadline); }
   // A long job that, running at its deadline, stops at its next step and is answered with
   // what it has (its result says it is incomplete) rather than with 504.
   virtual bool answers_partially() const { return false; }
@@ -134,12 +138,18 @@ class RenderQueue {
   // GET /v1/device: the first worker's device, once it is open.
   std::optional<nlohmann::json> device_report() const;
 
-  // Refuses new jobs, lets the workers finish what is queued and running, joins them.
+  // Refuses new jobs from now on; what is queued and running may go on for `grace`, after
+  // which it is abandoned: a render stops at its next submission (Renderer::set_stop_check),
+  // a sweep or suite at its next step, and what is still queued is dropped. SIGTERM's drain.
+  void begin_drain(std::chrono::milliseconds grace);
+  // Refuses new jobs, lets the workers finish what is queued and running (within the
+  // drain's grace when one began), joins them.
   void shutdown();
 
  private:
   void work(std::size_t index);
   void withdraw(Job& job);  // with mutex_ held
+  void abandon_at(Clock::time_point end);  // the drain's timer
   void run(Job& job, accuracy::Workbench& bench) const;
 
   const Config config_;
@@ -149,12 +159,14 @@ class RenderQueue {
   std::condition_variable work_available_;
   std::condition_variable job_finished_;
   std::deque<std::shared_ptr<Job>> queue_;
+  std::vector<std::shared_ptr<Job>> running_;  // by worker
   std::size_t in_flight_ = 0;
   std::size_t ready_workers_ = 0;
   bool stopping_ = false;
   std::optional<nlohmann::json> device_report_;
   std::vector<SceneCacheGauges> scene_caches_;  // by worker
   std::vector<std::thread> workers_;
+  std::thread drainer_;  // begin_drain's timer
 };
 
 }  // namespace server

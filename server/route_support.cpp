@@ -130,6 +130,10 @@ bool answer_job_error(const Job& job, httplib::Response& response, Service& serv
   } catch (const JobStopped& e) {
     service.metrics.count_render("deadline_exceeded");
     send_error(response, {504, "deadline_exceeded", e.what(), ""});
+  } catch (const renderer::RenderStopped&) {
+    service.metrics.count_render("deadline_exceeded");
+    send_error(response, {504, "deadline_exceeded",
+                          "stopped before it finished: past its deadline, or the server is shutting down", ""});
   } catch (const api::RequestError& e) {
     service.metrics.count_render("rejected");
     send_error(response, render_error(e));

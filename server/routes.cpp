@@ -101,6 +101,12 @@ void handle_render(const httplib::Request& request, httplib::Response& response,
     return send_json(response, {{"stats", api::to_json(job->result->stats)}, {"queue_ms", job->queue_wait_ms}});
   for (const auto& pass : job->result->stats.passes)
     if (pass.ran) service.metrics.observe_pass(pass.name, pass.gpu_ms.median / 1000.0);
+  // Encoding counts against the deadline too: a 4096^2 PNG takes seconds.
+  if (Clock::now() >= job->deadline)
+    return send_error(response, {504, "deadline_exceeded",
+                                 "rendered, but the deadline of " + std::to_string(accepted->deadline.count()) +
+                                     " ms passed before the image could be encoded",
+                                 ""});
   send_render_result(response, *job->result, format, wants_json(request), job->queue_wait_ms);
 }
 

@@ -78,6 +78,8 @@ const std::vector<Setting>& settings() {
        [](ServerOptions& o, S s, S v) {
          o.accuracy_deadline = std::chrono::milliseconds(parse_count(s, v, 1, 24 * 3600000));
        }},
+      {"--drain-ms", true,
+       [](ServerOptions& o, S s, S v) { o.drain = std::chrono::milliseconds(parse_count(s, v, 0, 3600000)); }},
       {"--max-reference-paths", true,
        [](ServerOptions& o, S s, S v) { o.limits.max_reference_paths = parse_count(s, v, 1, 1ull << 40); }},
       {"--max-body-bytes", true,
@@ -142,6 +144,9 @@ options (each also read from the environment variable in brackets; a flag wins):
   --accuracy-deadline-ms N  time from arrival to the answer of a compare, sweep or bench
                          before 504; a sweep or bench past it answers what it did (600000)
                          [LPV_SERVER_ACCURACY_DEADLINE_MS]
+  --drain-ms N           on SIGINT or SIGTERM, work still queued or running this long after it
+                         is stopped (a render at its next pass, a sweep or suite at its next
+                         step) and answered 504 or with what it has (10000) [LPV_SERVER_DRAIN_MS]
   --max-body-bytes N     request body size before 413, scene uploads aside (262144)
                          [LPV_SERVER_MAX_BODY_BYTES]
   --max-scene-bytes N    scene upload size before 413 (67108864) [LPV_SERVER_MAX_SCENE_BYTES]
@@ -162,7 +167,7 @@ options (each also read from the environment variable in brackets; a flag wins):
   -h, --help             this text
 
 Vulkan: LPV_DEVICE, LPV_VALIDATION, LPV_VALIDATION_SYNC, LPV_PIPELINE_CACHE as for lpv-render.
-SIGINT or SIGTERM: stop accepting, finish the renders in flight, exit 0.
+SIGINT or SIGTERM: stop accepting, finish the work in flight within --drain-ms, exit 0.
 exit status: 0 after a clean shutdown, 2 bad usage, 1 failure (device, bind)
 )";
 }

@@ -32,6 +32,7 @@ struct ServerOptions {
   std::size_t queue_capacity = 8;  // renders waiting for a worker; more are answered 503
   std::chrono::milliseconds deadline{30000};  // from arrival to the rendered image
   std::chrono::milliseconds accuracy_deadline{600000};  // from arrival to a compare's or sweep's answer
+  std::chrono::milliseconds drain{10000};  // after SIGTERM, work still running this long is stopped
   std::size_t max_body_bytes = 256 * 1024;         // every request but scene uploads
   std::size_t max_scene_bytes = 64 * 1024 * 1024;  // POST /v1/scenes
   std::uint64_t max_store_bytes = 4ull << 30;      // all uploaded scenes together, as uploaded
