@@ -1,6 +1,6 @@
 #include "renderer/material_textures.hpp"
 
-#include "renderer/texture_mips.hpp"
+#include "renderer/scene/texture_mips.hpp"
 #include "renderer/vulkan/pipeline.hpp"
 #include "renderer/vulkan/vk_check.hpp"
 
@@ -36,7 +36,7 @@ vkx::Sampler make_sampler(const vkx::Device& device, const scene::Texture& t, st
 
 // An sRGB image holding the texture's mip chain, ready for sampling.
 vkx::Image upload_texture(const vkx::Device& device, const scene::Texture& t, std::uint64_t& bytes) {
-  const std::vector<MipLevel> levels = srgb_mip_chain(t.width, t.height, t.rgba);
+  const std::vector<scene::MipLevel> levels = scene::srgb_mip_chain(t.width, t.height, t.rgba);
   vkx::ImageDesc desc;
   desc.format = VK_FORMAT_R8G8B8A8_SRGB;
   desc.width = t.width;
@@ -46,7 +46,7 @@ vkx::Image upload_texture(const vkx::Device& device, const scene::Texture& t, st
   vkx::Image image(device, desc);
 
   std::size_t total = 0;
-  for (const MipLevel& l : levels) total += l.rgba.size();
+  for (const scene::MipLevel& l : levels) total += l.rgba.size();
   vkx::Buffer staging(device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vkx::MemoryUse::upload);
   std::vector<VkBufferImageCopy> regions;
   std::size_t offset = 0;

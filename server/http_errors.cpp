@@ -30,6 +30,8 @@ void send_error(httplib::Response& response, const HttpError& error) {
   // Messages may quote what a client sent (a path), which need not be UTF-8.
   response.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
                        "application/json");
+  // Every 503 is worth retrying: a render takes tens of milliseconds, so a second is ample.
+  if (error.status == 503 && !response.has_header("Retry-After")) response.set_header("Retry-After", "1");
 }
 
 HttpError parse_error(const api::RequestError& error) {
@@ -57,6 +59,7 @@ HttpError load_error(const scene::LoadError& error) {
     case scene::LoadError::Kind::invalid: return {422, "invalid_scene", error.what(), ""};
     case scene::LoadError::Kind::unsupported: return {422, "unsupported_scene", error.what(), ""};
     case scene::LoadError::Kind::too_complex: return {422, "scene_too_complex", error.what(), ""};
+    case scene::LoadError::Kind::busy: return {503, "busy_decoding", error.what(), ""};
   }
   return {422, "invalid_scene", error.what(), ""};
 }

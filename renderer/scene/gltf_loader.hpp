@@ -4,11 +4,14 @@
 // and what cannot be loaded raises a LoadError naming the problem; nothing crashes.
 #pragma once
 
+#include "renderer/scene/decode_budget.hpp"
 #include "renderer/scene/scene.hpp"
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -21,6 +24,7 @@ class LoadError : public std::runtime_error {
     invalid,      // not valid glTF: bad JSON, wrong types, indices out of range, missing data
     unsupported,  // valid, but uses what the renderer does not do (a required extension, points)
     too_complex,  // over a LoadLimits bound
+    busy,         // its images could not be decoded now: other loads hold the decode budget
   };
   LoadError(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
   Kind kind() const { return kind_; }
@@ -36,6 +40,12 @@ struct LoadLimits {
   std::size_t max_texels = 64u << 20;   // over all textures (4 bytes each)
   std::uint32_t max_texture_side = 16384;  // what desktop Vulkan devices sample
   std::size_t max_node_instances = 1'000'000;  // meshes placed by the node hierarchy
+  // Textures larger than this per side are halved at load until they fit: a scene's
+  // resident size is bounded whatever its files hold (4 MiB texels a texture at 2048).
+  std::uint32_t max_kept_texture_side = 2048;
+  // Shared by the loads of a process (a server's uploads and workers); null: unbounded.
+  std::shared_ptr<DecodeBudget> decode_budget;
+  std::chrono::milliseconds decode_wait{2000};  // for room in it, before Kind::busy
 };
 
 struct LoadOptions {

@@ -1,7 +1,10 @@
 #include "renderer/scene/image_decode.hpp"
 
+#include "renderer/scene/texture_mips.hpp"
+
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 // stb_image private to this file: other targets (tests) compile their own copy.
 #define STB_IMAGE_STATIC
@@ -33,7 +36,13 @@ bool png_chunks_fit(std::span<const std::uint8_t> bytes) {
 
 }  // namespace
 
-DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, std::size_t max_texels, std::uint32_t max_side) {
+std::uint64_t decoding_bytes(std::uint32_t width, std::uint32_t height) {
+  return std::uint64_t(width) * height * 8 + height;
+}
+
+DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, const DecodeLimits& limits) {
+  const std::size_t max_texels = limits.max_texels;
+  const std::uint32_t max_side = limits.max_side;
   DecodedImage image;
   if (bytes.empty() || bytes.size() > std::size_t(std::numeric_limits<int>::max())) {
     image.error = bytes.empty() ? "no image data" : "image data over 2 GiB";
@@ -59,15 +68,30 @@ DecodedImage decode_rgba8(std::span<const std::uint8_t> bytes, std::size_t max_t
                   std::to_string(max_texels) + " texels and " + std::to_string(max_side) + " per side";
     return image;
   }
+  const std::optional<DecodeBudget::Lease> lease =
+      limits.budget ? limits.budget->acquire(decoding_bytes(std::uint32_t(w), std::uint32_t(h)), limits.budget_wait)
+                    : std::nullopt;
+  if (limits.budget && !lease) {
+    image.busy = true;
+    image.error = "other images are being decoded: " + std::to_string(w) + "x" + std::to_string(h) +
+                  " texels would pass the memory for decoding";
+    return image;
+  }
   stbi_uc* pixels = stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 4);
   if (!pixels) {
     image.error = std::string("cannot decode the image (") + stbi_failure_reason() + ")";
     return image;
   }
-  image.width = std::uint32_t(w);
-  image.height = std::uint32_t(h);
-  image.rgba.assign(pixels, pixels + std::size_t(w) * std::size_t(h) * 4);
+  MipLevel kept{std::uint32_t(w), std::uint32_t(h), {}};
+  kept.rgba.assign(pixels, pixels + std::size_t(w) * std::size_t(h) * 4);
   stbi_image_free(pixels);
+  while (limits.kept_side > 0 && (kept.width > limits.kept_side || kept.height > limits.kept_side))
+    kept = srgb_half(kept);
+  image.decoded_width = std::uint32_t(w);
+  image.decoded_height = std::uint32_t(h);
+  image.width = kept.width;
+  image.height = kept.height;
+  image.rgba = std::move(kept.rgba);
   return image;
 }
 

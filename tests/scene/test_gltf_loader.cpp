@@ -2,12 +2,15 @@
 // cameras and materials become, and that broken files are refused with the right kind.
 #include "gltf_builder.hpp"
 #include "renderer/scene/gltf_loader.hpp"
+#include "renderer/scene/image_decode.hpp"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 namespace {
 
@@ -152,6 +155,72 @@ TEST(GltfLoader, MaterialsTexturesAndEmission) {
   EXPECT_TRUE(sc.materials[1].double_sided);
   EXPECT_EQ(sc.lights.size(), 0u) << "an emissive scene needs no default light";
   EXPECT_EQ(sc.vertices[sc.indices[1]].uv, glm::vec2(1, 1));
+}
+
+// A texture larger than the renderer keeps (LoadLimits::max_kept_texture_side) is halved at
+// load, its colour averaged in linear light, and the scene says so; the file's own size still
+// counts against max_texels.
+TEST(GltfLoader, LargeTexturesAreKeptAtTheRenderersSize) {
+  GltfBuilder b;
+  const int texture = b.add_texture({200, 100, 50, 255}, 64, 16);
+  b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 0, 1}, 1, b.add_material(
+                                      {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}}))}});
+  scene::LoadLimits limits;
+  limits.max_kept_texture_side = 16;
+  const scene::Scene sc = load(b.glb(), limits);
+  ASSERT_EQ(sc.textures.size(), 1u);
+  EXPECT_EQ(sc.textures[0].width, 16u);
+  EXPECT_EQ(sc.textures[0].height, 4u);
+  EXPECT_EQ(sc.textures[0].rgba[0], 200) << "a solid colour stays itself";
+  bool said = false;
+  for (const std::string& w : sc.warnings) said = said || w.find("64x16 kept at 16x4") != std::string::npos;
+  EXPECT_TRUE(said);
+  EXPECT_EQ(load(b.glb()).textures[0].width, 64u) << "the default keeps up to 2048";
+  limits.max_texels = 64 * 16 - 1;
+  EXPECT_THROW(load(b.glb(), limits), scene::LoadError) << "the file's own texels count";
+}
+
+// Decoding takes its memory from a budget shared by every load: without room within the wait,
+// the load is refused as busy (the server answers 503), and it loads once the room is back.
+TEST(GltfLoader, DecodingWaitsForRoomInTheSharedBudget) {
+  GltfBuilder b;
+  const int texture = b.add_texture({10, 20, 30, 255}, 32, 32);
+  b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 0, 1}, 1, b.add_material(
+                                      {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}}))}});
+  scene::LoadLimits limits;
+  limits.decode_budget = std::make_shared<scene::DecodeBudget>(scene::decoding_bytes(32, 32));
+  limits.decode_wait = std::chrono::milliseconds(50);
+  {
+    const auto held = limits.decode_budget->acquire(1, std::chrono::milliseconds(0));  // another load's image
+    ASSERT_TRUE(held);
+    try {
+      load(b.glb(), limits);
+      ADD_FAILURE() << "decoded without room";
+    } catch (const scene::LoadError& e) {
+      EXPECT_EQ(e.kind(), Kind::busy);
+    }
+  }
+  EXPECT_EQ(load(b.glb(), limits).textures.size(), 1u);
+  EXPECT_EQ(limits.decode_budget->in_use(), 0u) << "every lease returned";
+}
+
+TEST(DecodeBudget, LeasesWaitForRoomAndTakeAtMostTheWhole) {
+  scene::DecodeBudget budget(100);
+  auto a = budget.acquire(60, std::chrono::milliseconds(0));
+  ASSERT_TRUE(a);
+  EXPECT_FALSE(budget.acquire(50, std::chrono::milliseconds(20))) << "only 40 left";
+  auto b = budget.acquire(40, std::chrono::milliseconds(0));
+  ASSERT_TRUE(b);
+  EXPECT_EQ(budget.in_use(), 100u);
+  std::thread release([lease = std::move(*a)]() mutable {
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    auto gone = std::move(lease);
+  });
+  EXPECT_TRUE(budget.acquire(60, std::chrono::seconds(5))) << "woken when a lease returns";
+  release.join();
+  b.reset();
+  EXPECT_EQ(budget.in_use(), 0u);
+  EXPECT_TRUE(budget.acquire(1000, std::chrono::milliseconds(0))) << "more than the whole: the whole, alone";
 }
 
 TEST(GltfLoader, StripsFansSparseAndMissingNormals) {

@@ -1,10 +1,10 @@
-#include "renderer/texture_mips.hpp"
+#include "renderer/scene/texture_mips.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-namespace renderer {
+namespace scene {
 namespace {
 
 float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
@@ -21,7 +21,9 @@ const std::array<float, 256>& decode_table() {
 
 std::uint8_t to_byte(float v) { return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
 
-MipLevel half(const MipLevel& src) {
+}  // namespace
+
+MipLevel srgb_half(const MipLevel& src) {
   const auto& decode = decode_table();
   MipLevel dst;
   dst.width = std::max(1u, src.width / 2);
@@ -46,13 +48,11 @@ MipLevel half(const MipLevel& src) {
   return dst;
 }
 
-}  // namespace
-
 std::vector<MipLevel> srgb_mip_chain(std::uint32_t width, std::uint32_t height, const std::vector<std::uint8_t>& rgba) {
   std::vector<MipLevel> levels;
   levels.push_back({width, height, rgba});
-  while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(half(levels.back()));
+  while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(srgb_half(levels.back()));
   return levels;
 }
 
-}  // namespace renderer
+}  // namespace scene
