@@ -75,10 +75,18 @@ void remove_file_durably(const std::filesystem::path& directory, const std::stri
   sync_directory(directory);
 }
 
-std::size_t remove_temporary_files(const std::filesystem::path& directory) {
+bool older_than(const std::filesystem::path& file, std::filesystem::file_time_type::duration age) {
+  std::error_code ec;
+  const auto written = std::filesystem::last_write_time(file, ec);
+  return !ec && std::filesystem::file_time_type::clock::now() - written > age;
+}
+
+std::size_t remove_temporary_files(const std::filesystem::path& directory,
+                                   std::filesystem::file_time_type::duration age) {
   std::vector<std::filesystem::path> leftovers;
   for (const auto& entry : std::filesystem::directory_iterator(directory))
-    if (entry.path().filename().string().starts_with(kTemporaryPrefix)) leftovers.push_back(entry.path());
+    if (entry.path().filename().string().starts_with(kTemporaryPrefix) && older_than(entry.path(), age))
+      leftovers.push_back(entry.path());
   for (const auto& path : leftovers) std::filesystem::remove(path);
   if (!leftovers.empty()) sync_directory(directory);
   return leftovers.size();

@@ -17,7 +17,13 @@ void write_file_durably(const std::filesystem::path& directory, const std::strin
 // Removes directory/name, if it exists, and flushes the directory.
 void remove_file_durably(const std::filesystem::path& directory, const std::string& name);
 
-// Removes the temporary files of writes a crash interrupted; returns how many.
-std::size_t remove_temporary_files(const std::filesystem::path& directory);
+// Removes the temporary files of writes a crash interrupted, those last written more than
+// `older_than` ago (younger ones may be another process's writes in progress); returns how
+// many.
+std::size_t remove_temporary_files(const std::filesystem::path& directory,
+                                   std::filesystem::file_time_type::duration older_than);
+
+// True when the file was last written more than `age` ago (false when it cannot be read).
+bool older_than(const std::filesystem::path& file, std::filesystem::file_time_type::duration age);
 
 }  // namespace server

@@ -47,32 +47,64 @@ SceneStore::SceneStore(Config config)
   if (!directory_.empty()) open_directory();
 }
 
+std::optional<SceneStore::Entry> SceneStore::read_entry(const std::string& id) const {
+  std::string scene_file;
+  for (const char* extension : {".glb", ".gltf"})
+    if (std::filesystem::exists(directory_ / (id + extension))) scene_file = id + extension;
+  if (scene_file.empty()) return std::nullopt;  // none, or an upload between its two files
+  nlohmann::json report = nlohmann::json::parse(read_file(directory_ / (id + ".json")).value_or(""), nullptr, false);
+  if (!is_report_of(report, id)) return std::nullopt;
+  return Entry{std::move(report), scene_file, nullptr};
+}
+
 void SceneStore::open_directory() {
   std::filesystem::create_directories(directory_);
-  opened_.removed_temporary = remove_temporary_files(directory_);
+  opened_.removed_temporary = remove_temporary_files(directory_, kStaleAge);
   std::vector<std::string> unfinished;
   for (const auto& item : std::filesystem::directory_iterator(directory_)) {
     const std::string file = item.path().filename().string();
     const std::string id = item.path().stem().string();
     if (item.path().extension() != ".json" || !is_scene_id(id)) continue;  // scene files, or not ours
-    const std::optional<std::string> text = read_file(item.path());
-    nlohmann::json report = nlohmann::json::parse(text.value_or(""), nullptr, false);
-    if (!is_report_of(report, id)) {
+    if (std::optional<Entry> entry = read_entry(id)) {
+      entries_[id] = std::move(*entry);
+    } else if (!is_report_of(nlohmann::json::parse(read_file(item.path()).value_or(""), nullptr, false), id)) {
       opened_.skipped.push_back(file + ": not a scene report");
-      continue;
-    }
-    std::string scene_file;
-    for (const char* extension : {".glb", ".gltf"})
-      if (std::filesystem::exists(directory_ / (id + extension))) scene_file = id + extension;
-    if (scene_file.empty()) {
+    } else if (older_than(item.path(), kStaleAge)) {
       unfinished.push_back(file);  // the upload stopped between writing its report and its scene
-      continue;
     }
-    entries_[id] = Entry{std::move(report), scene_file, nullptr};
   }
   for (const std::string& file : unfinished) remove_file_durably(directory_, file);
   opened_.removed_unfinished = unfinished.size();
   opened_.scenes = entries_.size();
+}
+
+const SceneStore::Entry* SceneStore::current(const std::string& id) const {
+  auto it = entries_.find(id);
+  if (in_memory()) return it == entries_.end() ? nullptr : &it->second;
+  if (it != entries_.end()) {
+    if (std::filesystem::exists(directory_ / it->second.file)) return &it->second;
+    entries_.erase(it);  // another replica deleted it
+    return nullptr;
+  }
+  std::optional<Entry> stored = read_entry(id);  // another replica may have stored it
+  if (!stored) return nullptr;
+  return &entries_.emplace(id, std::move(*stored)).first->second;
+}
+
+void SceneStore::refresh() const {
+  if (in_memory()) return;
+  std::map<std::string, Entry> now;
+  std::error_code ec;
+  for (const auto& item : std::filesystem::directory_iterator(directory_, ec)) {
+    const std::string id = item.path().stem().string();
+    if (item.path().extension() != ".json" || !is_scene_id(id)) continue;
+    if (const auto known = entries_.find(id); known != entries_.end()) {
+      if (std::filesystem::exists(directory_ / known->second.file)) now.emplace(id, std::move(known->second));
+    } else if (std::optional<Entry> stored = read_entry(id)) {
+      now.emplace(id, std::move(*stored));
+    }
+  }
+  if (!ec) entries_ = std::move(now);
 }
 
 scene::Scene SceneStore::load_bytes(std::string_view bytes, const std::string& id) const {
@@ -118,6 +150,7 @@ std::vector<nlohmann::json> SceneStore::reports() const {
   std::vector<nlohmann::json> all;
   {
     const std::lock_guard lock(mutex_);
+    refresh();
     for (const auto& [id, entry] : entries_) all.push_back(entry.report);
   }
   std::stable_sort(all.begin(), all.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
@@ -129,15 +162,15 @@ std::vector<nlohmann::json> SceneStore::reports() const {
 std::optional<nlohmann::json> SceneStore::report(const std::string& id) const {
   if (!is_scene_id(id)) return std::nullopt;
   const std::lock_guard lock(mutex_);
-  const auto it = entries_.find(id);
-  if (it == entries_.end()) return std::nullopt;
-  return it->second.report;
+  const Entry* entry = current(id);
+  if (!entry) return std::nullopt;
+  return entry->report;
 }
 
 bool SceneStore::contains(const std::string& id) const {
   if (!is_scene_id(id)) return false;
   const std::lock_guard lock(mutex_);
-  return entries_.count(id) != 0;
+  return current(id) != nullptr;
 }
 
 bool SceneStore::remove(const std::string& id) {
@@ -146,8 +179,8 @@ bool SceneStore::remove(const std::string& id) {
   Entry removed;
   {
     const std::lock_guard lock(mutex_);
+    if (!current(id)) return false;
     const auto it = entries_.find(id);
-    if (it == entries_.end()) return false;
     removed = std::move(it->second);
     entries_.erase(it);
   }
@@ -165,10 +198,10 @@ std::optional<scene::Scene> SceneStore::load(const std::string& id) const {
   std::string file;
   {
     const std::lock_guard lock(mutex_);
-    const auto it = entries_.find(id);
-    if (it == entries_.end()) return std::nullopt;
-    bytes = it->second.bytes;
-    file = it->second.file;
+    const Entry* entry = current(id);
+    if (!entry) return std::nullopt;
+    bytes = entry->bytes;
+    file = entry->file;
   }
   if (!bytes) {
     // Read without the lock; a removal meanwhile makes the file vanish, which reads as unknown.
@@ -192,6 +225,7 @@ void SceneStore::check_room(std::uint64_t bytes) const {
 
 SceneStore::Totals SceneStore::totals() const {
   const std::lock_guard lock(mutex_);
+  refresh();
   Totals totals;
   totals.scenes = entries_.size();
   for (const auto& [id, entry] : entries_) totals.bytes += entry.report.value("bytes", std::uint64_t(0));

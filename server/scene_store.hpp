@@ -8,12 +8,21 @@
 // Thread-safe: HTTP threads add, list and remove scenes while render workers load them.
 // Only strings of 64 lowercase hex digits are ever looked up, and a file name is made only
 // from such an id, so nothing a client sends becomes a path.
+//
+// A directory may be shared by several servers (replicas behind a load balancer, docs/
+// server.md "Replicas"): the files are the truth and the index only a cache of them. A
+// lookup by id reads the disk when the index does not know the id (another replica stored
+// it) and checks the scene file is still there when it does (another replica may have
+// deleted it); a listing or the totals re-read the directory. Opening removes only what
+// interrupted writes left behind long ago (kStaleAge), never another replica's upload in
+// progress.
 #pragma once
 
 #include "renderer/scene/gltf_loader.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -59,8 +68,12 @@ class SceneStore {
     std::vector<std::string> skipped;   // files not understood, each with the reason
   };
 
-  // Creates the directory if needed, removes what interrupted writes left behind and reads
-  // the reports of the stored scenes. Throws std::filesystem::filesystem_error when the
+  // Leftovers of interrupted writes older than this are removed when a store opens: an
+  // upload writes its two files within seconds, so younger ones may be another replica's.
+  static constexpr std::chrono::minutes kStaleAge{60};
+
+  // Creates the directory if needed, removes what interrupted writes left behind (older than
+  // kStaleAge) and reads the reports of the stored scenes. Throws std::filesystem::filesystem_error when the
   // directory cannot be used.
   explicit SceneStore(Config config);
   SceneStore(const SceneStore&) = delete;
@@ -106,6 +119,13 @@ class SceneStore {
   };
 
   void open_directory();
+  // The entry of `id` as the directory has it now: read from disk when the index lacks it,
+  // dropped from the index when its scene file is gone. With mutex_ held.
+  const Entry* current(const std::string& id) const;
+  // The index made equal to the directory (scenes other replicas added or removed). With
+  // mutex_ held; in memory, nothing to do.
+  void refresh() const;
+  std::optional<Entry> read_entry(const std::string& id) const;
   // Throws StoreFull when one more scene of `bytes` would pass the quota.
   void check_room(std::uint64_t bytes) const;
   scene::Scene load_bytes(std::string_view bytes, const std::string& id) const;
@@ -116,7 +136,7 @@ class SceneStore {
   Opened opened_;
   std::mutex writing_;  // one change of the files at a time; the index stays readable meanwhile
   mutable std::mutex mutex_;
-  std::map<std::string, Entry> entries_;  // by id
+  mutable std::map<std::string, Entry> entries_;  // by id; a cache of the directory's
 };
 
 }  // namespace server

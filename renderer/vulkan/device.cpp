@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <random>
 
 #include <unistd.h>
 
@@ -374,9 +375,11 @@ void Device::save_pipeline_cache() const {
   const auto& path = options_.pipeline_cache_file;
   std::error_code ec;
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
-  // Temporary file then rename: concurrent processes never read a half-written cache.
+  // Temporary file then rename: concurrent processes never read a half-written cache, and the
+  // last to finish wins. Named by process and a random number: replicas in containers sharing
+  // one volume may have the same process id.
   auto tmp = path;
-  tmp += ".tmp." + std::to_string(::getpid());
+  tmp += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(std::random_device{}());
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     out.write(blob.data(), static_cast<std::streamsize>(size));

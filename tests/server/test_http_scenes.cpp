@@ -302,11 +302,15 @@ TEST(HttpScenes, WhatACrashLeftIsRemovedAtStartAndNeverListed) {
   DataDir data;
   std::filesystem::create_directories(data.scenes());
   // A write interrupted before its rename, and an upload interrupted between writing its
-  // report and its scene file.
+  // report and its scene file, both an hour and more ago (younger ones may be another
+  // replica's upload in progress: SceneStore::kStaleAge).
   write_file(data.scenes() / ".partial-Xy12Zq", read_file(kBoxGlb).substr(0, 1000));
   const std::string unfinished(64, 'a');
   write_file(data.scenes() / (unfinished + ".json"),
              nlohmann::json({{"id", unfinished}, {"uploaded_at", "2025-01-01T00:00:00.000Z"}, {"bytes", 4696}}).dump());
+  for (const std::string& file : {std::string(".partial-Xy12Zq"), unfinished + ".json"})
+    std::filesystem::last_write_time(data.scenes() / file,
+                                     std::filesystem::file_time_type::clock::now() - std::chrono::minutes(61));
 
   ServerProcess server({"--data-dir", data.path()});
   auto http = server.client();
@@ -366,6 +370,34 @@ TEST(HttpScenes, BadUploadsAndBadIdsAreRefusedWithTheirStatus) {
 
   EXPECT_EQ(uploaded_scenes(*http).size(), 1u);
   EXPECT_EQ(http->Get("/healthz")->status, 200);
+}
+
+// Replicas: two servers on one --data-dir behave as one service (docs/server.md, "Replicas").
+// A scene uploaded through one renders on the other, bit for bit as on the first; a delete
+// through either is final on both, also for the one that holds it resident.
+TEST(HttpScenes, ReplicasSharingADataDirAreOneStore) {
+  DataDir data;
+  ServerProcess a({"--data-dir", data.path()}), b({"--data-dir", data.path()});
+  auto on_a = a.client();
+  auto on_b = b.client();
+  const auto created = upload(*on_a, read_file(kBoxGlb));
+  ASSERT_TRUE(created);
+  ASSERT_EQ(created->status, 201);
+  const std::string id = nlohmann::json::parse(created->body)["id"];
+  const auto from_a = render(*on_a, id), from_b = render(*on_b, id);
+  EXPECT_TRUE(renders_png(from_a));
+  EXPECT_TRUE(renders_png(from_b));
+  if (from_a && from_b) EXPECT_EQ(from_a->body, from_b->body) << "the same bits from every replica";
+  EXPECT_EQ(on_b->Get("/v1/scenes/" + id)->status, 200);
+  EXPECT_NE(on_b->Get("/v1/scenes")->body.find(id), std::string::npos);
+  EXPECT_EQ(upload(*on_b, read_file(kBoxGlb))->status, 200) << "the other replica's scene: no second copy";
+
+  ASSERT_EQ(on_b->Delete("/v1/scenes/" + id)->status, 204);
+  EXPECT_TRUE(is_json_error(render(*on_a, id), 404, "scene_not_found", "scene")) << "A still held it resident";
+  EXPECT_EQ(on_a->Get("/v1/scenes/" + id)->status, 404);
+  EXPECT_EQ(on_a->Get("/v1/scenes")->body.find(id), std::string::npos);
+  EXPECT_EQ(a.stop(SIGTERM), 0);
+  EXPECT_EQ(b.stop(SIGTERM), 0);
 }
 
 }  // namespace

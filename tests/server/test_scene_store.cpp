@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -100,12 +102,22 @@ TEST(SceneStore, RefusesWhatDoesNotLoadAndKeepsNothingOfIt) {
   EXPECT_TRUE(directory.files().empty());
 }
 
-TEST(SceneStore, OpeningRemovesInterruptedWritesAndSkipsWhatItDoesNotUnderstand) {
+// Interrupted writes are removed once they are older than kStaleAge; younger ones may be
+// another replica's upload in progress on a shared directory, and stay.
+TEST(SceneStore, OpeningRemovesStaleInterruptedWritesAndSkipsWhatItDoesNotUnderstand) {
   TemporaryDirectory directory;
+  const auto stale = [&](const std::string& file) {
+    std::filesystem::last_write_time(directory.path() / file, std::filesystem::file_time_type::clock::now() -
+                                                                  SceneStore::kStaleAge - std::chrono::minutes(1));
+  };
   std::ofstream(directory.path() / ".partial-abc123") << "half a scene";
-  const std::string unfinished(64, 'b');  // a report whose scene file was never renamed into place
-  std::ofstream(directory.path() / (unfinished + ".json"))
-      << R"({"id": ")" << unfinished << R"(", "uploaded_at": "2025-01-01T00:00:00.000Z", "bytes": 10})";
+  std::ofstream(directory.path() / ".partial-in-progress") << "another replica's upload";
+  stale(".partial-abc123");
+  const std::string unfinished(64, 'b'), in_progress(64, 'd');  // reports whose scene file is not in place
+  for (const std::string& id : {unfinished, in_progress})
+    std::ofstream(directory.path() / (id + ".json"))
+        << R"({"id": ")" << id << R"(", "uploaded_at": "2025-01-01T00:00:00.000Z", "bytes": 10})";
+  stale(unfinished + ".json");
   const std::string garbled(64, 'c');
   std::ofstream(directory.path() / (garbled + ".json")) << "{not json";
   std::ofstream(directory.path() / (garbled + ".glb")) << "glTF";
@@ -117,7 +129,31 @@ TEST(SceneStore, OpeningRemovesInterruptedWritesAndSkipsWhatItDoesNotUnderstand)
   ASSERT_EQ(store.opened().skipped.size(), 1u);
   EXPECT_NE(store.opened().skipped[0].find(garbled + ".json"), std::string::npos);
   EXPECT_TRUE(store.reports().empty());
-  EXPECT_EQ(directory.files(), (std::set<std::string>{garbled + ".json", garbled + ".glb", "notes.txt"}));
+  EXPECT_EQ(directory.files(), (std::set<std::string>{".partial-in-progress", in_progress + ".json", garbled + ".json",
+                                                      garbled + ".glb", "notes.txt"}));
+}
+
+// Two stores on one directory, as two replicas: what one adds the other finds by id and
+// lists, what one removes the other no longer finds, loads or counts.
+TEST(SceneStore, StoresSharingADirectoryAgree) {
+  TemporaryDirectory directory;
+  SceneStore a({directory.path(), {}}), b({directory.path(), {}});
+  const std::string glb = read_file(kBoxGlb);
+  const SceneStore::Added added = a.add(glb, "shared");
+  const std::string id = added.report["id"];
+  EXPECT_TRUE(b.contains(id));
+  ASSERT_TRUE(b.report(id).has_value());
+  EXPECT_EQ((*b.report(id))["name"], "shared");
+  EXPECT_TRUE(b.load(id).has_value());
+  EXPECT_EQ(b.reports().size(), 1u);
+  EXPECT_EQ(b.totals().scenes, 1u);
+  EXPECT_FALSE(b.add(glb, "again").created) << "the same bytes, stored by the other";
+  EXPECT_TRUE(b.remove(id));
+  EXPECT_FALSE(a.contains(id));
+  EXPECT_FALSE(a.load(id).has_value());
+  EXPECT_TRUE(a.reports().empty());
+  EXPECT_EQ(a.totals().scenes, 0u);
+  EXPECT_FALSE(a.remove(id));
 }
 
 TEST(SceneStore, InMemoryWithoutADirectory) {
