@@ -180,6 +180,32 @@ int run(int argc, char** argv) {
   // The first line: scripts and tests read the port from it.
   std::printf("lpv-server listening on %s\n", base_url(options.host, port).c_str());
   std::fflush(stdout);
+  // Probes on a listener of their own: slow or many clients of the main port take all its
+  // threads (httplib 0.11 has per-read timeouts only), never these two.
+  httplib::Server health;
+  std::thread health_thread;
+  std::atomic<bool> health_over{false};
+  if (options.health_port >= 0) {
+    server::install_probe_routes(health, queue);
+    health.new_task_queue = [] { return new httplib::ThreadPool(2); };
+    health.set_keep_alive_timeout(2);
+    const int bound = options.health_port == 0 ? health.bind_to_any_port(options.host)
+                                               : (health.bind_to_port(options.host, options.health_port)
+                                                      ? options.health_port
+                                                      : -1);
+    if (bound < 0) {
+      std::fprintf(stderr, "lpv-server: cannot listen on %s:%d for probes\n", options.host.c_str(), options.health_port);
+      listening_over = true;
+      queue.shutdown();
+      return kExitFailure;
+    }
+    std::printf("lpv-server health on %s\n", base_url(options.host, bound).c_str());
+    std::fflush(stdout);
+    health_thread = std::thread([&] {
+      health.listen_after_bind();
+      health_over = true;
+    });
+  }
   log_scene_store(scenes);
   std::fprintf(stderr, "lpv-server: try  %s\n", example_curl(options, port).c_str());
 
@@ -190,6 +216,10 @@ int run(int argc, char** argv) {
   });
   http.listen_after_bind();
   listening_over = true;
+  if (health_thread.joinable()) {
+    stop_server(health, health_over);
+    health_thread.join();
+  }
   signals.stop();
   queue.shutdown();  // work still queued or running finishes (or stops at the drain) before its device closes
   log_event("stopped", {{"exit_code", exit_code.load()}});

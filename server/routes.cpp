@@ -282,6 +282,13 @@ HostPolicy host_policy(const ServerOptions& options) {
 
 }  // namespace
 
+void install_probe_routes(httplib::Server& http, const RenderQueue& queue) {
+  http.Get("/healthz", [](const httplib::Request&, httplib::Response& response) {
+    send_json(response, {{"status", "alive"}});
+  });
+  http.Get("/readyz", [&queue](const httplib::Request&, httplib::Response& response) { handle_readyz(response, queue); });
+}
+
 std::string route_pattern(const std::string& path) {
   const Route* route = route_of(path);
   return route ? route->pattern : "unmatched";
@@ -306,12 +313,7 @@ void install_routes(httplib::Server& http, Service& service) {
     return httplib::Server::HandlerResponse::Handled;
   });
 
-  http.Get("/healthz", [](const httplib::Request&, httplib::Response& response) {
-    send_json(response, {{"status", "alive"}});
-  });
-  http.Get("/readyz", [&service](const httplib::Request&, httplib::Response& response) {
-    handle_readyz(response, service.queue);
-  });
+  install_probe_routes(http, service.queue);
   http.Get("/metrics", [&service](const httplib::Request&, httplib::Response& response) {
     const SceneStore::Totals stored = service.scenes.totals();
     response.set_content(service.metrics.prometheus_text(service.queue.gauges(), {stored.scenes, stored.bytes}),

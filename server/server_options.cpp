@@ -61,6 +61,7 @@ const std::vector<Setting>& settings() {
   static const std::vector<Setting> table = {
       {"--host", true, [](ServerOptions& o, S, S v) { o.host = std::string(v); }},
       {"--port", true, [](ServerOptions& o, S s, S v) { o.port = int(parse_count(s, v, 0, 65535)); }},
+      {"--health-port", true, [](ServerOptions& o, S s, S v) { o.health_port = int(parse_count(s, v, 0, 65535)); }},
       {"--data-dir", true, [](ServerOptions& o, S, S v) { o.data_dir = std::string(v); }},
       {"--token", true,
        [](ServerOptions& o, S s, S v) {
@@ -132,6 +133,9 @@ listens on as its first line, then one JSON line per request.
 options (each also read from the environment variable in brackets; a flag wins):
   --host ADDR            address to bind (127.0.0.1) [LPV_SERVER_HOST]
   --port N               port, 0 for any free one (8080) [LPV_SERVER_PORT]
+  --health-port N        also answer /healthz and /readyz on this port, with threads of their
+                         own that no client of --port can take (0: any free one; printed as
+                         the second line) [LPV_SERVER_HEALTH_PORT]
   --data-dir DIR         keeps the pipeline cache and uploaded scenes (DIR/scenes) in DIR;
                          without it uploads live in memory until exit [LPV_SERVER_DATA_DIR]
   --token TOKEN          require "Authorization: Bearer TOKEN" [LPV_SERVER_TOKEN]

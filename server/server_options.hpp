@@ -20,6 +20,7 @@ namespace server {
 struct ServerOptions {
   std::string host = "127.0.0.1";
   int port = 8080;                 // 0: any free port; the bound one is printed at start
+  int health_port = -1;            // a listener of its own for /healthz and /readyz; -1: none, 0: any free
   // The pipeline cache and the uploaded scenes (data_dir/scenes). Empty: uploads live in
   // memory until exit, and nothing is on disk besides LPV_PIPELINE_CACHE.
   std::filesystem::path data_dir;
