@@ -19,16 +19,17 @@ bool equal_in_constant_time(std::string_view a, std::string_view b) {
   return diff == 0;
 }
 
+std::string ascii_lowercase(std::string_view text) {
+  std::string lower(text);
+  for (char& c : lower) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
+  return lower;
+}
+
 bool bearer_token_matches(std::string_view authorization, std::string_view token) {
-  constexpr std::string_view scheme = "Bearer ";
-  if (authorization.size() < scheme.size()) return false;
+  constexpr std::string_view scheme = "bearer ";
   // The scheme is case-insensitive (RFC 7235); the token is compared exactly.
-  for (std::size_t i = 0; i < scheme.size(); ++i) {
-    const char c = authorization[i];
-    const char lower = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
-    const char expected = (scheme[i] >= 'A' && scheme[i] <= 'Z') ? char(scheme[i] - 'A' + 'a') : scheme[i];
-    if (lower != expected) return false;
-  }
+  if (authorization.size() < scheme.size() || ascii_lowercase(authorization.substr(0, scheme.size())) != scheme)
+    return false;
   return equal_in_constant_time(authorization.substr(scheme.size()), token);
 }
 
@@ -54,9 +55,7 @@ std::string authority_host(std::string_view authority) {
     if (host.find(':') != colon) return {};  // a bare IPv6 address is no authority
     host = host.substr(0, colon);
   }
-  std::string lower(host);
-  for (char& c : lower) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
-  return lower;
+  return ascii_lowercase(host);
 }
 
 std::string origin_authority(std::string_view origin) {
@@ -64,9 +63,7 @@ std::string origin_authority(std::string_view origin) {
   if (scheme_end == std::string_view::npos || scheme_end == 0) return {};
   const std::string_view authority = origin.substr(scheme_end + 3);
   if (authority.empty() || authority.find_first_of("/?#@ ") != std::string_view::npos) return {};
-  std::string lower(authority);
-  for (char& c : lower) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
-  return lower;
+  return ascii_lowercase(authority);
 }
 
 HostPolicy::HostPolicy(std::vector<std::string> allowed) {
@@ -75,8 +72,7 @@ HostPolicy::HostPolicy(std::vector<std::string> allowed) {
       any_ = true;
       continue;
     }
-    for (char& c : name) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
-    allowed_.push_back(std::move(name));
+    allowed_.push_back(ascii_lowercase(name));
   }
 }
 

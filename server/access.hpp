@@ -14,6 +14,9 @@ bool equal_in_constant_time(std::string_view a, std::string_view b);
 // True when `authorization` (the header's value) is "Bearer <token>" with this token.
 bool bearer_token_matches(std::string_view authorization, std::string_view token);
 
+// ASCII letters in lower case (HTTP's names and media types are case-insensitive ASCII).
+std::string ascii_lowercase(std::string_view text);
+
 // 127.0.0.0/8, ::1 and "localhost": addresses only this machine can reach.
 bool is_loopback_host(std::string_view host);
 

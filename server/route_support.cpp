@@ -2,6 +2,7 @@
 
 #include "api/request_error.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
+#include "server/access.hpp"
 #include "server/client_connection.hpp"
 #include "server/http_errors.hpp"
 #include "server/request_log.hpp"
@@ -75,9 +76,8 @@ bool media_type_accepted(const httplib::Request& request, httplib::Response& res
                        (!request.has_header("Content-Length") || request.get_header_value("Content-Length") == "0");
   if (!typed && no_body) return true;
   const std::string value = request.get_header_value("Content-Type");
-  std::string type = value.substr(0, value.find(';'));
+  std::string type = ascii_lowercase(value.substr(0, value.find(';')));
   type.erase(std::remove_if(type.begin(), type.end(), [](char c) { return c == ' ' || c == '\t'; }), type.end());
-  for (char& c : type) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
   if (std::find(types.begin(), types.end(), type) != types.end()) return true;
   std::string listed;
   for (const std::string_view t : types) listed += (listed.empty() ? "" : ", ") + std::string(t);

@@ -261,9 +261,7 @@ std::optional<HttpError> cross_site_refusal(const httplib::Request& request, con
   if (changes_state(request.method) && request.has_header("Origin")) {
     const std::string origin = request.get_header_value("Origin");
     const std::string authority = origin_authority(origin);
-    std::string own = host;
-    for (char& c : own) c = (c >= 'A' && c <= 'Z') ? char(c - 'A' + 'a') : c;
-    if (authority.empty() || (authority != own && !hosts.allows(authority)))
+    if (authority.empty() || (authority != ascii_lowercase(host) && !hosts.allows(authority)))
       return HttpError{403, "forbidden_origin",
                        "a page from '" + origin + "' may not " + request.method + " here: only this server's own "
                        "page, loopback origins and --allowed-host names may",
