@@ -98,8 +98,9 @@ TEST(TextureBombs, ConcurrentUploadsStayWithinTheDecodeBudget) {
               kBombs, kSide, kBudgetMb, created, busy, peak_above_idle_mb, slowest_health_ms);
   EXPECT_GE(created, 1);
   // The budget, the worker's scene cache (the stored scenes are made resident as they arrive),
-  // and the allocator's slack.
-  EXPECT_LT(peak_above_idle_mb, kBudgetMb + kCacheMb + 128);
+  // the uploads' kept textures on their way to the store (16 MiB each) and the allocator's
+  // slack. Without the budget the decodes alone take 6 x 128 MiB.
+  EXPECT_LT(peak_above_idle_mb, kBudgetMb + kCacheMb + 256);
   EXPECT_LT(slowest_health_ms, 2000.0);
   const auto render = server.client()->Post("/v1/render", R"({"output": {"width": 64, "height": 64}})",
                                             "application/json");
