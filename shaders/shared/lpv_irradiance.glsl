@@ -49,9 +49,8 @@ vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
 // each cell's weight times the part of it in front of the surface (in_front) and the weights
 // renormalised (they sum to at least 3/4: the cells half a cell or more in front count fully),
 // then E = <I, cosine lobe of -n> / s^2 (a cell's intensity per unit face area is the radiance
-// that crosses it). q is clamped to
-// the centres of the border cells, so the filter never mixes in the next cascade, stacked
-// above this one in the same buffers.
+// that crosses it). q is clamped to the centres of the border cells, so the filter never mixes
+// in the next cascade, stacked above this one in the same buffers.
 //
 // Neighbouring pixels mostly filter the same 8 cells (a cell spans many pixels), or one of two
 // sets of 8 where the subgroup's pixels straddle a cell's boundary. When every lane of the
@@ -71,9 +70,16 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   vec3 f = t - vec3(low);
   ivec3 high = min(low + 1, last);
   vec4 lobe = sh_cosine_lobe(-n);
+  // Each corner's weight: trilinear, times the part of its cell in front of the surface.
   vec3 surface = q - 0.5 * n;
-  vec3 e = vec3(0.0);
+  float weight[8];
   float total = 0.0;
+  for (uint corner = 0u; corner < 8u; ++corner) {
+    vec3 w3 = mix(1.0 - f, f, corner_step(corner));
+    weight[corner] = (w3.x * w3.y * w3.z) * in_front(mix(low, high, corner_step(corner)), surface, n);
+    total += weight[corner];
+  }
+  vec3 e = vec3(0.0);
   int key = lpv_accumulated_texel(low, c, g.dims.xyz);
   int key_a = key, key_b = key;
   bool shared_cells = false;
@@ -95,22 +101,15 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     vec4 red_b = imageLoad(accumulated_r, mine_b), green_b = imageLoad(accumulated_g, mine_b),
          blue_b = imageLoad(accumulated_b, mine_b);
     bool in_a = key == key_a;
-    for (uint corner = 0u; corner < 8u; ++corner) {
-      vec3 w3 = mix(1.0 - f, f, corner_step(corner));
-      float w = (w3.x * w3.y * w3.z) * in_front(mix(low, high, corner_step(corner)), surface, n);
-      total += w;
-      e += w * cell_irradiance(shared_corner(red_a, red_b, corner, in_a),
-                                                  shared_corner(green_a, green_b, corner, in_a),
-                                                  shared_corner(blue_a, blue_b, corner, in_a), lobe);
-    }
+    for (uint corner = 0u; corner < 8u; ++corner)
+      e += weight[corner] * cell_irradiance(shared_corner(red_a, red_b, corner, in_a),
+                                            shared_corner(green_a, green_b, corner, in_a),
+                                            shared_corner(blue_a, blue_b, corner, in_a), lobe);
   } else {
     for (uint corner = 0u; corner < 8u; ++corner) {
-      vec3 w3 = mix(1.0 - f, f, corner_step(corner));
-      float w = (w3.x * w3.y * w3.z) * in_front(mix(low, high, corner_step(corner)), surface, n);
-      total += w;
       int cell = lpv_accumulated_texel(mix(low, high, corner_step(corner)), c, g.dims.xyz);
-      e += w * cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell),
-                                                  imageLoad(accumulated_b, cell), lobe);
+      e += weight[corner] * cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell),
+                                            imageLoad(accumulated_b, cell), lobe);
     }
   }
   return max(e, vec3(0.0)) / (max(total, 1e-6) * g.origin.w * g.origin.w);
