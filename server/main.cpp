@@ -70,6 +70,39 @@ void stop_server(httplib::Server& http, const std::atomic<bool>& listening_over)
   http.stop();
 }
 
+// --health-port: /healthz and /readyz on a listener of their own. Slow or many clients of the
+// main port can take all its threads (httplib 0.11 bounds each read, not a request's head),
+// never these two.
+class ProbeListener {
+ public:
+  explicit ProbeListener(const server::RenderQueue& queue) {
+    server::install_probe_routes(http_, queue);
+    http_.new_task_queue = [] { return new httplib::ThreadPool(2); };
+    http_.set_keep_alive_timeout(2);
+  }
+  ~ProbeListener() { stop(); }
+
+  // Binds (port 0: any free one) and serves on a thread of its own; the bound port, or -1.
+  int start(const std::string& host, int port) {
+    const int bound = port == 0 ? http_.bind_to_any_port(host) : (http_.bind_to_port(host, port) ? port : -1);
+    if (bound >= 0) thread_ = std::thread([this] {
+        http_.listen_after_bind();
+        over_ = true;
+      });
+    return bound;
+  }
+  void stop() {
+    if (!thread_.joinable()) return;
+    stop_server(http_, over_);
+    thread_.join();
+  }
+
+ private:
+  httplib::Server http_;
+  std::thread thread_;
+  std::atomic<bool> over_{false};
+};
+
 // SIGINT and SIGTERM are blocked in every thread and taken by this one with sigwait, so
 // the shutdown runs as ordinary code rather than in a signal handler.
 class SignalWatcher {
@@ -180,19 +213,9 @@ int run(int argc, char** argv) {
   // The first line: scripts and tests read the port from it.
   std::printf("lpv-server listening on %s\n", base_url(options.host, port).c_str());
   std::fflush(stdout);
-  // Probes on a listener of their own: slow or many clients of the main port take all its
-  // threads (httplib 0.11 has per-read timeouts only), never these two.
-  httplib::Server health;
-  std::thread health_thread;
-  std::atomic<bool> health_over{false};
+  ProbeListener probes(queue);
   if (options.health_port >= 0) {
-    server::install_probe_routes(health, queue);
-    health.new_task_queue = [] { return new httplib::ThreadPool(2); };
-    health.set_keep_alive_timeout(2);
-    const int bound = options.health_port == 0 ? health.bind_to_any_port(options.host)
-                                               : (health.bind_to_port(options.host, options.health_port)
-                                                      ? options.health_port
-                                                      : -1);
+    const int bound = probes.start(options.host, options.health_port);
     if (bound < 0) {
       std::fprintf(stderr, "lpv-server: cannot listen on %s:%d for probes\n", options.host.c_str(), options.health_port);
       listening_over = true;
@@ -201,10 +224,6 @@ int run(int argc, char** argv) {
     }
     std::printf("lpv-server health on %s\n", base_url(options.host, bound).c_str());
     std::fflush(stdout);
-    health_thread = std::thread([&] {
-      health.listen_after_bind();
-      health_over = true;
-    });
   }
   log_scene_store(scenes);
   std::fprintf(stderr, "lpv-server: try  %s\n", example_curl(options, port).c_str());
@@ -216,10 +235,7 @@ int run(int argc, char** argv) {
   });
   http.listen_after_bind();
   listening_over = true;
-  if (health_thread.joinable()) {
-    stop_server(health, health_over);
-    health_thread.join();
-  }
+  probes.stop();
   signals.stop();
   queue.shutdown();  // work still queued or running finishes (or stops at the drain) before its device closes
   log_event("stopped", {{"exit_code", exit_code.load()}});

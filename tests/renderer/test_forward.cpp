@@ -104,7 +104,7 @@ TEST_F(Forward, SamePictureWithTexturedDoubleSidedAndEmissiveMaterials) {
   using test_gltf::GltfBuilder;
   GltfBuilder b;
   const int texture = b.add_texture({40, 200, 90, 255}, 8, 8);
-  const int textured = b.add_material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
+  const int textured = b.add_textured_material(texture);
   const int two_sided = b.add_material(
       {{"pbrMetallicRoughness", {{"baseColorFactor", {0.9, 0.3, 0.2, 1}}}}, {"doubleSided", true}});
   const int glow = b.add_material({{"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.1, 0.1, 1}}}},

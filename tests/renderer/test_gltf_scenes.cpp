@@ -52,7 +52,7 @@ GltfBuilder textured_wall_scene(glm::u8vec4 texel) {
   GltfBuilder b;
   const int white = b.add_material({{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1}}}}});
   const int texture = b.add_texture(texel, 8, 8);
-  const int textured = b.add_material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
+  const int textured = b.add_textured_material(texture);
   b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 1, 0}, 2, white)}});
   b.add_node({{"mesh", b.add_quad({-1, 1, 0}, {1, 0, 0}, 2, textured)}});
   const int sun = b.add_light({{"type", "directional"}, {"intensity", 3}});

@@ -81,6 +81,10 @@ int GltfBuilder::add_material(nlohmann::json material) {
   return int(doc_["materials"].size() - 1);
 }
 
+int GltfBuilder::add_textured_material(int texture) {
+  return add_material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
+}
+
 int GltfBuilder::add_mesh(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
                           const std::vector<glm::vec2>& uvs, const std::vector<std::uint32_t>& indices, int material) {
   auto flat = [](const auto& vs, int n) {

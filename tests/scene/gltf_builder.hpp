@@ -19,6 +19,8 @@ class GltfBuilder {
   int add_texture(glm::u8vec4 texel, int width = 2, int height = 2, nlohmann::json sampler = nullptr);
   // A material from its glTF JSON (e.g. {"pbrMetallicRoughness": {...}}).
   int add_material(nlohmann::json material);
+  // A material whose albedo is the texture alone.
+  int add_textured_material(int texture);
   // A triangle mesh; normals and uvs may be empty (then left out).
   int add_mesh(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
                const std::vector<glm::vec2>& uvs, const std::vector<std::uint32_t>& indices, int material = -1);

@@ -163,8 +163,7 @@ TEST(GltfLoader, MaterialsTexturesAndEmission) {
 TEST(GltfLoader, LargeTexturesAreKeptAtTheRenderersSize) {
   GltfBuilder b;
   const int texture = b.add_texture({200, 100, 50, 255}, 64, 16);
-  b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 0, 1}, 1, b.add_material(
-                                      {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}}))}});
+  b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 0, 1}, 1, b.add_textured_material(texture))}});
   scene::LoadLimits limits;
   limits.max_kept_texture_side = 16;
   const scene::Scene sc = load(b.glb(), limits);
@@ -185,8 +184,7 @@ TEST(GltfLoader, LargeTexturesAreKeptAtTheRenderersSize) {
 TEST(GltfLoader, DecodingWaitsForRoomInTheSharedBudget) {
   GltfBuilder b;
   const int texture = b.add_texture({10, 20, 30, 255}, 32, 32);
-  b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 0, 1}, 1, b.add_material(
-                                      {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}}))}});
+  b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 0, 1}, 1, b.add_textured_material(texture))}});
   scene::LoadLimits limits;
   limits.decode_budget = std::make_shared<scene::DecodeBudget>(scene::decoding_bytes(32, 32));
   limits.decode_wait = std::chrono::milliseconds(50);

@@ -39,7 +39,7 @@ long status_kb(pid_t pid, const std::string& field) {
 std::vector<std::string> texture_bombs(int count, int side) {
   test_gltf::GltfBuilder b;
   const int texture = b.add_texture({0, 0, 0, 255}, side, side);
-  const int material = b.add_material({{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", texture}}}}}});
+  const int material = b.add_textured_material(texture);
   const int node = b.add_node({{"mesh", b.add_quad({0, 0, 0}, {0, 1, 0}, 2, material)}});
   std::vector<std::string> files;
   for (int i = 0; i < count; ++i) {

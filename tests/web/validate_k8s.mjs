@@ -32,16 +32,17 @@ for (const file of readdirSync(dir).filter((f) => f.endsWith('.yaml')).sort()) {
 }
 
 const of = (kind) => objects.filter((o) => o.object.kind === kind);
-const drainMs = (args) => Number(args[args.indexOf('--drain-ms') + 1] ?? 10000);
+// A flag's value in a container's args, or `fallback` (the server's default) when absent.
+const flag = (args, name, fallback) => (args.includes(name) ? Number(args[args.indexOf(name) + 1]) : fallback);
 for (const { file, object } of of('Deployment')) {
   const pod = object.spec.template.spec;
   const c = pod.containers[0];
-  const healthPort = Number(c.args[c.args.indexOf('--health-port') + 1]);
+  const healthPort = flag(c.args, '--health-port', -1);
   const probesPort = c.ports.find((p) => p.name === 'probes')?.containerPort;
   if (!(healthPort > 0) || healthPort !== probesPort) problems.push(`${file}: the probes port is not --health-port`);
   for (const probe of ['readinessProbe', 'livenessProbe'])
     if (c[probe]?.httpGet?.port !== 'probes') problems.push(`${file}: ${probe} does not use the probes port`);
-  if (!(pod.terminationGracePeriodSeconds * 1000 > drainMs(c.args) + 2000))
+  if (!(pod.terminationGracePeriodSeconds * 1000 > flag(c.args, '--drain-ms', 10000) + 2000))
     problems.push(`${file}: terminationGracePeriodSeconds does not exceed --drain-ms by 2 s`);
   if (!c.env.some((e) => e.name === 'LPV_SERVER_TOKEN' && e.valueFrom?.secretKeyRef?.name === 'lpv-server-token'))
     problems.push(`${file}: LPV_SERVER_TOKEN does not come from the secret`);
