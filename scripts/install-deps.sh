@@ -25,6 +25,8 @@ PACKAGES=(
   assimp-testmodels clang libclang-rt-dev
   # the web page's browser test (tests/web): Chromium driven by playwright-core on Node.js
   chromium fonts-dejavu-core nodejs
+  # the scale-out test: replicas behind HAProxy (tests/server/test_http_scale_out.cpp)
+  haproxy
   # scripts/portable-bundle.sh: xz, and libglvnd, which it packs for NVIDIA's Vulkan driver
   xz-utils libglvnd0 libglx0 libgl1 libegl1 libopengl0 libgles2
 )
