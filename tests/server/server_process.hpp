@@ -1,12 +1,11 @@
 // A real lpv-server process on a free port, for tests that talk to it over HTTP.
 #pragma once
 
+#include "child_process.hpp"
+
 #include <httplib.h>
 
-#include <sys/types.h>
-
 #include <chrono>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,26 +16,22 @@ class ServerProcess {
  public:
   // Starts $LPV_SERVER_BINARY with --port 0 and `args`, reads the port from its first
   // line and waits until GET /readyz answers 200.
+  // A later "--port N" in `args` wins (a replica restarted on its port).
   explicit ServerProcess(std::vector<std::string> args = {});
-  ~ServerProcess();  // SIGKILL if it still runs
-  ServerProcess(const ServerProcess&) = delete;
-  ServerProcess& operator=(const ServerProcess&) = delete;
 
   int port() const { return port_; }
-  pid_t pid() const { return pid_; }
+  pid_t pid() const { return process_.pid(); }
   std::unique_ptr<httplib::Client> client() const;
 
-  // Sends `signal` and waits up to `timeout` for the exit; returns the exit status, or
-  // -1 when it did not exit normally in time.
-  int stop(int signal, std::chrono::seconds timeout = std::chrono::seconds(30));
-  bool running();
-  std::string log() const;  // its standard output and error so far
+  // As ChildProcess's.
+  int stop(int signal, std::chrono::seconds timeout = std::chrono::seconds(30)) { return process_.stop(signal, timeout); }
+  bool running() { return process_.running(); }
+  std::string log() const { return process_.log(); }
 
  private:
-  std::filesystem::path log_file_;
-  pid_t pid_ = -1;
-  bool reaped_ = false;
-  int exit_status_ = -1;  // once reaped: the exit code, or -1 when killed by a signal
+  static std::vector<std::string> command(std::vector<std::string> args);
+
+  ChildProcess process_;
   int port_ = 0;
 };
 

@@ -2,6 +2,7 @@
 // delete; the same bytes twice; uploads that break off or that a crash interrupted leave
 // nothing behind; and every way an upload or a scene id can be wrong. The scenes are the
 // glTF corpus of the assimp-testmodels package (scripts/install-deps.sh).
+#include "data_dir.hpp"
 #include "http_checks.hpp"
 #include "server_process.hpp"
 
@@ -58,35 +59,6 @@ nlohmann::json triangle_gltf() {
     "bufferViews": [{"buffer": 0, "byteLength": 36}],
     "buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}]})");
 }
-
-// A fresh --data-dir, removed with everything in it at the end of the test.
-class DataDir {
- public:
-  DataDir() {
-    char pattern[] = "/tmp/lpv-scenes-test-XXXXXX";
-    if (!mkdtemp(pattern)) throw std::runtime_error("mkdtemp failed");
-    path_ = pattern;
-  }
-  ~DataDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  DataDir(const DataDir&) = delete;
-  DataDir& operator=(const DataDir&) = delete;
-
-  std::string path() const { return path_.string(); }
-  std::filesystem::path scenes() const { return path_ / "scenes"; }
-  // The names of the files in the scenes folder, hidden ones included.
-  std::set<std::string> scene_files() const {
-    std::set<std::string> names;
-    if (std::filesystem::exists(scenes()))
-      for (const auto& entry : std::filesystem::directory_iterator(scenes())) names.insert(entry.path().filename());
-    return names;
-  }
-
- private:
-  std::filesystem::path path_;
-};
 
 httplib::Result upload(httplib::Client& http, const std::string& bytes, const std::string& query = "") {
   return http.Post("/v1/scenes" + query, bytes, "model/gltf-binary");
