@@ -74,6 +74,15 @@ run compare base.json http.json
 check "results of both modes compare" test "$rc" -ne 2
 check "the images through the server are the same images" test "$(grep -c 'image .*changed' out.txt)" -eq 0
 check "the modes' difference is warned about" grep -q "different modes (in_process and http)" out.txt
+# --jobs: the cases spread over connections (bench/fan-out.sh does it over replicas); the
+# results are the serial run's cases, in order, with the same images.
+run run quick --url "$url" --jobs 3 -q -o fanned.json
+check "run --jobs 3 exits 0" test "$rc" -eq 0
+check "fanned results match the schema" valid fanned.json
+check "the same cases in the same order" \
+  test "$(grep -o '"name": "[^"]*"' http.json)" = "$(grep -o '"name": "[^"]*"' fanned.json)"
+check "the same images" test "$(grep -o '"sha256": "[0-9a-f]*"' http.json)" = "$(grep -o '"sha256": "[0-9a-f]*"' fanned.json)"
+check "every image there" test "$(grep -c '"sha256"' fanned.json)" -eq 3
 kill "$server_pid"; wait "$server_pid" 2>/dev/null; server_pid=""
 
 # --- ab: this build against itself, render by render --------------------------------------
@@ -132,5 +141,8 @@ run ab --a "$bin" --b ./nothing quick
 check "ab names a missing build" grep -q "\-\-b: './nothing' is not an executable file" err.txt
 run run quick --url ftp://example.com -q
 check "a bad URL exits 2" test "$rc" -eq 2
+run run quick --jobs 2 -q
+check "--jobs without --url exits 2" test "$rc" -eq 2
+check "--jobs names what it needs" grep -q "\-\-jobs needs --url" err.txt
 
 finish

@@ -60,6 +60,9 @@ run:
   --repetitions N        timed renders per case (default: the suite's)
   --url URL              render every case through this lpv-server (POST /v1/render;
                          $LPV_SERVER_TOKEN is sent as its bearer token)
+  -j, --jobs N           with --url: N cases at once, each on its own connection (default 1):
+                         behind a load balancer, N replicas render the suite together; the
+                         cases, images and order of the results are a serial run's
   --label NAME           the run's name in reports (default: the commit)
   --commit ID            the commit to record (default: the build's, or $LPV_BENCH_COMMIT)
 run, compare, ab:
@@ -143,6 +146,7 @@ const std::vector<Flag>& flags() {
       {"--device", "", kRenders, [](Options& o, S v) { o.device = v; }},
       {"--quiet", "-q", kAll, [](Options& o, S) { o.quiet = true; }, false},
       {"--url", "", bit(Command::run), [](Options& o, S v) { o.url = v; }},
+      {"--jobs", "-j", bit(Command::run), [](Options& o, S v) { o.jobs = number<std::uint32_t>("--jobs", v, 1, 64); }},
       {"--repetitions", "", bit(Command::run),
        [](Options& o, S v) { o.repetitions = number<std::uint32_t>("--repetitions", v, 1, 1000); }},
       {"--warmup", "", kSuites, [](Options& o, S v) { o.warmup = number<std::uint32_t>("--warmup", v, 0, 100); }},
@@ -191,6 +195,8 @@ void check_inputs(const Options& o) {
     }
   }
   if (o.inputs.size() > wanted) throw UsageError("unexpected argument '" + o.inputs[wanted] + "'");
+  if (o.jobs > 1 && !o.url)
+    throw UsageError("--jobs needs --url: in this process one device renders one case at a time");
   if (o.command == Command::ab && (!o.build_a || !o.build_b))
     throw UsageError("ab needs both builds: --a PATH_TO_LPV_BENCH_A --b PATH_TO_LPV_BENCH_B");
 }

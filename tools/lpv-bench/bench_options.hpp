@@ -24,6 +24,7 @@ struct Options {
 
   // run (some for ab and worker too)
   std::optional<std::string> url;            // render through this lpv-server
+  std::uint32_t jobs = 1;                    // with url: cases rendered at once
   std::optional<std::uint32_t> repetitions;  // overrides the suite's
   std::optional<std::uint32_t> warmup;       // overrides the suite's
   std::optional<std::string> report;         // Markdown summary (run, compare, ab)

@@ -6,11 +6,14 @@
 #include "local_runners.hpp"
 #include "results_report.hpp"
 #include "renderer/bench/build_info.hpp"
+#include "renderer/bench/suite_fan_out.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 namespace bench {
 namespace {
@@ -25,10 +28,17 @@ api::BenchResults run_suite_here(const Options& options, const api::BenchSuite& 
   return results;
 }
 
-api::BenchResults run_suite_through(const std::string& url, const api::BenchSuite& suite, const RunOptions& run,
-                                    const RunObserver& observer) {
-  HttpCaseRunner server(url);
-  api::BenchResults results = run_suite(suite, {&server, &server, ""}, run, observer);
+// With jobs > 1, each job has a connection of its own (behind a load balancer, maybe a
+// replica of its own) and renders whole cases.
+api::BenchResults run_suite_through(const std::string& url, std::uint32_t jobs, const api::BenchSuite& suite,
+                                    const RunOptions& run, const RunObserver& observer) {
+  std::vector<std::unique_ptr<HttpCaseRunner>> servers;
+  std::vector<Runners> runners;
+  for (std::uint32_t j = 0; j < jobs; ++j) {
+    servers.push_back(std::make_unique<HttpCaseRunner>(url));
+    runners.push_back({servers.back().get(), servers.back().get(), ""});
+  }
+  api::BenchResults results = run_suite_fanned(suite, runners, run, observer);
   results.mode = "http";
   results.url = url;
   return results;
@@ -53,7 +63,7 @@ int run_command(const Options& options) {
 
   tools::ProgressBar bar(!options.quiet);
   const RunObserver observer = suite_progress(bar, suite);
-  api::BenchResults results = options.url ? run_suite_through(*options.url, suite, run, observer)
+  api::BenchResults results = options.url ? run_suite_through(*options.url, options.jobs, suite, run, observer)
                                           : run_suite_here(options, suite, run, observer);
   bar.finish();
 
