@@ -22,8 +22,6 @@ using namespace reader;
 constexpr std::array<std::string_view, 3> reference_keys{"samples", "bounces", "seed"};
 constexpr std::array<std::string_view, 5> compare_keys{"base", "against", "reference", "mask", "heatmap_scale"};
 constexpr std::array<std::string_view, 6> sweep_keys{"base", "parameters", "lpv_off_row", "reference", "axis", "mask"};
-constexpr std::array<std::string_view, 9> parameter_keys{"grid",      "iterations", "cascades", "rsm",     "vpl_downsample",
-                                                         "bounces",   "occlusion",  "transfer", "blocking"};
 constexpr std::array<std::string_view, 2> axis_keys{"image", "metric"};
 constexpr std::array masks{MetricMask::all, MetricMask::surfaces, MetricMask::interior};
 constexpr std::array sweep_images{SweepImage::final_, SweepImage::indirect};
@@ -71,7 +69,7 @@ std::vector<T> read_values(const Field& f, Read read) {
 }
 
 SweepParameters read_parameters(const Field& f) {
-  const Object obj(f, parameter_keys);
+  const Object obj(f, sweep_parameter_keys);
   SweepParameters p;
   const auto uint_in = [](std::uint32_t lo, std::uint32_t hi) {
     return [lo, hi](const Field& e) { return as_uint<std::uint32_t>(e, lo, hi); };
@@ -86,14 +84,6 @@ SweepParameters read_parameters(const Field& f) {
   if (auto v = obj.get("transfer")) p.transfer = read_values<Transfer>(*v, read_transfer);
   if (auto v = obj.get("blocking")) p.blocking = read_values<Blocking>(*v, read_blocking);
   return p;
-}
-
-ParetoAxis read_axis(const Field& f) {
-  const Object obj(f, axis_keys);
-  ParetoAxis axis;
-  if (auto v = obj.get("image")) axis.image = as_enum(*v, sweep_images);
-  if (auto v = obj.get("metric")) axis.metric = as_enum(*v, sweep_metrics);
-  return axis;
 }
 
 SweepSettings settings_of(const Lpv& lpv) {
@@ -134,6 +124,14 @@ void check_configurations(const SweepRequest& sweep) {
 
 }  // namespace
 
+ParetoAxis reader::read_pareto_axis(const Field& f) {
+  const Object obj(f, axis_keys);
+  ParetoAxis axis;
+  if (auto v = obj.get("image")) axis.image = as_enum(*v, sweep_images);
+  if (auto v = obj.get("metric")) axis.metric = as_enum(*v, sweep_metrics);
+  return axis;
+}
+
 std::string to_string(MetricMask m) {
   switch (m) {
     case MetricMask::all: return "all";
@@ -170,7 +168,7 @@ SweepRequest parse_sweep_request(std::string_view json_text) {
   if (auto v = obj.get("parameters")) sweep.parameters = read_parameters(*v);
   if (auto v = obj.get("lpv_off_row")) sweep.lpv_off_row = as_bool(*v);
   if (auto v = obj.get("reference")) sweep.reference = read_reference(*v);
-  if (auto v = obj.get("axis")) sweep.axis = read_axis(*v);
+  if (auto v = obj.get("axis")) sweep.axis = reader::read_pareto_axis(*v);
   if (auto v = obj.get("mask")) sweep.mask = as_enum(*v, masks);
   check_configurations(sweep);
   return sweep;

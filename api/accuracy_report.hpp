@@ -25,5 +25,7 @@ struct ReferenceReport {
 };
 
 nlohmann::json to_json(const ReferenceReport& report);
+// The inverse of to_json, as sweep_table_from_json reads a table (sweep_table_read.cpp).
+ReferenceReport reference_report_from_json(const nlohmann::json& json, const std::string& path = "reference");
 
 }  // namespace api

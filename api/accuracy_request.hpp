@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -81,8 +82,13 @@ std::string to_string(MetricMask m);
 CompareRequest parse_compare_request(std::string_view json_text);
 SweepRequest parse_sweep_request(std::string_view json_text);
 
-// Every combination of the parameters (the first parameter varies slowest: grid, iterations,
-// cascades, rsm, vpl_downsample, bounces, occlusion), after the LPV-off row when asked for.
+// The keys of a sweep's "parameters", in the order sweep_configurations varies them: the
+// first varies slowest.
+inline constexpr std::array<std::string_view, 9> sweep_parameter_keys{
+    "grid", "iterations", "cascades", "rsm", "vpl_downsample", "bounces", "occlusion", "transfer", "blocking"};
+
+// Every combination of the parameters (the first of sweep_parameter_keys varies slowest),
+// after the LPV-off row when asked for.
 std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep);
 // The base request with one configuration's settings.
 RenderRequest request_for(const RenderRequest& base, const SweepSettings& settings);

@@ -5,7 +5,9 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <array>
 #include <cstdint>
+#include <utility>
 
 namespace api {
 
@@ -24,6 +26,18 @@ struct ErrorMetrics {
   double mean_signed_error = 0.0;  // bias: mean of x - r (negative: darker than the reference)
   std::uint64_t pixels = 0;        // pixels in the mask
 };
+
+// The double fields, in declaration order, with their names in JSON and CSV: every writer and
+// reader goes through this one list, so none can miss a field. `pixels` is the only other.
+inline constexpr std::array<std::pair<const char*, double ErrorMetrics::*>, 7> error_metric_fields{{
+    {"rmse", &ErrorMetrics::rmse},
+    {"relative_mse", &ErrorMetrics::relative_mse},
+    {"psnr_db", &ErrorMetrics::psnr_db},
+    {"ssim", &ErrorMetrics::ssim},
+    {"mean_abs_error", &ErrorMetrics::mean_abs_error},
+    {"max_abs_error", &ErrorMetrics::max_abs_error},
+    {"mean_signed_error", &ErrorMetrics::mean_signed_error},
+}};
 
 // Every field; a non-finite value (the PSNR of identical images, +inf) is written as null,
 // JSON having no infinity. Defined in sweep_table.cpp beside the CSV form.

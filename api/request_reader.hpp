@@ -4,6 +4,7 @@
 
 #include "api/json_reader.hpp"
 #include "api/render_request.hpp"
+#include "api/sweep_table.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -20,5 +21,8 @@ std::uint32_t read_vpl_downsample(const Field& f);
 Transfer read_transfer(const Field& f);
 // "blocking": "projected" or "sh_lobe".
 Blocking read_blocking(const Field& f);
+// A sweep's "axis": {"image": "final" | "indirect", "metric": "rmse" | ...}. Defined in
+// accuracy_json.cpp.
+ParetoAxis read_pareto_axis(const Field& f);
 
 }  // namespace api::reader

@@ -16,18 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-// The double fields of ErrorMetrics, in declaration order: CSV and JSON both write from this
-// one list so neither can miss a field. `pixels` is the only other field.
-constexpr std::array<std::pair<const char*, double ErrorMetrics::*>, 7> error_fields{{
-    {"rmse", &ErrorMetrics::rmse},
-    {"relative_mse", &ErrorMetrics::relative_mse},
-    {"psnr_db", &ErrorMetrics::psnr_db},
-    {"ssim", &ErrorMetrics::ssim},
-    {"mean_abs_error", &ErrorMetrics::mean_abs_error},
-    {"max_abs_error", &ErrorMetrics::max_abs_error},
-    {"mean_signed_error", &ErrorMetrics::mean_signed_error},
-}};
-
 // ---- CSV ------------------------------------------------------------------------
 
 // The shortest text that reads back as the same double; inf, -inf and nan otherwise.
@@ -81,7 +69,7 @@ std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
                                      "cascades", "rsm",    "vpl_downsample", "bounces", "occlusion", "transfer", "blocking",
                                      "frames",   "gpu_ms", "gpu_ms_min",     "gpu_ms_max", "wall_ms"};
   for (const char* image : {"final_", "indirect_"}) {
-    for (const auto& [name, field] : error_fields) header.push_back(std::string(image) + name);
+    for (const auto& [name, field] : error_metric_fields) header.push_back(std::string(image) + name);
     header.push_back(std::string(image) + "pixels");
   }
   header.push_back("pareto");
@@ -110,7 +98,7 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
                                      number_text(row.gpu_ms_range.second),
                                      number_text(row.wall_ms)};
   for (const ErrorMetrics* errors : {&row.final_error, &row.indirect_error}) {
-    for (const auto& [name, field] : error_fields) fields.push_back(number_text(errors->*field));
+    for (const auto& [name, field] : error_metric_fields) fields.push_back(number_text(errors->*field));
     fields.push_back(std::to_string(errors->pixels));
   }
   fields.push_back(bool_text(row.pareto));
@@ -154,7 +142,7 @@ json settings_json(const SweepSettings& s) {
 
 nlohmann::json to_json(const ErrorMetrics& errors) {
   json j = json::object();
-  for (const auto& [name, field] : error_fields) j[name] = number_json(errors.*field);
+  for (const auto& [name, field] : error_metric_fields) j[name] = number_json(errors.*field);
   j["pixels"] = errors.pixels;
   return j;
 }

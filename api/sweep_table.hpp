@@ -107,6 +107,10 @@ std::string to_csv(const SweepTable& table);
 nlohmann::json to_json(const SweepRow& row);
 // {"axis": {"image": "final", "metric": "rmse"}, "rows": [to_json(row), ...]}
 nlohmann::json to_json(const SweepTable& table);
+// The inverse of to_json (a null number is NaN, but a null psnr_db is +inf, as in
+// to_json(ErrorMetrics)); members it does not know are ignored. Throws RequestError naming
+// the field that is missing or wrong, with `path` before it. Defined in sweep_table_read.cpp.
+SweepTable sweep_table_from_json(const nlohmann::json& json, const std::string& path = "table");
 
 // A self-contained SVG (no script, no external font or link), 720x480: GPU time against
 // error_of, both on log scales, every row a circle with a tooltip, the rows marked pareto

@@ -83,6 +83,24 @@ check "the same cases in the same order" \
   test "$(grep -o '"name": "[^"]*"' http.json)" = "$(grep -o '"name": "[^"]*"' fanned.json)"
 check "the same images" test "$(grep -o '"sha256": "[0-9a-f]*"' http.json)" = "$(grep -o '"sha256": "[0-9a-f]*"' fanned.json)"
 check "every image there" test "$(grep -c '"sha256"' fanned.json)" -eq 3
+# sweep --url --jobs 2: the server sweeps in two parts at once; the rows are a local sweep's,
+# settings and errors (the times are the server's).
+cat >sweep.json <<'JSON'
+{"base": {"output": {"width": 32, "height": 24}}, "parameters": {"grid": [8, 12], "occlusion": [true, false]},
+ "reference": {"samples": 4}}
+JSON
+run sweep sweep.json -q -o local-sweep
+run sweep sweep.json --url "$url" --jobs 2 -q -o served-sweep
+check "sweep --url --jobs 2 exits 0" test "$rc" -eq 0
+for f in sweep.json sweep.csv sweep.md sweep.svg; do check "the served sweep writes $f" test -s "served-sweep/$f"; done
+untimed_columns() {  # the CSV without its time, frame and front columns
+  awk -F, 'NR == 1 { for (c = 1; c <= NF; ++c) keep[c] = $c !~ /gpu_ms|wall_ms|frames|pareto/ }
+           { line = ""; for (c = 1; c <= NF; ++c) if (keep[c]) line = line $c ","; print line }' "$1"
+}
+check "the served sweep has the 5 rows" test "$(wc -l <served-sweep/sweep.csv)" -eq 6
+check "the served sweep's rows are the local one's, in its order" \
+  test "$(untimed_columns local-sweep/sweep.csv)" = "$(untimed_columns served-sweep/sweep.csv)"
+check "its front is marked" grep -q '"pareto": true' served-sweep/sweep.json
 kill "$server_pid"; wait "$server_pid" 2>/dev/null; server_pid=""
 
 # --- ab: this build against itself, render by render --------------------------------------

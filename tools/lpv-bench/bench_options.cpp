@@ -21,6 +21,7 @@ sweep    renders the reference once, then every configuration of LPV settings th
          request lists (the schema of POST /v1/sweep), and writes the accuracy-versus-
          time table: sweep.json, sweep.csv, sweep.md (Markdown) and sweep.svg (error
          against GPU time, Pareto front highlighted). A progress bar on standard error.
+         With --url, a server sweeps (in --jobs parts at once) and this writes the files.
 diff     compares a render with a second setting or with the reference (the schema of
          POST /v1/compare): writes base.png, other.png, difference.png (heat map),
          base.exr, other.exr (linear) and compare.json (metrics, stats, reference).
@@ -56,13 +57,16 @@ run, ab, worker:
   --no-server            skip the server_round_trip cases instead
   --test-slowdown F      make every frame F times as slow (busy CPU; default 1): a known
                          regression, for testing the verdicts (bench/verdict-rates.sh)
+run, sweep:
+  --url URL              run: render every case through this lpv-server (POST /v1/render);
+                         sweep: sweep through it (POST /v1/sweep); $LPV_SERVER_TOKEN is
+                         sent as its bearer token
+  -j, --jobs N           with --url, N requests at once, each on its own connection (default
+                         1): run, N cases; sweep, N parts of the sweep. Behind a load
+                         balancer, N replicas work together; the results have a serial run's
+                         cases, images and rows, in its order
 run:
   --repetitions N        timed renders per case (default: the suite's)
-  --url URL              render every case through this lpv-server (POST /v1/render;
-                         $LPV_SERVER_TOKEN is sent as its bearer token)
-  -j, --jobs N           with --url: N cases at once, each on its own connection (default 1):
-                         behind a load balancer, N replicas render the suite together; the
-                         cases, images and order of the results are a serial run's
   --label NAME           the run's name in reports (default: the commit)
   --commit ID            the commit to record (default: the build's, or $LPV_BENCH_COMMIT)
 run, compare, ab:
@@ -145,8 +149,9 @@ const std::vector<Flag>& flags() {
       {"--out", "-o", kAll & ~bit(Command::worker), [](Options& o, S v) { o.out = v; }},
       {"--device", "", kRenders, [](Options& o, S v) { o.device = v; }},
       {"--quiet", "-q", kAll, [](Options& o, S) { o.quiet = true; }, false},
-      {"--url", "", bit(Command::run), [](Options& o, S v) { o.url = v; }},
-      {"--jobs", "-j", bit(Command::run), [](Options& o, S v) { o.jobs = number<std::uint32_t>("--jobs", v, 1, 64); }},
+      {"--url", "", bit(Command::run) | bit(Command::sweep), [](Options& o, S v) { o.url = v; }},
+      {"--jobs", "-j", bit(Command::run) | bit(Command::sweep),
+       [](Options& o, S v) { o.jobs = number<std::uint32_t>("--jobs", v, 1, 64); }},
       {"--repetitions", "", bit(Command::run),
        [](Options& o, S v) { o.repetitions = number<std::uint32_t>("--repetitions", v, 1, 1000); }},
       {"--warmup", "", kSuites, [](Options& o, S v) { o.warmup = number<std::uint32_t>("--warmup", v, 0, 100); }},
@@ -196,7 +201,7 @@ void check_inputs(const Options& o) {
   }
   if (o.inputs.size() > wanted) throw UsageError("unexpected argument '" + o.inputs[wanted] + "'");
   if (o.jobs > 1 && !o.url)
-    throw UsageError("--jobs needs --url: in this process one device renders one case at a time");
+    throw UsageError("--jobs needs --url: in this process one device renders one thing at a time");
   if (o.command == Command::ab && (!o.build_a || !o.build_b))
     throw UsageError("ab needs both builds: --a PATH_TO_LPV_BENCH_A --b PATH_TO_LPV_BENCH_B");
 }

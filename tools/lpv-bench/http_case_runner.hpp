@@ -4,11 +4,11 @@
 #pragma once
 
 #include "renderer/bench/suite_runner.hpp"
+#include "server_connection.hpp"
 
 #include <httplib.h>
 
 #include <map>
-#include <memory>
 #include <string>
 
 namespace bench {
@@ -31,10 +31,7 @@ class HttpCaseRunner : public CaseRunner {
   nlohmann::json request_body(const api::BenchCase& c);  // a scene file is uploaded once, then named by its id
   httplib::Result post_render(const nlohmann::json& body, bool want_json);
 
-  std::runtime_error failure(const std::string& what, const httplib::Result& result) const;
-
-  std::string url_;
-  std::unique_ptr<httplib::Client> client_;
+  ServerConnection server_;
   std::map<std::string, std::string> uploaded_;  // scene file -> scene id
 };
 

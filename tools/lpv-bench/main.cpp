@@ -8,6 +8,7 @@
 #include "api/request_json.hpp"
 #include "bench_options.hpp"
 #include "commands.hpp"
+#include "http_sweep.hpp"
 #include "input_files.hpp"
 #include "lab.hpp"
 #include "tools/common/progress_bar.hpp"
@@ -39,8 +40,8 @@ std::string read_request_text(const std::string& file) {
   return text.str();
 }
 
-int run_sweep(const bench::Options& options, const std::string& text) {
-  const api::SweepRequest request = api::parse_sweep_request(text);
+// On this machine's device, with the progress of each stage.
+accuracy::SweepResult sweep_here(const bench::Options& options, const api::SweepRequest& request) {
   const std::size_t total = api::sweep_configurations(request).size();
   bench::Lab lab(options);
   tools::ProgressBar bar(!options.quiet);
@@ -56,8 +57,27 @@ int run_sweep(const bench::Options& options, const std::string& text) {
     bar.update("timing", double(done) / double(frames),
                "frame " + std::to_string(done) + "/" + std::to_string(frames) + ", rows interleaved");
   };
-  const accuracy::SweepResult result = accuracy::sweep(lab.bench, request, observer);
+  accuracy::SweepResult result = accuracy::sweep(lab.bench, request, observer);
   bar.finish();
+  return result;
+}
+
+// Through a running server, in --jobs parts at once.
+accuracy::SweepResult sweep_through_server(const bench::Options& options, const std::string& text) {
+  tools::ProgressBar bar(!options.quiet);
+  bar.update("sweep", 0.0, "through " + *options.url);
+  accuracy::SweepResult result =
+      bench::sweep_through(*options.url, nlohmann::json::parse(text), options.jobs, [&](std::size_t done, std::size_t parts) {
+        bar.update("sweep", double(done) / double(parts),
+                   std::to_string(done) + "/" + std::to_string(parts) + " parts through " + *options.url);
+      });
+  bar.finish();
+  return result;
+}
+
+int run_sweep(const bench::Options& options, const std::string& text) {
+  const api::SweepRequest request = api::parse_sweep_request(text);
+  const accuracy::SweepResult result = options.url ? sweep_through_server(options, text) : sweep_here(options, request);
 
   const std::filesystem::path dir = options.out.value_or(".");
   std::filesystem::create_directories(dir);
