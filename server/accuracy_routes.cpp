@@ -6,7 +6,7 @@
 #include "api/sweep_table.hpp"
 #include "renderer/image/png.hpp"
 #include "server/accuracy_jobs.hpp"
-#include "server/base64.hpp"
+#include "core/base64.hpp"
 #include "server/http_errors.hpp"
 #include "server/request_log.hpp"
 
@@ -20,7 +20,7 @@ namespace {
 // How often a streamed sweep checks on its client while nothing happens.
 constexpr auto kStreamPoll = std::chrono::milliseconds(250);
 
-std::string png_base64(const image::Rgba8Image& picture) { return base64_encode(image::encode_png(picture)); }
+std::string png_base64(const image::Rgba8Image& picture) { return core::base64_encode(image::encode_png(picture)); }
 
 nlohmann::json side_json(const accuracy::CompareSide& side) {
   nlohmann::json j = {{"label", side.label}, {"image", png_base64(side.display)}};

@@ -2,7 +2,7 @@
 
 #include "api/request_json.hpp"
 #include "renderer/output.hpp"
-#include "server/base64.hpp"
+#include "core/base64.hpp"
 #include "server/request_log.hpp"
 #include "server/route_support.hpp"
 
@@ -73,7 +73,7 @@ void send_render_result(httplib::Response& response, renderer::RenderResult& res
           {"media_type", renderer::media_type(format)},
           {"width", result.stats.width},
           {"height", result.stats.height},
-          {"base64", base64_encode(bytes)}}}};
+          {"base64", core::base64_encode(bytes)}}}};
     send_json(response, body, 200, kImageJson);
   } else {
     std::string omitted;

@@ -11,7 +11,7 @@
 #include "server/request_log.hpp"
 #include "server/render_response.hpp"
 #include "server/scene_report.hpp"
-#include "server/utc_time.hpp"
+#include "core/utc_time.hpp"
 #include "server/web_routes.hpp"
 
 #include <nlohmann/json.hpp>
@@ -373,7 +373,7 @@ void install_routes(httplib::Server& http, Service& service) {
     const std::optional<double> ms = request_elapsed_ms();
     const std::string route = route_pattern(request.path);
     service.metrics.count_request(route, known_method(request.method), response.status, ms.value_or(0.0) / 1000.0);
-    nlohmann::json line = {{"time", utc_timestamp()},
+    nlohmann::json line = {{"time", core::utc_timestamp()},
                            {"method", request.method},
                            {"path", loggable_path(request.path)},
                            {"status", response.status},

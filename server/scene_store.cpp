@@ -4,8 +4,8 @@
 
 #include "server/durable_files.hpp"
 #include "server/scene_report.hpp"
-#include "server/sha256.hpp"
-#include "server/utc_time.hpp"
+#include "core/sha256.hpp"
+#include "core/utc_time.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -115,7 +115,7 @@ scene::Scene SceneStore::load_bytes(std::string_view bytes, const std::string& i
 }
 
 SceneStore::Added SceneStore::add(std::string_view bytes, const std::string& name) {
-  const std::string id = sha256_hex(bytes);
+  const std::string id = core::sha256_hex(bytes);
   if (std::optional<nlohmann::json> stored = report(id)) return {std::move(*stored), false};
   check_room(bytes.size());  // before the slow part too: a full store decodes nothing
   // Loading is the validation and the slow part: no lock is held meanwhile.
@@ -125,7 +125,7 @@ SceneStore::Added SceneStore::add(std::string_view bytes, const std::string& nam
   if (std::optional<nlohmann::json> stored = report(id)) return {std::move(*stored), false};  // raced
   check_room(bytes.size());  // again: other uploads may have filled it meanwhile
   Entry entry;
-  entry.report = uploaded_scene_report(scene, {id, name.empty() ? id : name, bytes.size(), utc_timestamp()});
+  entry.report = uploaded_scene_report(scene, {id, name.empty() ? id : name, bytes.size(), core::utc_timestamp()});
   if (in_memory()) {
     entry.bytes = std::make_shared<const std::string>(bytes);
   } else {

@@ -2,8 +2,8 @@
 
 #include "renderer/image/metrics.hpp"
 #include "renderer/image/pfm.hpp"
-#include "server/base64.hpp"
-#include "server/sha256.hpp"
+#include "core/base64.hpp"
+#include "core/sha256.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -20,7 +20,7 @@ std::string size_text(std::uint32_t width, std::uint32_t height) {
 }
 
 image::RgbaF32Image decode_thumbnail(const api::BenchImage& image, const char* side) {
-  const auto bytes = server::base64_decode(image.thumbnail_pfm_base64);
+  const auto bytes = core::base64_decode(image.thumbnail_pfm_base64);
   if (!bytes) throw std::invalid_argument(std::string("the ") + side + "'s thumbnail is not base64");
   image::RgbaF32Image decoded = image::decode_pfm(*bytes);
   if (decoded.width != image.thumbnail_width || decoded.height != image.thumbnail_height)
@@ -59,12 +59,12 @@ api::BenchImage fingerprint(const image::RgbaF32Image& linear) {
   const std::vector<std::uint8_t> pfm = image::encode_pfm(linear);
   const image::RgbaF32Image small = thumbnail(linear, api::bench_thumbnail_side);
   api::BenchImage result;
-  result.sha256 = server::sha256_hex(std::string_view(reinterpret_cast<const char*>(pfm.data()), pfm.size()));
+  result.sha256 = core::sha256_hex(std::string_view(reinterpret_cast<const char*>(pfm.data()), pfm.size()));
   result.width = linear.width;
   result.height = linear.height;
   result.thumbnail_width = small.width;
   result.thumbnail_height = small.height;
-  result.thumbnail_pfm_base64 = server::base64_encode(image::encode_pfm(small));
+  result.thumbnail_pfm_base64 = core::base64_encode(image::encode_pfm(small));
   return result;
 }
 

@@ -1,6 +1,6 @@
 #include "renderer/bench/suite_fan_out.hpp"
 
-#include "server/utc_time.hpp"
+#include "core/utc_time.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -40,7 +40,7 @@ api::BenchResults run_suite_fanned(const api::BenchSuite& suite, const std::vect
   if (runners.empty()) throw std::invalid_argument("run_suite_fanned needs a runner");
   if (suite.cases.empty()) return run_suite(suite, runners.front(), options, observer);
   const auto start = std::chrono::steady_clock::now();
-  const std::string started_at = server::utc_timestamp();
+  const std::string started_at = core::utc_timestamp();
   const std::size_t per_case = 1 + options.warmup + options.repetitions;
   const std::size_t total = suite.cases.size() * per_case;
 

@@ -3,7 +3,7 @@
 #include "api/request_json.hpp"
 #include "renderer/bench/build_info.hpp"
 #include "renderer/bench/machine_noise.hpp"
-#include "server/utc_time.hpp"
+#include "core/utc_time.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -131,7 +131,7 @@ std::vector<api::BenchResults> run_sides(const api::BenchSuite& suite, const std
     api::BenchResults results;
     results.suite = suite.name;
     results.suite_version = suite.version;
-    results.started_at = server::utc_timestamp();
+    results.started_at = core::utc_timestamp();
     results.repetitions = options.repetitions;
     results.warmup = options.warmup;
     results.machine = this_machine();

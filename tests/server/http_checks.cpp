@@ -1,6 +1,6 @@
 #include "http_checks.hpp"
 
-#include "server/base64.hpp"
+#include "core/base64.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
@@ -70,7 +70,7 @@ std::optional<ImageSize> png_size(const std::string& bytes) {
 }
 
 std::string base64_decode(const std::string& text) {
-  const auto bytes = server::base64_decode(text);
+  const auto bytes = core::base64_decode(text);
   return bytes ? std::string(bytes->begin(), bytes->end()) : std::string();
 }
 

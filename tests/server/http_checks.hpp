@@ -23,7 +23,7 @@ struct ImageSize {
 // Decodes a PNG with stb_image; empty when the bytes are not a PNG.
 std::optional<ImageSize> png_size(const std::string& bytes);
 
-// The bytes of strict base64 text (server::base64_decode); empty when it is not base64.
+// The bytes of strict base64 text (core::base64_decode); empty when it is not base64.
 std::string base64_decode(const std::string& text);
 
 // Sends `bytes` as they are on a new loopback connection to `port` (what no HTTP client

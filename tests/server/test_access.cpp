@@ -1,5 +1,5 @@
 #include "server/access.hpp"
-#include "server/base64.hpp"
+#include "core/base64.hpp"
 
 #include <gtest/gtest.h>
 
@@ -75,7 +75,7 @@ TEST(Access, LoopbackHosts) {
 
 TEST(Base64, MatchesRfc4648TestVectors) {
   auto encode = [](std::string_view s) {
-    return base64_encode(std::span(reinterpret_cast<const std::uint8_t*>(s.data()), s.size()));
+    return core::base64_encode(std::span(reinterpret_cast<const std::uint8_t*>(s.data()), s.size()));
   };
   EXPECT_EQ(encode(""), "");
   EXPECT_EQ(encode("f"), "Zg==");
@@ -85,17 +85,17 @@ TEST(Base64, MatchesRfc4648TestVectors) {
   EXPECT_EQ(encode("fooba"), "Zm9vYmE=");
   EXPECT_EQ(encode("foobar"), "Zm9vYmFy");
   const std::vector<std::uint8_t> high = {0xff, 0xfe, 0xfd};
-  EXPECT_EQ(base64_encode(high), "//79");
+  EXPECT_EQ(core::base64_encode(high), "//79");
 }
 
 TEST(Base64, DecodeInvertsEncodeAndRejectsWhatIsNotStrictBase64) {
   for (std::string_view s : {"", "f", "fo", "foo", "foob", "fooba", "foobar"}) {
     const std::vector<std::uint8_t> bytes(s.begin(), s.end());
-    EXPECT_EQ(base64_decode(base64_encode(bytes)), bytes) << s;
+    EXPECT_EQ(core::base64_decode(core::base64_encode(bytes)), bytes) << s;
   }
-  EXPECT_EQ(base64_decode("//79"), (std::vector<std::uint8_t>{0xff, 0xfe, 0xfd}));
+  EXPECT_EQ(core::base64_decode("//79"), (std::vector<std::uint8_t>{0xff, 0xfe, 0xfd}));
   for (std::string_view bad : {"Zg=", "Zg", "Z===", "Zm9v\n", "Zm*v", "=Zm9", "Zg==Zg=="})
-    EXPECT_FALSE(base64_decode(bad).has_value()) << bad;
+    EXPECT_FALSE(core::base64_decode(bad).has_value()) << bad;
 }
 
 }  // namespace

@@ -3,9 +3,9 @@
 
 #include <string>
 
-namespace server {
+namespace core {
 
 // Now, as ISO 8601 UTC with milliseconds: "2024-05-01T12:34:56.789Z".
 std::string utc_timestamp();
 
-}  // namespace server
+}  // namespace core

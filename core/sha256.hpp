@@ -4,9 +4,9 @@
 #include <string>
 #include <string_view>
 
-namespace server {
+namespace core {
 
 // 64 lowercase hex digits. Uses OpenSSL's EVP interface.
 std::string sha256_hex(std::string_view bytes);
 
-}  // namespace server
+}  // namespace core

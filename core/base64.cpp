@@ -1,6 +1,6 @@
-#include "server/base64.hpp"
+#include "core/base64.hpp"
 
-namespace server {
+namespace core {
 namespace {
 
 constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -51,4 +51,4 @@ std::optional<std::vector<std::uint8_t>> base64_decode(std::string_view text) {
   return out;
 }
 
-}  // namespace server
+}  // namespace core

@@ -1,10 +1,10 @@
-#include "server/utc_time.hpp"
+#include "core/utc_time.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 
-namespace server {
+namespace core {
 
 std::string utc_timestamp() {
   const auto now = std::chrono::system_clock::now();
@@ -19,4 +19,4 @@ std::string utc_timestamp() {
   return with_ms;
 }
 
-}  // namespace server
+}  // namespace core
