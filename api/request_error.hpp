@@ -1,4 +1,8 @@
-// The one error type for a request that cannot be served as asked.
+// A request that cannot be served as asked, in three kinds a client answers differently:
+// RequestError itself, the request is invalid (fix the request); NotFound, it names what does
+// not exist (a scene); DoesNotFit, it is valid but this scene, device or server cannot serve
+// it (a grid over the device's buffers, a light edit past the scene's lights). The server
+// answers them 400, 404 and 422 (server/http_errors.hpp), by type.
 // `field` is a JSON path into the request ("output.width", "lights[2].intensity"),
 // empty when the problem is the document as a whole (e.g. malformed JSON).
 #pragma once
@@ -18,6 +22,16 @@ class RequestError : public std::runtime_error {
 
  private:
   std::string field_;
+};
+
+class NotFound : public RequestError {
+ public:
+  using RequestError::RequestError;
+};
+
+class DoesNotFit : public RequestError {
+ public:
+  using RequestError::RequestError;
 };
 
 }  // namespace api

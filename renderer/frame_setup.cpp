@@ -37,7 +37,7 @@ std::pair<float, float> depth_range_around(glm::vec3 from, const scene::Bounds& 
 void check_cones(const api::Light& light, const std::string& field) {
   if (light.type != api::LightType::spot) return;
   if (!(light.inner_cone_deg >= 0.0f && light.inner_cone_deg < light.outer_cone_deg && light.outer_cone_deg <= 90.0f))
-    throw api::RequestError(field, "spot cones must satisfy 0 <= inner_cone_deg < outer_cone_deg <= 90, got " +
+    throw api::DoesNotFit(field, "spot cones must satisfy 0 <= inner_cone_deg < outer_cone_deg <= 90, got " +
                                        std::to_string(light.inner_cone_deg) + " and " +
                                        std::to_string(light.outer_cone_deg));
 }
@@ -54,7 +54,7 @@ std::vector<api::Light> resolve_lights(const scene::Scene& scene, const api::Ren
     const api::LightEdit& edit = request.light_edits[i];
     const std::string field = "light_edits[" + std::to_string(i) + "]";
     if (edit.index >= lights.size())
-      throw api::RequestError(field + ".index", "no light " + std::to_string(edit.index) + ": there " +
+      throw api::DoesNotFit(field + ".index", "no light " + std::to_string(edit.index) + ": there " +
                                                     (lights.size() == 1 ? "is " : "are ") +
                                                     api::counted(lights.size(), "light"));
     api::apply_edit(lights[edit.index], edit);

@@ -13,7 +13,7 @@
 namespace renderer {
 
 // The scene's lights, replaced by request.lights if given, then patched by request.light_edits.
-// Throws api::RequestError naming the field for an edit that does not fit the scene.
+// Throws api::DoesNotFit naming the field for an edit that does not fit the scene.
 std::vector<api::Light> resolve_lights(const scene::Scene& scene, const api::RenderRequest& request);
 
 struct CameraSetup {

@@ -222,7 +222,7 @@ Renderer::Impl::Residency Renderer::Impl::resident(const std::string& name) {
   if (!loaded) {
     std::string names;
     for (const auto& info : scene::builtin_scenes()) names += (names.empty() ? "" : ", ") + info.name;
-    throw api::RequestError("scene", "unknown scene '" + name + "'; built-in scenes: " + names);
+    throw api::NotFound("scene", "unknown scene '" + name + "'; built-in scenes: " + names);
   }
   const double load_ms = ms_since(load_start);
   const auto upload_start = Clock::now();
@@ -284,7 +284,7 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
   const std::uint32_t shadow_res = plan.run[kShadow] ? request.shadows.resolution : 1;
   const std::uint64_t atlas_bytes = std::uint64_t(shadow_res) * shadow_res * shadow_layers * 4;
   if (atlas_bytes > kShadowAtlasBudgetBytes)
-    throw api::RequestError("shadows.resolution", api::counted(shadow_layers, "shadow map") + " of " +
+    throw api::DoesNotFit("shadows.resolution", api::counted(shadow_layers, "shadow map") + " of " +
                                                       std::to_string(shadow_res) + "^2 need " + mib(atlas_bytes) +
                                                       ", over the budget of " + mib(kShadowAtlasBudgetBytes) +
                                                       ": lower the resolution");
@@ -294,25 +294,25 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
   const std::uint64_t rsm_bytes =
       std::uint64_t(request.lpv.rsm_resolution) * request.lpv.rsm_resolution * rsm_layers * RsmMaps::kBytesPerTexel;
   if (lpv && rsm_bytes > kRsmBudgetBytes)
-    throw api::RequestError("lpv.rsm", api::counted(rsm_layers, "reflective shadow map") + " of " +
+    throw api::DoesNotFit("lpv.rsm", api::counted(rsm_layers, "reflective shadow map") + " of " +
                                            std::to_string(request.lpv.rsm_resolution) + "^2 need " + mib(rsm_bytes) +
                                            ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
   const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
                             std::to_string(request.lpv.grid.z) + " cells";
   const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades);
   if (lpv && lpv_bytes > kLpvBudgetBytes)
-    throw api::RequestError("lpv.grid", api::counted(request.lpv.cascades, "cascade") + " of " + cells + " need " +
+    throw api::DoesNotFit("lpv.grid", api::counted(request.lpv.cascades, "cascade") + " of " + cells + " need " +
                                             mib(lpv_bytes) + ", over the budget of " + mib(kLpvBudgetBytes) +
                                             ": use fewer cells");
   const std::uint64_t buffer_bytes = LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades);
   const std::uint64_t buffer_range = device.info().limits.maxStorageBufferRange;
   if (lpv && buffer_bytes > buffer_range)
-    throw api::RequestError("lpv.grid", cells + " need a storage buffer of " + mib(buffer_bytes) +
+    throw api::DoesNotFit("lpv.grid", cells + " need a storage buffer of " + mib(buffer_bytes) +
                                             "; this device binds at most " + mib(buffer_range) + ": use fewer cells");
   const std::uint64_t texels = buffer_bytes / vkx::TexelBuffer::kTexelBytes;
   const std::uint64_t texel_limit = device.info().limits.maxTexelBufferElements;
   if (lpv && texels > texel_limit)
-    throw api::RequestError("lpv.grid", cells + " need a texel buffer of " + std::to_string(texels) +
+    throw api::DoesNotFit("lpv.grid", cells + " need a texel buffer of " + std::to_string(texels) +
                                             " texels; this device binds at most " + std::to_string(texel_limit) +
                                             ": use fewer cells");
   if (!targets || targets->width != out.width || targets->height != out.height) {

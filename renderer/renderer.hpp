@@ -107,7 +107,8 @@ class Renderer {
   Renderer& operator=(const Renderer&) = delete;
 
   // Renders the scene the request names (built in, or from the scene source); throws
-  // api::RequestError for an unknown scene or a request that does not fit the scene, and
+  // api::NotFound for an unknown scene, api::DoesNotFit for a request that does not fit the
+  // scene or the device, and
   // scene::LoadError when the source cannot load it.
   RenderResult render(const api::RenderRequest& request, unsigned readback);
   RenderResult render(const api::RenderRequest& request) { return render(request, readback_for(request.output)); }

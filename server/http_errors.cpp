@@ -42,9 +42,10 @@ HttpError parse_error(const api::RequestError& error) {
 
 HttpError limit_error(const LimitExceeded& error) { return {422, "limit_exceeded", error.what(), error.field()}; }
 
-HttpError render_error(const api::RequestError& error) {
-  if (error.field() == "scene") return {404, "scene_not_found", message_of(error), "scene"};
-  return {422, "does_not_fit", message_of(error), error.field()};
+HttpError request_error(const api::RequestError& error) {
+  if (dynamic_cast<const api::NotFound*>(&error)) return {404, "scene_not_found", message_of(error), error.field()};
+  if (dynamic_cast<const api::DoesNotFit*>(&error)) return {422, "does_not_fit", message_of(error), error.field()};
+  return parse_error(error);
 }
 
 HttpError unknown_scene(const std::string& name, const std::string& field) {

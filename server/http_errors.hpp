@@ -27,9 +27,9 @@ void send_error(httplib::Response& response, const HttpError& error);
 HttpError parse_error(const api::RequestError& error);
 // The request is valid but over this server's limits: 422.
 HttpError limit_error(const LimitExceeded& error);
-// The renderer refused a valid request: unknown scene 404, otherwise it does not fit
-// the scene or the device budgets: 422.
-HttpError render_error(const api::RequestError& error);
+// Any of the three kinds by its type (api/request_error.hpp): api::NotFound 404
+// scene_not_found, api::DoesNotFit 422 does_not_fit, otherwise as parse_error: 400.
+HttpError request_error(const api::RequestError& error);
 // A body over `limit_bytes`, which `flag` sets: 413.
 HttpError payload_too_large(std::size_t limit_bytes, const std::string& flag);
 // Neither a built-in scene nor an uploaded one: 404, naming `field` (where the request

@@ -129,7 +129,7 @@ bool answer_job_error(const Job& job, httplib::Response& response, Service& serv
                           "stopped before it finished: past its deadline, or the server is shutting down", ""});
   } catch (const api::RequestError& e) {
     service.metrics.count_render("rejected");
-    send_error(response, render_error(e));
+    send_error(response, request_error(e));
   } catch (const scene::LoadError& e) {
     // A stored scene over limits lowered since it was uploaded.
     service.metrics.count_render("rejected");

@@ -33,7 +33,7 @@ struct Comparison {
   api::MetricMask mask = api::MetricMask::surfaces;
 };
 
-// Throws api::RequestError when the request does not fit its scene, as a render does.
+// Throws api::NotFound or api::DoesNotFit as a render does.
 Comparison compare(Workbench& bench, const api::CompareRequest& request, const reference::Progress& progress = {});
 
 // The pixels `mask` selects, from what the reference saw (empty for "all": every pixel).

@@ -41,7 +41,7 @@ struct SweepResult {
 // The seed of the timed frames' order: fixed, so that a sweep repeats its own order.
 inline constexpr std::uint32_t kSweepOrderSeed = 20261125;
 
-// Throws api::RequestError when the base does not fit its scene, as a render does.
+// Throws api::NotFound or api::DoesNotFit as a render does.
 SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const SweepObserver& observer = {});
 
 }  // namespace accuracy
