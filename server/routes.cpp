@@ -9,6 +9,7 @@
 #include "server/client_connection.hpp"
 #include "server/http_errors.hpp"
 #include "server/request_log.hpp"
+#include "server/route_table.hpp"
 #include "server/render_response.hpp"
 #include "server/scene_report.hpp"
 #include "core/utc_time.hpp"
@@ -17,50 +18,11 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <array>
-#include <charconv>
-#include <regex>
 #include <string_view>
 #include <vector>
 
 namespace server {
 namespace {
-
-struct Route {
-  const char* regex;    // what httplib matches
-  const char* pattern;  // how docs and metrics name it
-  const char* methods;  // the methods it answers, as Allow lists them; others get 405
-  bool open = false;    // answered without the token: probes, and the web page, which holds no
-                        // data (the API calls it makes carry the token; it asks for it on a 401)
-  bool probe = false;   // answered whatever the Host: orchestrators probe by address
-};
-
-constexpr std::array kRoutes = {
-    Route{"/healthz", "/healthz", "GET", true, true},
-    Route{"/readyz", "/readyz", "GET", true, true},
-    Route{"/metrics", "/metrics", "GET"},
-    Route{"/v1/scenes", "/v1/scenes", "GET, POST"},
-    Route{"/v1/scenes/([^/]+)", "/v1/scenes/{id}", "GET, DELETE"},
-    Route{"/v1/device", "/v1/device", "GET"},
-    Route{"/v1/render", "/v1/render", "POST"},
-    Route{"/v1/compare", "/v1/compare", "POST"},
-    Route{"/v1/sweep", "/v1/sweep", "POST"},
-    Route{"/v1/bench", "/v1/bench", "POST"},
-    Route{kWebPageRoute, "/", "GET", true},  // the web page (docs/web.md) and its assets
-    Route{kWebAssetRoute, "/{asset}", "GET", true},
-};
-
-// The route `path` matches, or null.
-const Route* route_of(const std::string& path) {
-  static const std::vector<std::regex> compiled = [] {
-    std::vector<std::regex> regexes;
-    for (const Route& route : kRoutes) regexes.emplace_back(route.regex);
-    return regexes;
-  }();
-  for (std::size_t i = 0; i < kRoutes.size(); ++i)
-    if (std::regex_match(path, compiled[i])) return &kRoutes[i];
-  return nullptr;
-}
 
 // The longest a scene's name may be; it is only ever shown.
 constexpr std::size_t kMaxSceneNameBytes = 200;
@@ -216,29 +178,6 @@ void handle_readyz(httplib::Response& response, const RenderQueue& queue) {
   }
 }
 
-bool allows(const Route& route, std::string_view method) {
-  for (std::string_view rest = route.methods; !rest.empty();) {
-    const auto comma = rest.find(", ");
-    if (rest.substr(0, comma) == method) return true;
-    rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 2);
-  }
-  return false;
-}
-
-void install_method_not_allowed(httplib::Server& http, const Route& route) {
-  const httplib::Server::Handler refuse = [&route](const httplib::Request& request, httplib::Response& response) {
-    send_error(response, {405, "method_not_allowed",
-                          request.method + " is not allowed on " + route.pattern + "; use " + route.methods, ""});
-    response.set_header("Allow", route.methods);
-  };
-  if (!allows(route, "GET")) http.Get(route.regex, refuse);  // also HEAD
-  if (!allows(route, "POST")) http.Post(route.regex, refuse);
-  if (!allows(route, "PUT")) http.Put(route.regex, refuse);
-  if (!allows(route, "PATCH")) http.Patch(route.regex, refuse);
-  if (!allows(route, "DELETE")) http.Delete(route.regex, refuse);
-  http.Options(route.regex, refuse);
-}
-
 bool changes_state(const std::string& method) {
   return method == "POST" || method == "PUT" || method == "PATCH" || method == "DELETE";
 }
@@ -248,10 +187,10 @@ bool changes_state(const std::string& method) {
 // DNS-rebinding page reads the answers: 421); ever, change state from another origin (403).
 // Requests without Host or Origin come from no browser and pass.
 std::optional<HttpError> cross_site_refusal(const httplib::Request& request, const Service& service,
-                                            const HostPolicy& hosts) {
+                                            const HostPolicy& hosts, const RouteTable& routes) {
   const std::string host = request.get_header_value("Host");
   if (service.options.token.empty() && request.has_header("Host") && !hosts.allows(host)) {
-    const Route* route = route_of(request.path);
+    const Route* route = routes.find(request.path);
     if (!route || !route->probe)
       return HttpError{421, "misdirected_request",
                        "this server answers requests for loopback names and those --allowed-host names, not '" +
@@ -278,25 +217,82 @@ HostPolicy host_policy(const ServerOptions& options) {
   return HostPolicy(std::move(allowed));
 }
 
+std::vector<Route> probe_routes(const RenderQueue& queue) {
+  return {
+      {"/healthz", "/healthz", true, true,
+       {{"GET", [](const httplib::Request&, httplib::Response& response) { send_json(response, {{"status", "alive"}}); }}}},
+      {"/readyz", "/readyz", true, true,
+       {{"GET", [&queue](const httplib::Request&, httplib::Response& response) { handle_readyz(response, queue); }}}},
+  };
+}
+
+// Every route of the main listener: api/openapi.yaml's paths, then the web page.
+RouteTable service_routes(Service& service) {
+  using Request = httplib::Request;
+  using Response = httplib::Response;
+  using Content = httplib::ContentReader;
+  auto catalog = std::make_shared<const SceneCatalog>(service.scenes);
+  std::vector<Route> routes = probe_routes(service.queue);
+  const std::vector<Route> rest = {
+      {"/metrics", "/metrics", false, false,
+       {{"GET", [&service](const Request&, Response& response) {
+           const SceneStore::Totals stored = service.scenes.totals();
+           response.set_content(service.metrics.prometheus_text(service.queue.gauges(), {stored.scenes, stored.bytes}),
+                                "text/plain; version=0.0.4");
+         }}}},
+      {"/v1/scenes", "/v1/scenes", false, false,
+       {{"GET", [catalog](const Request&, Response& response) { send_json(response, catalog->list()); }},
+        {"POST", [&service](const Request& request, Response& response, const Content& content) {
+           handle_upload(request, response, content, service);
+         }}}},
+      {"/v1/scenes/([^/]+)", "/v1/scenes/{id}", false, false,
+       {{"GET", [catalog, &service](const Request& request, Response& response) {
+           handle_get_scene(request.matches[1].str(), response, *catalog, service.scenes);
+         }},
+        {"DELETE", [catalog, &service](const Request& request, Response& response) {
+           handle_delete_scene(request.matches[1].str(), response, *catalog, service.scenes);
+         }}}},
+      {"/v1/device", "/v1/device", false, false,
+       {{"GET", [&service](const Request&, Response& response) {
+           if (const auto report = service.queue.device_report()) return send_json(response, *report);
+           send_unavailable(response, "not_ready", "the render device is still starting");
+         }}}},
+      {"/v1/render", "/v1/render", false, false,
+       {{"POST", [&service](const Request& request, Response& response, const Content& content) {
+           handle_render(request, response, content, service);
+         }}}},
+      {"/v1/compare", "/v1/compare", false, false,
+       {{"POST", [&service](const Request& request, Response& response, const Content& content) {
+           handle_compare(request, response, content, service);
+         }}}},
+      {"/v1/sweep", "/v1/sweep", false, false,
+       {{"POST", [&service](const Request& request, Response& response, const Content& content) {
+           handle_sweep(request, response, content, service);
+         }}}},
+      {"/v1/bench", "/v1/bench", false, false,
+       {{"POST", [&service](const Request& request, Response& response, const Content& content) {
+           handle_bench(request, response, content, service);
+         }}}},
+      // The web page (docs/web.md) and its assets.
+      {kWebPageRoute, "/", true, false, {{"GET", serve_web_asset}}},
+      {kWebAssetRoute, "/{asset}", true, false, {{"GET", serve_web_asset}}},
+  };
+  routes.insert(routes.end(), rest.begin(), rest.end());
+  return RouteTable(std::move(routes));
+}
+
 }  // namespace
 
 void install_probe_routes(httplib::Server& http, const RenderQueue& queue) {
-  http.Get("/healthz", [](const httplib::Request&, httplib::Response& response) {
-    send_json(response, {{"status", "alive"}});
-  });
-  http.Get("/readyz", [&queue](const httplib::Request&, httplib::Response& response) { handle_readyz(response, queue); });
-}
-
-std::string route_pattern(const std::string& path) {
-  const Route* route = route_of(path);
-  return route ? route->pattern : "unmatched";
+  RouteTable(probe_routes(queue)).install(http);
 }
 
 void install_routes(httplib::Server& http, Service& service) {
   auto hosts = std::make_shared<const HostPolicy>(host_policy(service.options));
-  http.set_pre_routing_handler([&service, hosts](const httplib::Request& request, httplib::Response& response) {
+  auto routes = std::make_shared<const RouteTable>(service_routes(service));
+  http.set_pre_routing_handler([&service, hosts, routes](const httplib::Request& request, httplib::Response& response) {
     start_request_clock();
-    if (const std::optional<HttpError> refusal = cross_site_refusal(request, service, *hosts)) {
+    if (const std::optional<HttpError> refusal = cross_site_refusal(request, service, *hosts, *routes)) {
       send_error(response, *refusal);
       return httplib::Server::HandlerResponse::Handled;
     }
@@ -304,55 +300,13 @@ void install_routes(httplib::Server& http, Service& service) {
     // The token first: a request that has it never runs the route regexes here.
     if (bearer_token_matches(request.get_header_value("Authorization"), service.options.token))
       return httplib::Server::HandlerResponse::Unhandled;
-    if (const Route* route = route_of(request.path); route && route->open)
+    if (const Route* route = routes->find(request.path); route && route->open)
       return httplib::Server::HandlerResponse::Unhandled;
     send_error(response, {401, "unauthorized", "this server needs 'Authorization: Bearer <token>'", ""});
     response.set_header("WWW-Authenticate", "Bearer");
     return httplib::Server::HandlerResponse::Handled;
   });
-
-  install_probe_routes(http, service.queue);
-  http.Get("/metrics", [&service](const httplib::Request&, httplib::Response& response) {
-    const SceneStore::Totals stored = service.scenes.totals();
-    response.set_content(service.metrics.prometheus_text(service.queue.gauges(), {stored.scenes, stored.bytes}),
-                         "text/plain; version=0.0.4");
-  });
-  auto catalog = std::make_shared<const SceneCatalog>(service.scenes);
-  http.Get("/v1/scenes", [catalog](const httplib::Request&, httplib::Response& response) {
-    send_json(response, catalog->list());
-  });
-  http.Post("/v1/scenes", [&service](const httplib::Request& request, httplib::Response& response,
-                                     const httplib::ContentReader& content) {
-    handle_upload(request, response, content, service);
-  });
-  http.Get("/v1/scenes/([^/]+)", [catalog, &service](const httplib::Request& request, httplib::Response& response) {
-    handle_get_scene(request.matches[1].str(), response, *catalog, service.scenes);
-  });
-  http.Delete("/v1/scenes/([^/]+)", [catalog, &service](const httplib::Request& request, httplib::Response& response) {
-    handle_delete_scene(request.matches[1].str(), response, *catalog, service.scenes);
-  });
-  http.Get("/v1/device", [&service](const httplib::Request&, httplib::Response& response) {
-    if (const auto report = service.queue.device_report()) return send_json(response, *report);
-    send_unavailable(response, "not_ready", "the render device is still starting");
-  });
-  http.Post("/v1/render", [&service](const httplib::Request& request, httplib::Response& response,
-                                     const httplib::ContentReader& content) {
-    handle_render(request, response, content, service);
-  });
-  http.Post("/v1/compare", [&service](const httplib::Request& request, httplib::Response& response,
-                                      const httplib::ContentReader& content) {
-    handle_compare(request, response, content, service);
-  });
-  http.Post("/v1/sweep", [&service](const httplib::Request& request, httplib::Response& response,
-                                    const httplib::ContentReader& content) {
-    handle_sweep(request, response, content, service);
-  });
-  http.Post("/v1/bench", [&service](const httplib::Request& request, httplib::Response& response,
-                                    const httplib::ContentReader& content) {
-    handle_bench(request, response, content, service);
-  });
-  install_web_routes(http);
-  for (const Route& route : kRoutes) install_method_not_allowed(http, route);
+  routes->install(http);
 
   // httplib answers some requests itself (no route, body too large, unreadable HTTP)
   // with an empty body; give those the same JSON error body as ours.
@@ -369,9 +323,12 @@ void install_routes(httplib::Server& http, Service& service) {
     }
     send_error(response, {500, "internal_error", message, ""});
   });
-  http.set_logger([&service](const httplib::Request& request, const httplib::Response& response) {
+  // Metrics label requests by their route's pattern, or "unmatched": labels must not grow with
+  // whatever paths clients make up.
+  http.set_logger([&service, routes](const httplib::Request& request, const httplib::Response& response) {
     const std::optional<double> ms = request_elapsed_ms();
-    const std::string route = route_pattern(request.path);
+    const Route* matched = routes->find(request.path);
+    const std::string route = matched ? matched->pattern : "unmatched";
     service.metrics.count_request(route, known_method(request.method), response.status, ms.value_or(0.0) / 1000.0);
     nlohmann::json line = {{"time", core::utc_timestamp()},
                            {"method", request.method},

@@ -36,7 +36,9 @@ bool etag_matches(std::string_view if_none_match, std::string_view etag) {
   return false;
 }
 
-void serve_asset(const httplib::Request& request, httplib::Response& response) {
+}  // namespace
+
+void serve_web_asset(const httplib::Request& request, httplib::Response& response) {
   const WebAsset* asset = find_asset(request.path);
   if (!asset) return send_error(response, {404, "not_found", "no such file of the web page: " + request.path, ""});
   // Names carry no version, so browsers must ask each time; an unchanged file costs a 304.
@@ -52,13 +54,6 @@ void serve_asset(const httplib::Request& request, httplib::Response& response) {
     return;
   }
   response.set_content(asset->body.data(), asset->body.size(), std::string(asset->content_type));
-}
-
-}  // namespace
-
-void install_web_routes(httplib::Server& http) {
-  http.Get(kWebPageRoute, serve_asset);
-  http.Get(kWebAssetRoute, serve_asset);
 }
 
 }  // namespace server

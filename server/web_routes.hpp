@@ -10,6 +10,7 @@ namespace server {
 inline constexpr const char* kWebPageRoute = "/";
 inline constexpr const char* kWebAssetRoute = R"(/[A-Za-z0-9_-]+\.(?:html|css|js|svg))";
 
-void install_web_routes(httplib::Server& http);
+// GET of kWebPageRoute or kWebAssetRoute: the embedded file, or 404.
+void serve_web_asset(const httplib::Request& request, httplib::Response& response);
 
 }  // namespace server
