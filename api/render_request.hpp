@@ -90,7 +90,9 @@ struct Output {
 
 struct Shadows {
   bool enabled = true;
-  std::uint32_t resolution = 512;  // texels per side of each shadow map (or cube face)
+  // Texels per side of each shadow map (or cube face). Absent: each frame's, a texel at most
+  // half a pixel wide where the camera looks (docs/planner.md, "Shadow maps").
+  std::optional<std::uint32_t> resolution;
 };
 
 // Light Propagation Volumes: diffuse indirect light (DESIGN.md section 2). Defaults like

@@ -439,7 +439,8 @@ nlohmann::json to_json(const RenderRequest& request) {
                  {"view", to_string(out.view)},
                  {"exposure", shortest(out.exposure)},
                  {"tonemap", to_string(out.tonemap)}};
-  j["shadows"] = {{"enabled", request.shadows.enabled}, {"resolution", request.shadows.resolution}};
+  j["shadows"] = {{"enabled", request.shadows.enabled}};
+  if (request.shadows.resolution) j["shadows"]["resolution"] = *request.shadows.resolution;
   j["lpv"] = lpv_json(request.lpv);
   j["plan"] = to_string(request.plan);
   if (!request.plan_keep.empty()) {

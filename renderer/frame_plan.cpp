@@ -78,6 +78,57 @@ std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const s
   return std::min(resolution, requested);
 }
 
+std::uint32_t shadow_resolution_for(const std::vector<LightView>& views, const std::vector<bool>& shadowed,
+                                    const std::vector<api::Light>& lights, const ShadowSight& sight) {
+  const float pixel = sight.pixel_per_metre * glm::length(sight.receiver - sight.eye);
+  float needed = 0.0f;
+  for (const LightView& view : views) {
+    if (!shadowed.empty() && !shadowed[view.light]) continue;
+    // A texel's side at the receiver: 2 * half_extent / resolution, times the distance for a
+    // perspective view.
+    float side = 2.0f * view.half_extent;
+    if (!view.orthographic) side *= glm::length(sight.receiver - lights[view.light].position);
+    if (pixel > 0.0f) needed = std::max(needed, 2.0f * side / pixel);
+  }
+  std::uint32_t resolution = kMinShadowResolution;
+  while (float(resolution) < needed && resolution < kMaxShadowResolution) resolution *= 2;
+  while (resolution > kMinShadowResolution &&
+         std::uint64_t(resolution) * resolution * std::max(sight.layers, 1u) > sight.budget_texels)
+    resolution /= 2;
+  return resolution;
+}
+
+glm::vec3 seen_centre(const scene::Scene& scene, const std::vector<bool>& seen) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+  for (std::size_t d = 0; d < scene.draw_bounds.size() && d < seen.size(); ++d) {
+    if (!seen[d]) continue;
+    lo = glm::min(lo, scene.draw_bounds[d].min);
+    hi = glm::max(hi, scene.draw_bounds[d].max);
+  }
+  return lo.x <= hi.x ? 0.5f * (lo + hi) : scene.bounds.center();
+}
+
+void plan_shadow_resolution(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
+                            const std::vector<api::Light>& lights, const CameraSetup& camera, float fov_y_deg,
+                            std::uint64_t budget_texels) {
+  if (request.shadows.resolution) return;
+  const std::vector<LightView> views = light_views(lights, scene.bounds, plan.light_drawn);
+  ShadowSight sight;
+  sight.receiver = seen_centre(scene, plan.draw_seen);
+  sight.eye = camera.position;
+  sight.pixel_per_metre = 2.0f * std::tan(0.5f * glm::radians(fov_y_deg)) / float(request.output.height);
+  sight.budget_texels = std::min(budget_texels, kShadowTexelBudget);
+  sight.layers = std::uint32_t(std::count_if(views.begin(), views.end(), [&](const LightView& v) {
+    return plan.light_shadowed.empty() || plan.light_shadowed[v.light];
+  }));
+  request.shadows.resolution = shadow_resolution_for(views, plan.light_shadowed, lights, sight);
+  // The decisions say what differs from the documented default, the least resolution.
+  if (plan.run[kShadow] && *request.shadows.resolution > kMinShadowResolution)
+    plan.decisions.push_back("shadow maps " + std::to_string(*request.shadows.resolution) + " texels per side, not " +
+                             std::to_string(kMinShadowResolution) +
+                             ": a texel at most half a pixel wide where the camera looks");
+}
+
 namespace {
 
 // Whether a box may be inside the view frustum of `view_proj` (Vulkan clip space, depth

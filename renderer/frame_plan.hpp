@@ -106,6 +106,38 @@ std::uint32_t iterations_needed(const CascadePlacement& cascade, const scene::Bo
 std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const std::vector<api::Light>& lights,
                                     const scene::Bounds& bounds, float cell_size, std::uint32_t requested);
 
+// What a shadow map's resolution is chosen from when the request leaves it out.
+struct ShadowSight {
+  glm::vec3 receiver{0.0f};      // where the camera looks: the centre of the draws it may see
+  glm::vec3 eye{0.0f};           // the camera's position
+  float pixel_per_metre = 0.0f;  // a pixel's width at 1 m from the eye: 2 tan(fov_y / 2) / height
+  std::uint64_t budget_texels = 0;  // over all shadow maps together
+  std::uint32_t layers = 1;         // shadow maps (a point light's cube is 6)
+};
+
+// The shadow maps' resolution when the request leaves it out: the power of two in
+// [kMinShadowResolution, kMaxShadowResolution] at which a texel of every shadowed view is at
+// most half a pixel wide at `sight.receiver` (the lookups filter over about two texels, so a
+// shadow's edge then blurs over no more than a pixel, as the reference's does), lowered to
+// what the budget holds.
+inline constexpr std::uint32_t kMinShadowResolution = 512;
+inline constexpr std::uint32_t kMaxShadowResolution = 2048;
+// What a frame's chosen maps may rasterise in all: two maps at the most. A point light's six
+// cube faces stop at 1024 (their rasterising cost six maps' worth).
+inline constexpr std::uint64_t kShadowTexelBudget = 2ull * kMaxShadowResolution * kMaxShadowResolution;
+std::uint32_t shadow_resolution_for(const std::vector<LightView>& views, const std::vector<bool>& shadowed,
+                                    const std::vector<api::Light>& lights, const ShadowSight& sight);
+
+// The centre of the draws the camera may see (their bounds' union), or of the scene.
+glm::vec3 seen_centre(const scene::Scene& scene, const std::vector<bool>& seen);
+
+// Sets request.shadows.resolution where the request leaves it out (in both plan modes: it is
+// the default's value, not a pass skipped) by shadow_resolution_for within `budget_texels`
+// (the device's) and kShadowTexelBudget, and says so in `plan` when it is over the least.
+void plan_shadow_resolution(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
+                            const std::vector<api::Light>& lights, const CameraSetup& camera, float fov_y_deg,
+                            std::uint64_t budget_texels);
+
 // The part of the scene the grid should cover: the draws the camera may see and the draws a
 // drawn light may reach (by their bounds), since light flows from the lit ones to the seen
 // ones; the scene's bounds when that is all of it or nothing.

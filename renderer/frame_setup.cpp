@@ -140,7 +140,7 @@ LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Boun
     setup.lights.push_back(g);
   }
   if (!shadows.enabled) return setup;
-  const float texel = 2.0f / static_cast<float>(shadows.resolution);  // texel side per unit half extent
+  const float texel = 2.0f / static_cast<float>(shadows.resolution.value());  // texel side per unit half extent
   for (const LightView& view : setup.views) {
     if (!shadowed.empty() && !shadowed[view.light]) continue;
     gpu::GpuLight& g = setup.lights[view.light];

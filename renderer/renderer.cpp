@@ -281,7 +281,7 @@ SceneCacheStats Renderer::scene_cache() const { return {impl_->scenes.size(), im
 void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights) {
   const api::Output& out = request.output;
   const std::uint32_t shadow_layers = std::max<std::uint32_t>(1, std::uint32_t(lights.shadow_views.size()));
-  const std::uint32_t shadow_res = plan.run[kShadow] ? request.shadows.resolution : 1;
+  const std::uint32_t shadow_res = plan.run[kShadow] ? request.shadows.resolution.value() : 1;
   const std::uint64_t atlas_bytes = std::uint64_t(shadow_res) * shadow_res * shadow_layers * 4;
   if (atlas_bytes > kShadowAtlasBudgetBytes)
     throw api::DoesNotFit("shadows.resolution", api::counted(shadow_layers, "shadow map") + " of " +
@@ -349,6 +349,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   auto plan_start = Clock::now();
   FramePlan plan =
       plan_frame({request, lights, scene, gpu.emitter_count, camera.view_proj});
+  plan_shadow_resolution(plan, request, scene, lights, camera, camera_request.fov_y_deg, kShadowAtlasBudgetBytes / 4);
   double plan_ms = ms_since(plan_start);
   const LightSetup light_setup =
       setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn, plan.light_shadowed);

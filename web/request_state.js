@@ -9,7 +9,7 @@
 const DEFAULTS = {
   scene: 'cornell-box',
   output: { width: 512, height: 512, view: 'final', exposure: 0, tonemap: 'none' },
-  shadows: { enabled: true, resolution: 512 },
+  shadows: { enabled: true },
   lpv: {
     enabled: true, grid: 16, cascades: 1, iterations: 32, rsm: 256, vpl_downsample: 1,
     occlusion: true, occlusion_sources: ['rsm', 'camera'], blocking: 'projected', bounces: 1, injection: 'trilinear', injection_offset: 0.5,

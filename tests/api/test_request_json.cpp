@@ -171,7 +171,7 @@ TEST(ParseRequest, EmptyObjectGivesDefaults) {
   EXPECT_EQ(r.output.exposure, 0.0f);
   EXPECT_EQ(r.output.tonemap, api::Tonemap::none);
   EXPECT_TRUE(r.shadows.enabled);
-  EXPECT_EQ(r.shadows.resolution, 512u);
+  EXPECT_FALSE(r.shadows.resolution.has_value()) << "absent: each frame chooses (docs/planner.md)";
   EXPECT_TRUE(r.lpv.enabled);
   EXPECT_EQ(r.lpv.grid, glm::uvec3(16));
   EXPECT_EQ(r.lpv.cascades, 1u);

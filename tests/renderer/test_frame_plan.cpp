@@ -79,6 +79,38 @@ TEST(RsmResolutionNeeded, FourTexelsACellOnTheFarthestSurface) {
   EXPECT_LT(expected, renderer::rsm_resolution_needed({ortho}, {sun}, box, 0.25f, 4096)) << "a narrow spot needs fewer";
 }
 
+TEST(ShadowResolution, ATexelAtMostHalfAPixelWhereTheCameraLooksWithinBoundsAndBudget) {
+  api::Light sun;
+  sun.type = api::LightType::directional;
+  // A 20 m orthographic map seen 10 m away through pixels of 1 cm there: 2 * 20 m / 1 cm
+  // = 4000 texels wanted, 2048 at most.
+  const renderer::LightView wide{glm::mat4(1.0f), glm::vec3(0, -1, 0), true, 10.0f, 0};
+  renderer::ShadowSight sight;
+  sight.receiver = glm::vec3(0.0f);
+  sight.eye = glm::vec3(0.0f, 0.0f, 10.0f);
+  sight.pixel_per_metre = 0.001f;
+  sight.budget_texels = 1ull << 30;
+  EXPECT_EQ(renderer::shadow_resolution_for({wide}, {}, {sun}, sight), renderer::kMaxShadowResolution);
+  // Pixels of 8 cm: 500 texels, so the least, 512.
+  sight.pixel_per_metre = 0.008f;
+  EXPECT_EQ(renderer::shadow_resolution_for({wide}, {}, {sun}, sight), renderer::kMinShadowResolution);
+  // Pixels of 4 cm: 1000 texels, the next power of two.
+  sight.pixel_per_metre = 0.004f;
+  EXPECT_EQ(renderer::shadow_resolution_for({wide}, {}, {sun}, sight), 1024u);
+  // A perspective view's texels widen with the distance from the light: a spot 2 m from the
+  // receiver, half extent 0.5, pixels of 1 mm: 2 * 2 m / 1 mm = 4000 -> 2048; 1 m: 2000 -> 2048;
+  // 0.25 m: 500 -> 512.
+  const renderer::LightView cone{glm::mat4(1.0f), glm::vec3(0, -1, 0), false, 0.5f, 0};
+  sight.pixel_per_metre = 0.0001f;
+  EXPECT_EQ(renderer::shadow_resolution_for({cone}, {}, {spot_at({0, 2, 0}, {0, -1, 0})}, sight), 2048u);
+  EXPECT_EQ(renderer::shadow_resolution_for({cone}, {}, {spot_at({0, 0.25f, 0}, {0, -1, 0})}, sight), 512u);
+  // A light without a shadow map does not count; the budget lowers what the views want.
+  EXPECT_EQ(renderer::shadow_resolution_for({cone}, {false}, {spot_at({0, 2, 0}, {0, -1, 0})}, sight), 512u);
+  sight.budget_texels = 6ull * 1024 * 1024;
+  sight.layers = 6;
+  EXPECT_EQ(renderer::shadow_resolution_for({cone}, {}, {spot_at({0, 2, 0}, {0, -1, 0})}, sight), 1024u);
+}
+
 TEST(MayCastShadows, OnlyWithSomethingBetweenTheLightAndWhatIsSeen) {
   scene::SceneBuilder b("floor");
   const auto white = b.add_material({"white", glm::vec3(0.8f), {}});

@@ -110,7 +110,7 @@ TEST(SetupLights, PointLightGetsSixCubeFacesEachCentredOnItsAxis) {
   api::Light point;
   point.type = api::LightType::point;
   point.position = {0.1f, 1.0f, -0.2f};
-  const auto setup = renderer::setup_lights({point}, cornell().bounds, api::Shadows{});
+  const auto setup = renderer::setup_lights({point}, cornell().bounds, api::Shadows{true, 512});
   ASSERT_EQ(setup.shadow_views.size(), 6u);
   EXPECT_EQ(setup.lights[0].info.z, 6u);
   const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
@@ -126,7 +126,7 @@ TEST(SetupLights, SpotMapCoversItsOuterConeAndDirectionalMapCoversTheScene) {
   api::Light sun;
   sun.type = api::LightType::directional;
   sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
-  const auto setup = renderer::setup_lights({spot, sun}, cornell().bounds, api::Shadows{});
+  const auto setup = renderer::setup_lights({spot, sun}, cornell().bounds, api::Shadows{true, 512});
   ASSERT_EQ(setup.shadow_views.size(), 2u);
   EXPECT_EQ(setup.lights[1].info.y, 1u) << "the sun's map follows the spot's";
 
@@ -140,7 +140,7 @@ TEST(SetupLights, SpotMapCoversItsOuterConeAndDirectionalMapCoversTheScene) {
 TEST(SetupLights, DarkLightsAndDisabledShadowsGetNoShadowMap) {
   api::Light dark;
   dark.intensity = 0.0f;
-  EXPECT_TRUE(renderer::setup_lights({dark}, cornell().bounds, api::Shadows{}).shadow_views.empty());
+  EXPECT_TRUE(renderer::setup_lights({dark}, cornell().bounds, api::Shadows{true, 512}).shadow_views.empty());
   api::Shadows off;
   off.enabled = false;
   const auto setup = renderer::setup_lights(cornell().lights, cornell().bounds, off);
@@ -152,7 +152,7 @@ TEST(SetupLights, RadiantValueIsColourTimesIntensity) {
   api::Light l;
   l.color = {1.0f, 0.5f, 0.0f};
   l.intensity = 8.0f;
-  const auto setup = renderer::setup_lights({l}, cornell().bounds, api::Shadows{});
+  const auto setup = renderer::setup_lights({l}, cornell().bounds, api::Shadows{true, 512});
   EXPECT_EQ(glm::vec3(setup.lights[0].radiant), glm::vec3(8.0f, 4.0f, 0.0f));
 }
 

@@ -155,6 +155,38 @@ TEST_F(Planner, CascadesBeyondOneThatHoldsTheSceneAreSkippedAndChangeNothing) {
   EXPECT_EQ(automatic.linear.pixels, exact.linear.pixels);
 }
 
+// The decision that starts with `prefix`, or "".
+std::string decision(const renderer::RenderResult& r, const std::string& prefix) {
+  for (const std::string& d : r.stats.decisions)
+    if (d.starts_with(prefix)) return d;
+  return "";
+}
+
+// A request without a shadow resolution gets one per frame (docs/planner.md, "Shadow maps"):
+// the sun-lit galleries seen at 256^2 need 2048 texels a side for a texel of half a pixel,
+// the Cornell box's spot 512 (nothing said); a request that names one gets it, and the same
+// picture as the chosen one when it names that.
+TEST_F(Planner, ShadowMapsWithoutAResolutionGetTheFramesOwn) {
+  api::RenderRequest gallery;
+  gallery.scene = "gallery-court";
+  gallery.output.width = gallery.output.height = 256;
+  gallery.output.format = api::ImageFormat::pfm;
+  auto& r = gpu_test::renderer();
+  const auto chosen = r.render(gallery, renderer::kReadbackLinear);
+  EXPECT_EQ(decision(chosen, "shadow maps "), "shadow maps 2048 texels per side, not 512: a texel at most half a pixel wide where the camera looks");
+  gallery.shadows.resolution = 2048;
+  const auto named = r.render(gallery, renderer::kReadbackLinear);
+  EXPECT_EQ(decision(named, "shadow maps "), "") << "named: kept, nothing said";
+  EXPECT_EQ(named.linear.pixels, chosen.linear.pixels);
+  gallery.shadows.resolution = 512;
+  EXPECT_NE(r.render(gallery, renderer::kReadbackLinear).linear.pixels, chosen.linear.pixels);
+
+  api::RenderRequest box;
+  box.output.width = box.output.height = 256;
+  box.dry_run = true;
+  EXPECT_EQ(decision(r.render(box, renderer::kReadbackDisplay), "shadow maps "), "") << "512 is enough";
+}
+
 TEST_F(Planner, ANarrowSpotGetsASmallerRsmWithinTolerance) {
   api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
   for (api::RenderRequest* r : {&a, &e}) {
