@@ -1,5 +1,7 @@
 #include "haproxy_process.hpp"
 
+#include "server_process.hpp"
+
 #include <netinet/in.h>
 #include <signal.h>
 #include <sys/socket.h>
@@ -80,11 +82,6 @@ HaproxyProcess::~HaproxyProcess() {
   std::filesystem::remove(replicas_file_, ignored);
 }
 
-std::unique_ptr<httplib::Client> HaproxyProcess::client() const {
-  auto http = std::make_unique<httplib::Client>("127.0.0.1", port_);
-  http->set_read_timeout(std::chrono::seconds(60));
-  http->set_connection_timeout(std::chrono::seconds(5));
-  return http;
-}
+std::unique_ptr<httplib::Client> HaproxyProcess::client() const { return loopback_client(port_); }
 
 }  // namespace server_test

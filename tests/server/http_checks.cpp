@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <regex>
 #include <stdexcept>
 #include <thread>
@@ -67,6 +69,14 @@ std::optional<ImageSize> png_size(const std::string& bytes) {
   if (!pixels) return std::nullopt;
   stbi_image_free(pixels);
   return ImageSize{width, height};
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string() + " (is assimp-testmodels installed?)");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
 }
 
 std::string base64_decode(const std::string& text) {

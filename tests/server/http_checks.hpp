@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <filesystem>
 #include <future>
 #include <map>
 #include <optional>
@@ -19,6 +20,10 @@ struct ImageSize {
   int width = 0;
   int height = 0;
 };
+
+// The bytes of a file; throws naming it when it cannot be read (the glTF corpus comes from
+// the assimp-testmodels package).
+std::string read_file(const std::filesystem::path& path);
 
 // Decodes a PNG with stb_image; empty when the bytes are not a PNG.
 std::optional<ImageSize> png_size(const std::string& bytes);

@@ -52,11 +52,13 @@ ServerProcess::ServerProcess(std::vector<std::string> args) : process_(command(s
   }
 }
 
-std::unique_ptr<httplib::Client> ServerProcess::client() const {
-  auto http = std::make_unique<httplib::Client>("127.0.0.1", port_);
+std::unique_ptr<httplib::Client> loopback_client(int port) {
+  auto http = std::make_unique<httplib::Client>("127.0.0.1", port);
   http->set_read_timeout(std::chrono::seconds(60));
   http->set_connection_timeout(std::chrono::seconds(5));
   return http;
 }
+
+std::unique_ptr<httplib::Client> ServerProcess::client() const { return loopback_client(port_); }
 
 }  // namespace server_test

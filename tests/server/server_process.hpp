@@ -39,6 +39,9 @@ class ServerProcess {
 // the defaults except --max-pixels 1048576 (so a 422 for pixels can be provoked cheaply).
 ServerProcess& shared_server();
 
+// A client of 127.0.0.1:port with the tests' timeouts (60 s to read, 5 s to connect).
+std::unique_ptr<httplib::Client> loopback_client(int port);
+
 // The path of the lpv-server binary and of api/openapi.yaml, from the environment CTest sets.
 std::string server_binary();
 std::string openapi_file();

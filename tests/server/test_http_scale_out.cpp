@@ -17,11 +17,9 @@
 #include <array>
 #include <atomic>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <set>
-#include <sstream>
 #include <thread>
 
 namespace server_test {
@@ -38,14 +36,6 @@ const std::filesystem::path kBoxGlb = "/usr/share/assimp/models/glTF2/BoxTexture
 enum Phase { kBefore, kKilled, kRejoined, kRolling, kAfter, kPhases };
 constexpr std::array<const char*, kPhases> kPhaseNames = {"3 replicas", "1 killed (SIGKILL)", "rejoined",
                                                           "rolling restart (SIGTERM)", "after"};
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string() + " (is assimp-testmodels installed?)");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
 
 std::string render_body(const std::string& scene) {
   return nlohmann::json{{"scene", scene}, {"output", {{"width", 48}, {"height", 32}}}}.dump();

@@ -29,14 +29,6 @@ const std::filesystem::path kBoxGltf = kCorpus / "BoxTextured-glTF-Embedded/BoxT
 const std::filesystem::path kExternalBin = kCorpus / "MissingBin/BoxTextured.gltf";                  // refers to a .bin
 const std::filesystem::path kIndexOutOfRange = kCorpus / "IndexOutOfRange/IndexOutOfRange.gltf";     // and a .bin
 
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string() + " (is assimp-testmodels installed?)");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
-}
-
 void write_file(const std::filesystem::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
