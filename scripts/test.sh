@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing, then runs the two test stages (docs/testing.md):
+# Installs what is missing, then runs the two test stages (docs/testing.md), both built with
+# warnings as errors (LPV_WERROR), so no warning lands:
 #  1. builds build/ (Release) and runs every test (CTest) on lavapipe with the Vulkan
 #     validation layer on;
 #  2. builds the sanitizer build build-sanitize/ (clang, LPV_SANITIZE=ON: AddressSanitizer and
@@ -13,7 +14,7 @@
 # status is non-zero if either failed.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-"$root/scripts/build.sh"
+"$root/scripts/build.sh" -DLPV_WERROR=ON
 
 status=0
 (cd "$root/build" && ctest --output-on-failure --timeout 600 "$@") || status=1
@@ -24,7 +25,7 @@ grep -h '^SKIP ' "$root/build/Testing/Temporary/LastTest.log" 2>/dev/null || tru
 if [ "${LPV_TEST_SANITIZE:-1}" != 0 ]; then
   echo "== sanitizer build (build-sanitize: clang, AddressSanitizer + UndefinedBehaviorSanitizer)"
   cmake -S "$root" -B "$root/build-sanitize" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DLPV_SANITIZE=ON >/dev/null
+    -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DLPV_SANITIZE=ON -DLPV_WERROR=ON >/dev/null
   cmake --build "$root/build-sanitize" --target sanitize-tests --parallel "$(nproc)"
   (cd "$root/build-sanitize" && ctest --output-on-failure --timeout 600 --parallel "$(nproc)" -L sanitize "$@") || status=1
 fi

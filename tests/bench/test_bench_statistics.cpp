@@ -134,9 +134,15 @@ TEST(BenchVerdicts, VerdictsFollowTheirIntervals) {
       ASSERT_TRUE(v.ratio_interval);
       EXPECT_LE(v.ratio_interval->first, v.ratio);
       EXPECT_GE(v.ratio_interval->second, v.ratio);
-      if (v.verdict == Verdict::slower) EXPECT_GT(v.ratio_interval->first, 1.0 + kDefaults.min_effect);
-      if (v.verdict == Verdict::faster) EXPECT_LT(v.ratio_interval->second, 1.0 - kDefaults.min_effect);
-      if (v.ratio_interval->first > 1.0 + kDefaults.min_effect) EXPECT_EQ(v.verdict, Verdict::slower);
+      if (v.verdict == Verdict::slower) {
+        EXPECT_GT(v.ratio_interval->first, 1.0 + kDefaults.min_effect);
+      }
+      if (v.verdict == Verdict::faster) {
+        EXPECT_LT(v.ratio_interval->second, 1.0 - kDefaults.min_effect);
+      }
+      if (v.ratio_interval->first > 1.0 + kDefaults.min_effect) {
+        EXPECT_EQ(v.verdict, Verdict::slower);
+      }
     }
   }
 }

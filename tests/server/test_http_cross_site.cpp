@@ -25,11 +25,15 @@ TEST(CrossSite, RoutesReadOnlyTheirMediaTypes) {
     for (const char* path : {"/v1/render", "/v1/compare", "/v1/sweep", "/v1/bench"}) {
       const auto r = http->Post(path, kSmallRender, type);
       EXPECT_TRUE(is_json_error(r, 415, "unsupported_media_type", "")) << path;
-      if (r) EXPECT_EQ(r->get_header_value("Accept-Post"), "application/json");
+      if (r) {
+        EXPECT_EQ(r->get_header_value("Accept-Post"), "application/json");
+      }
     }
     const auto upload = http->Post("/v1/scenes", "glTF", type);
     EXPECT_TRUE(is_json_error(upload, 415, "unsupported_media_type", ""));
-    if (upload) EXPECT_NE(upload->get_header_value("Accept-Post").find("model/gltf-binary"), std::string::npos);
+    if (upload) {
+      EXPECT_NE(upload->get_header_value("Accept-Post").find("model/gltf-binary"), std::string::npos);
+    }
   }
   // JSON in any case and with parameters; an empty body with no type is the empty request.
   const auto json = http->Post("/v1/render", kSmallRender, "Application/JSON; charset=utf-8");

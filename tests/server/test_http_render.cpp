@@ -130,7 +130,9 @@ TEST(HttpRender, DryRunReturnsThePlanWithoutAnImage) {
       EXPECT_FALSE(pass["planned"]);
       EXPECT_EQ(pass["reason"], "no light reaches the scene");
     }
-    if (pass["name"] == "forward") EXPECT_TRUE(pass["planned"]) << "what would run is planned: " << pass.dump();
+    if (pass["name"] == "forward") {
+      EXPECT_TRUE(pass["planned"]) << "what would run is planned: " << pass.dump();
+    }
   }
 }
 

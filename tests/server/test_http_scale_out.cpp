@@ -149,7 +149,9 @@ TEST(ScaleOut, ReplicasBehindHaproxySurviveAKillAndARollingRestartWithoutAFailed
   std::vector<Replica> names;
   for (int i = 0; i < kReplicas; ++i) {
     replicas.push_back(std::make_unique<ServerProcess>(args));
-    names.push_back({"r" + std::to_string(i), replicas.back()->port()});
+    std::string name = "r";
+    name += std::to_string(i);  // not "r" + ...: GCC 12 warns falsely (-Wrestrict) on it
+    names.push_back({name, replicas.back()->port()});
   }
   // The same replica again on its port, as an orchestrator restarts it, once it is ready;
   // returns once the load balancer sends it renders again.

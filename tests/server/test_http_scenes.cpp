@@ -351,7 +351,9 @@ TEST(HttpScenes, ReplicasSharingADataDirAreOneStore) {
   const auto from_a = render(*on_a, id), from_b = render(*on_b, id);
   EXPECT_TRUE(renders_png(from_a));
   EXPECT_TRUE(renders_png(from_b));
-  if (from_a && from_b) EXPECT_EQ(from_a->body, from_b->body) << "the same bits from every replica";
+  if (from_a && from_b) {
+    EXPECT_EQ(from_a->body, from_b->body) << "the same bits from every replica";
+  }
   EXPECT_EQ(on_b->Get("/v1/scenes/" + id)->status, 200);
   EXPECT_NE(on_b->Get("/v1/scenes")->body.find(id), std::string::npos);
   EXPECT_EQ(upload(*on_b, read_file(kBoxGlb))->status, 200) << "the other replica's scene: no second copy";
