@@ -5,6 +5,7 @@
 #include "server/routes.hpp"
 #include "server/scene_store.hpp"
 #include "server/server_options.hpp"
+#include "tools/common/program_main.hpp"
 
 #include <httplib.h>
 #include <nlohmann/json.hpp>
@@ -26,8 +27,6 @@
 
 namespace {
 
-constexpr int kExitFailure = 1;
-constexpr int kExitUsage = 2;
 
 // Connections the kernel may hold before the server accepts them. Debian's httplib listens
 // with a backlog of 5: a burst of clients then overflows the accept queue, the handshakes
@@ -161,9 +160,18 @@ void log_scene_store(const server::SceneStore& store) {
                             {"skipped", opened.skipped}});
 }
 
+// The options from the command line and the environment; a bad one is a usage error whose hint
+// is the whole usage.
+server::ServerOptions options_from(int argc, char** argv) {
+  try {
+    return server::parse_server_options(argc, argv, [](const char* name) { return std::getenv(name); });
+  } catch (const server::OptionsError& e) {
+    throw tools::UsageError(e.what(), std::string("\n") + server::server_usage());
+  }
+}
+
 int run(int argc, char** argv) {
-  const server::ServerOptions options =
-      server::parse_server_options(argc, argv, [](const char* name) { return std::getenv(name); });
+  const server::ServerOptions options = options_from(argc, argv);
   if (options.help) {
     std::fputs(server::server_usage(), stdout);
     return 0;
@@ -179,7 +187,7 @@ int run(int argc, char** argv) {
       {options.queue_capacity, options.render_workers, device_options(options), options.scene_cache_bytes}, scenes,
       [&](const std::string& message) {
         log_event("fatal", {{"message", message}});
-        exit_code = kExitFailure;
+        exit_code = tools::kExitFailure;
         stop_server(http, listening_over);
       });
   server::Service service{options, queue, metrics, scenes};
@@ -202,13 +210,13 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "lpv-server: cannot listen on %s:%d\n", options.host.c_str(), options.port);
     listening_over = true;
     queue.shutdown();
-    return kExitFailure;
+    return tools::kExitFailure;
   }
   if (::listen(listening_socket, kListenBacklog) != 0) {  // on a listening socket: a new backlog
     std::fprintf(stderr, "lpv-server: cannot set the listen backlog: %s\n", std::strerror(errno));
     listening_over = true;
     queue.shutdown();
-    return kExitFailure;
+    return tools::kExitFailure;
   }
   // The first line: scripts and tests read the port from it.
   std::printf("lpv-server listening on %s\n", base_url(options.host, port).c_str());
@@ -220,7 +228,7 @@ int run(int argc, char** argv) {
       std::fprintf(stderr, "lpv-server: cannot listen on %s:%d for probes\n", options.host.c_str(), options.health_port);
       listening_over = true;
       queue.shutdown();
-      return kExitFailure;
+      return tools::kExitFailure;
     }
     std::printf("lpv-server health on %s\n", base_url(options.host, bound).c_str());
     std::fflush(stdout);
@@ -245,13 +253,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const server::OptionsError& e) {
-    std::fprintf(stderr, "lpv-server: %s\n\n%s", e.what(), server::server_usage());
-    return kExitUsage;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "lpv-server: %s\n", e.what());
-    return kExitFailure;
-  }
+  return tools::run_program("lpv-server", [&] { return run(argc, argv); });
 }

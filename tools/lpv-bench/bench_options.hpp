@@ -2,6 +2,7 @@
 #pragma once
 
 #include "renderer/bench/results_comparison.hpp"
+#include "tools/common/program_main.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -43,9 +44,9 @@ struct Options {
   std::optional<std::uint32_t> rounds;  // pairs of renders per case (default: the suite's repetitions)
 };
 
-class UsageError : public std::runtime_error {
+class UsageError : public tools::UsageError {
  public:
-  using std::runtime_error::runtime_error;
+  explicit UsageError(const std::string& message) : tools::UsageError(message, "Try 'lpv-bench --help'.\n") {}
 };
 
 Options parse(int argc, char** argv);

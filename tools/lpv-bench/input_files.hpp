@@ -4,6 +4,7 @@
 
 #include "api/bench_results.hpp"
 #include "api/bench_suite.hpp"
+#include "tools/common/program_main.hpp"
 
 #include <filesystem>
 #include <stdexcept>
@@ -12,9 +13,9 @@
 
 namespace bench {
 
-class BadInput : public std::runtime_error {
+class BadInput : public tools::InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using tools::InputError::InputError;
 };
 
 struct SuiteFile {

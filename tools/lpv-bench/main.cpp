@@ -11,6 +11,7 @@
 #include "http_sweep.hpp"
 #include "input_files.hpp"
 #include "lab.hpp"
+#include "tools/common/program_main.hpp"
 #include "tools/common/progress_bar.hpp"
 #include "renderer/accuracy/compare.hpp"
 #include "renderer/accuracy/sweep.hpp"
@@ -29,8 +30,6 @@
 
 namespace {
 
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 
 // A request file, or standard input for "-".
 std::string read_request_text(const std::string& file) {
@@ -146,25 +145,11 @@ int run(int argc, char** argv) {
     case bench::Command::sweep: return run_sweep(options, read_request_text(options.inputs[0]));
     case bench::Command::diff: return run_diff(options, read_request_text(options.inputs[0]));
   }
-  return kExitFailure;
+  return tools::kExitFailure;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const bench::UsageError& e) {
-    std::fprintf(stderr, "lpv-bench: %s\nTry 'lpv-bench --help'.\n", e.what());
-    return kExitBadInput;
-  } catch (const api::RequestError& e) {
-    std::fprintf(stderr, "lpv-bench: bad request: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const bench::BadInput& e) {
-    std::fprintf(stderr, "lpv-bench: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "lpv-bench: %s\n", e.what());
-    return kExitFailure;
-  }
+  return tools::run_program("lpv-bench", [&] { return run(argc, argv); });
 }

@@ -1,6 +1,8 @@
 // Command line of lpv-render.
 #pragma once
 
+#include "tools/common/program_main.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
@@ -23,9 +25,9 @@ struct Options {
   bool help = false;
 };
 
-class UsageError : public std::runtime_error {
+class UsageError : public tools::UsageError {
  public:
-  using std::runtime_error::runtime_error;
+  explicit UsageError(const std::string& message) : tools::UsageError(message, "Try 'lpv-render --help'.\n") {}
 };
 
 // --scene takes a built-in scene's name or a glTF file: a value ending in .gltf or .glb

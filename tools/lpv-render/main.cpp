@@ -27,15 +27,13 @@
 
 namespace {
 
-constexpr int kExitFailure = 1;
-constexpr int kExitBadInput = 2;
 constexpr int kExitBadSceneFile = 3;
 
 // A --scene file that cannot be loaded: "lpv-render: <path>: <message>", exit status 3.
-class SceneFileError : public std::runtime_error {
+class SceneFileError : public tools::InputError {
  public:
   SceneFileError(const std::string& path, const std::string& message)
-      : std::runtime_error(path + ": " + message) {}
+      : tools::InputError(path + ": " + message, kExitBadSceneFile) {}
 };
 
 scene::Scene load_scene_file(const std::string& path) {
@@ -187,7 +185,7 @@ int run(int argc, char** argv) {
   if (!options.quiet) print_summary(result.stats, output_file);
   if (device_options.validation && !device.validation_messages().empty()) {
     std::fprintf(stderr, "lpv-render: %s\n", api::counted(device.validation_messages().size(), "validation message").c_str());
-    return kExitFailure;
+    return tools::kExitFailure;
   }
   return 0;
 }
@@ -195,19 +193,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const cli::UsageError& e) {
-    std::fprintf(stderr, "lpv-render: %s\nTry 'lpv-render --help'.\n", e.what());
-    return kExitBadInput;
-  } catch (const SceneFileError& e) {
-    std::fprintf(stderr, "lpv-render: %s\n", e.what());
-    return kExitBadSceneFile;
-  } catch (const api::RequestError& e) {
-    std::fprintf(stderr, "lpv-render: bad request: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "lpv-render: %s\n", e.what());
-    return kExitFailure;
-  }
+  return tools::run_program("lpv-render", [&] { return run(argc, argv); });
 }
