@@ -16,12 +16,6 @@
 namespace server_test {
 namespace {
 
-std::string environment(const char* name) {
-  const char* value = std::getenv(name);
-  if (!value || !*value) throw std::runtime_error(std::string(name) + " is not set (run the test through ctest)");
-  return value;
-}
-
 // A loopback port nobody listens on now. HAProxy cannot report the port it took for "port 0",
 // so the test asks the kernel for one and lets HAProxy bind it; another program could take it
 // in between, which the constructor's retry covers.
@@ -60,8 +54,8 @@ HaproxyProcess::HaproxyProcess(const std::vector<Replica>& replicas) {
     port_ = free_port();
     write_replicas_file(replicas_file_, port_, replicas);
     process_ = std::make_unique<ChildProcess>(
-        std::vector<std::string>{environment("LPV_HAPROXY"), "-db", "-f", environment("LPV_HAPROXY_CONFIG"), "-f",
-                                 replicas_file_.string()});
+        std::vector<std::string>{required_environment("LPV_HAPROXY"), "-db", "-f",
+                                 required_environment("LPV_HAPROXY_CONFIG"), "-f", replicas_file_.string()});
     auto http = client();
     http->set_connection_timeout(std::chrono::seconds(1));
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(20);

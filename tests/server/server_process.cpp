@@ -5,15 +5,12 @@
 #include <thread>
 
 namespace server_test {
-namespace {
 
 std::string required_environment(const char* name) {
   const char* value = std::getenv(name);
   if (!value || !*value) throw std::runtime_error(std::string(name) + " is not set (run the test through ctest)");
   return value;
 }
-
-}  // namespace
 
 std::string server_binary() { return required_environment("LPV_SERVER_BINARY"); }
 std::string openapi_file() { return required_environment("LPV_OPENAPI"); }

@@ -42,6 +42,9 @@ ServerProcess& shared_server();
 // A client of 127.0.0.1:port with the tests' timeouts (60 s to read, 5 s to connect).
 std::unique_ptr<httplib::Client> loopback_client(int port);
 
+// The value of an environment variable CTest sets; throws naming it when it is not set.
+std::string required_environment(const char* name);
+
 // The path of the lpv-server binary and of api/openapi.yaml, from the environment CTest sets.
 std::string server_binary();
 std::string openapi_file();
