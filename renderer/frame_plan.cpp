@@ -78,12 +78,30 @@ std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const s
   return std::min(resolution, requested);
 }
 
+namespace {
+
+// The union of the bounds of the draws `counts` picks, or the scene's when it picks none.
+template <class Counts>
+scene::Bounds draws_bounds(const scene::Scene& scene, Counts counts) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+  for (std::size_t d = 0; d < scene.draw_bounds.size(); ++d) {
+    if (!counts(d)) continue;
+    lo = glm::min(lo, scene.draw_bounds[d].min);
+    hi = glm::max(hi, scene.draw_bounds[d].max);
+  }
+  return lo.x <= hi.x ? scene::Bounds{lo, hi} : scene.bounds;
+}
+
+}  // namespace
+
 std::uint32_t shadow_resolution_for(const std::vector<LightView>& views, const std::vector<bool>& shadowed,
                                     const std::vector<api::Light>& lights, const ShadowSight& sight) {
   const float pixel = sight.pixel_per_metre * glm::length(sight.receiver - sight.eye);
   float needed = 0.0f;
+  std::uint64_t layers = 0;  // shadow maps: a point light's cube is 6
   for (const LightView& view : views) {
     if (!shadowed.empty() && !shadowed[view.light]) continue;
+    ++layers;
     // A texel's side at the receiver: 2 * half_extent / resolution, times the distance for a
     // perspective view.
     float side = 2.0f * view.half_extent;
@@ -93,19 +111,13 @@ std::uint32_t shadow_resolution_for(const std::vector<LightView>& views, const s
   std::uint32_t resolution = kMinShadowResolution;
   while (float(resolution) < needed && resolution < kMaxShadowResolution) resolution *= 2;
   while (resolution > kMinShadowResolution &&
-         std::uint64_t(resolution) * resolution * std::max(sight.layers, 1u) > sight.budget_texels)
+         std::uint64_t(resolution) * resolution * std::max<std::uint64_t>(layers, 1) > sight.budget_texels)
     resolution /= 2;
   return resolution;
 }
 
 glm::vec3 seen_centre(const scene::Scene& scene, const std::vector<bool>& seen) {
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-  for (std::size_t d = 0; d < scene.draw_bounds.size() && d < seen.size(); ++d) {
-    if (!seen[d]) continue;
-    lo = glm::min(lo, scene.draw_bounds[d].min);
-    hi = glm::max(hi, scene.draw_bounds[d].max);
-  }
-  return lo.x <= hi.x ? 0.5f * (lo + hi) : scene.bounds.center();
+  return draws_bounds(scene, [&](std::size_t d) { return d < seen.size() && seen[d]; }).center();
 }
 
 void plan_shadow_resolution(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
@@ -118,9 +130,6 @@ void plan_shadow_resolution(FramePlan& plan, api::RenderRequest& request, const 
   sight.eye = camera.position;
   sight.pixel_per_metre = 2.0f * std::tan(0.5f * glm::radians(fov_y_deg)) / float(request.output.height);
   sight.budget_texels = std::min(budget_texels, kShadowTexelBudget);
-  sight.layers = std::uint32_t(std::count_if(views.begin(), views.end(), [&](const LightView& v) {
-    return plan.light_shadowed.empty() || plan.light_shadowed[v.light];
-  }));
   request.shadows.resolution = shadow_resolution_for(views, plan.light_shadowed, lights, sight);
   // The decisions say what differs from the documented default, the least resolution.
   if (plan.run[kShadow] && *request.shadows.resolution > kMinShadowResolution)
@@ -183,17 +192,12 @@ bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const 
 
 scene::Bounds lpv_region(const scene::Scene& scene, const std::vector<bool>& seen,
                          const std::vector<api::Light>& lights, const std::vector<bool>& light_drawn) {
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-  for (std::size_t d = 0; d < scene.draw_bounds.size(); ++d) {
-    const scene::Bounds& b = scene.draw_bounds[d];
+  return draws_bounds(scene, [&](std::size_t d) {
     bool matters = seen[d];
     for (std::size_t i = 0; i < lights.size() && !matters; ++i)
-      matters = light_drawn[i] && light_misses(lights[i], b).empty();
-    if (!matters) continue;
-    lo = glm::min(lo, b.min);
-    hi = glm::max(hi, b.max);
-  }
-  return lo.x <= hi.x ? scene::Bounds{lo, hi} : scene.bounds;
+      matters = light_drawn[i] && light_misses(lights[i], scene.draw_bounds[d]).empty();
+    return matters;
+  });
 }
 
 std::uint32_t cascades_needed(const std::vector<CascadePlacement>& cascades, const scene::Bounds& bounds) {

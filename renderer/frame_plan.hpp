@@ -111,8 +111,7 @@ struct ShadowSight {
   glm::vec3 receiver{0.0f};      // where the camera looks: the centre of the draws it may see
   glm::vec3 eye{0.0f};           // the camera's position
   float pixel_per_metre = 0.0f;  // a pixel's width at 1 m from the eye: 2 tan(fov_y / 2) / height
-  std::uint64_t budget_texels = 0;  // over all shadow maps together
-  std::uint32_t layers = 1;         // shadow maps (a point light's cube is 6)
+  std::uint64_t budget_texels = 0;  // over all the shadowed views' maps together
 };
 
 // The shadow maps' resolution when the request leaves it out: the power of two in

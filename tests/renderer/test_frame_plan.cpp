@@ -106,9 +106,11 @@ TEST(ShadowResolution, ATexelAtMostHalfAPixelWhereTheCameraLooksWithinBoundsAndB
   EXPECT_EQ(renderer::shadow_resolution_for({cone}, {}, {spot_at({0, 0.25f, 0}, {0, -1, 0})}, sight), 512u);
   // A light without a shadow map does not count; the budget lowers what the views want.
   EXPECT_EQ(renderer::shadow_resolution_for({cone}, {false}, {spot_at({0, 2, 0}, {0, -1, 0})}, sight), 512u);
+  // Six maps (a cube's faces) within 6 Mi texels: 1024 each, where one map would get 2048.
   sight.budget_texels = 6ull * 1024 * 1024;
-  sight.layers = 6;
-  EXPECT_EQ(renderer::shadow_resolution_for({cone}, {}, {spot_at({0, 2, 0}, {0, -1, 0})}, sight), 1024u);
+  EXPECT_EQ(renderer::shadow_resolution_for({cone}, {}, {spot_at({0, 2, 0}, {0, -1, 0})}, sight), 2048u);
+  const std::vector<renderer::LightView> cube(6, cone);
+  EXPECT_EQ(renderer::shadow_resolution_for(cube, {}, {spot_at({0, 2, 0}, {0, -1, 0})}, sight), 1024u);
 }
 
 TEST(MayCastShadows, OnlyWithSomethingBetweenTheLightAndWhatIsSeen) {
