@@ -226,11 +226,18 @@ std::vector<Route> probe_routes(const RenderQueue& queue) {
   };
 }
 
+// A POST handler that reads its own body, with the service: the form of every handle_* that
+// takes one.
+using BodyHandler = void (*)(const httplib::Request&, httplib::Response&, const httplib::ContentReader&, Service&);
+httplib::Server::HandlerWithContentReader reading_body(BodyHandler handle, Service& service) {
+  return [handle, &service](const httplib::Request& request, httplib::Response& response,
+                            const httplib::ContentReader& content) { handle(request, response, content, service); };
+}
+
 // Every route of the main listener: api/openapi.yaml's paths, then the web page.
 RouteTable service_routes(Service& service) {
   using Request = httplib::Request;
   using Response = httplib::Response;
-  using Content = httplib::ContentReader;
   auto catalog = std::make_shared<const SceneCatalog>(service.scenes);
   std::vector<Route> routes = probe_routes(service.queue);
   const std::vector<Route> rest = {
@@ -242,9 +249,7 @@ RouteTable service_routes(Service& service) {
          }}}},
       {"/v1/scenes", "/v1/scenes", false, false,
        {{"GET", [catalog](const Request&, Response& response) { send_json(response, catalog->list()); }},
-        {"POST", [&service](const Request& request, Response& response, const Content& content) {
-           handle_upload(request, response, content, service);
-         }}}},
+        {"POST", reading_body(handle_upload, service)}}},
       {"/v1/scenes/([^/]+)", "/v1/scenes/{id}", false, false,
        {{"GET", [catalog, &service](const Request& request, Response& response) {
            handle_get_scene(request.matches[1].str(), response, *catalog, service.scenes);
@@ -258,21 +263,13 @@ RouteTable service_routes(Service& service) {
            send_unavailable(response, "not_ready", "the render device is still starting");
          }}}},
       {"/v1/render", "/v1/render", false, false,
-       {{"POST", [&service](const Request& request, Response& response, const Content& content) {
-           handle_render(request, response, content, service);
-         }}}},
+       {{"POST", reading_body(handle_render, service)}}},
       {"/v1/compare", "/v1/compare", false, false,
-       {{"POST", [&service](const Request& request, Response& response, const Content& content) {
-           handle_compare(request, response, content, service);
-         }}}},
+       {{"POST", reading_body(handle_compare, service)}}},
       {"/v1/sweep", "/v1/sweep", false, false,
-       {{"POST", [&service](const Request& request, Response& response, const Content& content) {
-           handle_sweep(request, response, content, service);
-         }}}},
+       {{"POST", reading_body(handle_sweep, service)}}},
       {"/v1/bench", "/v1/bench", false, false,
-       {{"POST", [&service](const Request& request, Response& response, const Content& content) {
-           handle_bench(request, response, content, service);
-         }}}},
+       {{"POST", reading_body(handle_bench, service)}}},
       // The web page (docs/web.md) and its assets.
       {kWebPageRoute, "/", true, false, {{"GET", serve_web_asset}}},
       {kWebAssetRoute, "/{asset}", true, false, {{"GET", serve_web_asset}}},
