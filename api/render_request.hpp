@@ -105,8 +105,9 @@ struct Lpv {
   std::uint32_t rsm_resolution = 256;  // RSM texels per side of each light view ("rsm")
   std::uint32_t vpl_downsample = 1;    // RSM texels per side merged into one brighter VPL
   bool occlusion = true;               // geometry volume blocks propagation
-  bool occlusion_from_rsm = true;      // "occlusion_sources": surfels of the RSMs ...
-  bool occlusion_from_camera = true;   // ... and of the camera's depth and normal buffer
+  bool occlusion_from_rsm = false;     // "occlusion_sources": surfels of the RSMs ...
+  bool occlusion_from_camera = false;  // ... of the camera's depth and normal buffer ...
+  bool occlusion_from_scene = true;    // ... and of the scene's surfaces themselves
   std::uint32_t bounces = 1;           // 2: light the geometry volume blocks is reflected on
   Injection injection = Injection::trilinear;
   Transfer transfer = Transfer::sharpened;

@@ -100,6 +100,7 @@ constexpr std::array<Keys, 17> lpv_keys{"enabled",   "grid",      "cascades",   
 constexpr std::array injections{Injection::trilinear, Injection::nearest};
 constexpr std::string_view occlusion_source_rsm = "rsm";
 constexpr std::string_view occlusion_source_camera = "camera";
+constexpr std::string_view occlusion_source_scene = "scene";
 
 // The light fields present in `obj`, shared by "lights" and "light_edits"
 // (the index of the returned edit is left at 0).
@@ -210,17 +211,20 @@ Shadows read_shadows(const Field& f) {
   return shadows;
 }
 
-// "occlusion_sources": a non-empty set of "rsm" and "camera".
+// "occlusion_sources": a non-empty set of "rsm", "camera" and "scene".
 void read_occlusion_sources(const Field& f, Lpv& lpv) {
-  const std::string expectation = "a non-empty array of distinct \"rsm\" and \"camera\"";
-  const std::vector<Field> elements = as_array(f, 2);
+  const std::string expectation = "a non-empty array of distinct \"rsm\", \"camera\" and \"scene\"";
+  const std::vector<Field> elements = as_array(f, 3);
   if (elements.empty()) f.reject(expectation);
-  lpv.occlusion_from_rsm = lpv.occlusion_from_camera = false;
+  lpv.occlusion_from_rsm = lpv.occlusion_from_camera = lpv.occlusion_from_scene = false;
   for (const Field& e : elements) {
     const bool is_string = e.value->is_string();
     const std::string_view s = is_string ? std::string_view(e.value->get_ref<const std::string&>()) : "";
-    if (s != occlusion_source_rsm && s != occlusion_source_camera) e.reject("\"rsm\" or \"camera\"");
-    bool& flag = s == occlusion_source_rsm ? lpv.occlusion_from_rsm : lpv.occlusion_from_camera;
+    if (s != occlusion_source_rsm && s != occlusion_source_camera && s != occlusion_source_scene)
+      e.reject("\"rsm\", \"camera\" or \"scene\"");
+    bool& flag = s == occlusion_source_rsm      ? lpv.occlusion_from_rsm
+                 : s == occlusion_source_camera ? lpv.occlusion_from_camera
+                                                : lpv.occlusion_from_scene;
     if (flag) e.fail("must not repeat " + quote(s));
     flag = true;
   }
@@ -340,6 +344,7 @@ json lpv_json(const Lpv& lpv) {
   json sources = json::array();
   if (lpv.occlusion_from_rsm) sources.push_back(occlusion_source_rsm);
   if (lpv.occlusion_from_camera) sources.push_back(occlusion_source_camera);
+  if (lpv.occlusion_from_scene) sources.push_back(occlusion_source_scene);
   json j = {{"enabled", lpv.enabled},
             {"grid", json::array({lpv.grid.x, lpv.grid.y, lpv.grid.z})},
             {"cascades", lpv.cascades},

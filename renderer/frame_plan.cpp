@@ -273,7 +273,7 @@ FramePlan plan_frame(const PlanInputs& in) {
       plan.reason[kRsm] = "every albedo is 0: nothing reflects light (emissive surfaces inject directly)";
     if (!request.lpv.occlusion)
       plan.reason[kGeometryVolume] = "occlusion disabled";
-    else if (!request.lpv.occlusion_from_camera && !any_drawn)
+    else if (!request.lpv.occlusion_from_camera && !request.lpv.occlusion_from_scene && !any_drawn)
       plan.reason[kGeometryVolume] = "no occluders: occlusion_sources is only \"rsm\" and no light draws an RSM";
     if (request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
   }

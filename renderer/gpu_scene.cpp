@@ -1,6 +1,7 @@
 #include "renderer/gpu_scene.hpp"
 
 #include "renderer/gpu_types.hpp"
+#include "renderer/lpv/blocker_surfels.hpp"
 #include "renderer/lpv/emitter_surfels.hpp"
 
 #include <algorithm>
@@ -33,6 +34,9 @@ GpuScene GpuScene::upload(const vkx::Device& device, const scene::Scene& scene, 
   g.emitters = vkx::upload_buffer(device, std::as_bytes(std::span(surfels)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   g.emitter_count = std::uint32_t(surfels.size());
   g.emitted_flux = emitted_flux_bound(surfels);
+  const std::vector<gpu::GpuBlocker> blockers = blocker_surfels(scene);
+  g.blockers = vkx::upload_buffer(device, std::as_bytes(std::span(blockers)), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  g.blocker_count = std::uint32_t(blockers.size());
   g.index_count = static_cast<std::uint32_t>(scene.indices.size());
   for (const scene::Material& m : scene.materials)
     g.material_variants.push_back({m.double_sided, m.base_color_texture >= 0 &&
@@ -70,7 +74,7 @@ std::vector<std::uint32_t> GpuScene::camera_order(const glm::vec3& eye) const {
 }
 
 std::uint64_t GpuScene::bytes() const {
-  return vertices.size() + indices.size() + materials.size() + emitters.size() + textures.bytes();
+  return vertices.size() + indices.size() + materials.size() + emitters.size() + blockers.size() + textures.bytes();
 }
 
 void GpuScene::bind_geometry(VkCommandBuffer cmd) const {

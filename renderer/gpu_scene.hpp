@@ -37,6 +37,8 @@ struct GpuScene {
   vkx::Buffer emitters;  // gpu::GpuEmitter: the emissive surfaces as VPLs
   std::uint32_t emitter_count = 0;
   double emitted_flux = 0.0;  // the largest channel of their summed flux (W)
+  vkx::Buffer blockers;  // gpu::GpuBlocker: every surface, for the geometry volume
+  std::uint32_t blocker_count = 0;
   bool emissive = false;      // a material emits (the shading adds emission only then)
   std::uint32_t index_count = 0;
   std::vector<scene::Draw> draws;              // grouped by their material's variant

@@ -8,6 +8,7 @@ static_assert(sizeof(GpuLight) == 80);
 static_assert(sizeof(GpuMaterial) == 48);
 static_assert(sizeof(GpuDrawMaterial) == 64);
 static_assert(sizeof(GpuEmitter) == 48);
+static_assert(sizeof(GpuBlocker) == 32);
 static_assert(sizeof(GpuFrame) == 144);
 static_assert(sizeof(GpuLpvCascade) == 32);
 static_assert(sizeof(GpuLpv) == 192);

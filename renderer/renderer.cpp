@@ -299,12 +299,14 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
                                            ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
   const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
                             std::to_string(request.lpv.grid.z) + " cells";
-  const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades);
+  const std::uint32_t geometry_slots = geometry_sources(request.lpv).slots();
+  const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades, geometry_slots);
   if (lpv && lpv_bytes > kLpvBudgetBytes)
     throw api::DoesNotFit("lpv.grid", api::counted(request.lpv.cascades, "cascade") + " of " + cells + " need " +
                                             mib(lpv_bytes) + ", over the budget of " + mib(kLpvBudgetBytes) +
                                             ": use fewer cells");
-  const std::uint64_t buffer_bytes = LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades);
+  const std::uint64_t buffer_bytes =
+      LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades, geometry_slots);
   const std::uint64_t buffer_range = device.info().limits.maxStorageBufferRange;
   if (lpv && buffer_bytes > buffer_range)
     throw api::DoesNotFit("lpv.grid", cells + " need a storage buffer of " + mib(buffer_bytes) +
@@ -324,16 +326,17 @@ void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& r
     atlas.emplace(device, shadow_res, shadow_layers);
   }
   if (!lpv) {
-    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1);  // something for the shading to bind
+    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1, 1);  // something for the shading to bind
     return;  // RSMs and grids of earlier requests stay for the next that needs them
   }
   if (!rsm_maps || rsm_maps->resolution != request.lpv.rsm_resolution || rsm_maps->layers != rsm_layers) {
     rsm_maps.reset();
     rsm_maps.emplace(device, request.lpv.rsm_resolution, rsm_layers);
   }
-  if (!volumes || volumes->dims != request.lpv.grid || volumes->cascades != request.lpv.cascades) {
+  if (!volumes || volumes->dims != request.lpv.grid || volumes->cascades != request.lpv.cascades ||
+      volumes->geometry_slots < geometry_slots) {
     volumes.reset();
-    volumes.emplace(device, request.lpv.grid, request.lpv.cascades);
+    volumes.emplace(device, request.lpv.grid, request.lpv.cascades, geometry_slots);
   }
   volumes->set_iterations(device, request.lpv.iterations);
 }
@@ -617,9 +620,13 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv, bool with_geometry
   };
   std::vector<glm::vec4> channels[3];
   for (int c = 0; c < 3; ++c) channels[c] = read_back_volume(volumes->accumulated[c], volumes->accumulated[c].texels());
-  if (with_geometry_volume) {  // the blocking SH, the faces' first 3 texels a cell (lpv_face_texel)
+  if (with_geometry_volume) {  // the blocking SH, then the spreads: 3 texels a cell each (lpv_face_texel)
     const glm::uvec3 d = volumes->dims;
-    snapshot.faces = read_back_volume(volumes->faces, 3 * std::size_t(d.x) * d.y * d.z);
+    const std::size_t face_count = 3 * std::size_t(d.x) * d.y * d.z;
+    std::vector<glm::vec4> texels = read_back_volume(volumes->faces, 2 * face_count);
+    snapshot.face_spreads.assign(texels.begin() + std::ptrdiff_t(face_count), texels.end());
+    texels.resize(face_count);
+    snapshot.faces = std::move(texels);
   }
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
     const CascadePlacement& p = lpv.cascades[c];
@@ -659,18 +666,20 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
       inject.record(cmd, cascade, lpv_uniforms, frame.plan.run[kRsm] ? &*rsm_maps : nullptr, vpls_per_view_side(lpv),
                     frame.gpu, *volumes, lpv.injection);
       break;
-    case kGeometryVolume:
+    case kGeometryVolume: {
       if (cascade == 0) {  // the camera's surfels, drawn once for every cascade (timed with the first)
         if (lpv.occlusion_from_camera)
           gbuffer.record(cmd, frame.gpu, frame.draw_order, targets->surfels, frame_uniforms);
         else
           GBufferPass::record_unused(cmd, targets->surfels);
       }
-      geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, targets->surfels,
-                      {lpv.occlusion_from_rsm && frame.plan.run[kRsm], lpv.occlusion_from_camera, frame.lpv.gpu.sizes.w,
-                       lpv.injection, frame.lpv.bounces},
-                      *volumes);
+      GeometrySources sources = geometry_sources(lpv);
+      sources.rsm = sources.rsm && frame.plan.run[kRsm];
+      sources.rsm_stride = frame.lpv.gpu.sizes.w;
+      sources.bounces = frame.lpv.bounces;
+      geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, targets->surfels, frame.gpu, sources, *volumes);
       break;
+    }
     case kPropagate:
       propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.occlusion, frame.lpv.bounces, lpv_uniforms,
                        *volumes);

@@ -44,8 +44,10 @@ struct LpvSnapshot {
   std::vector<glm::vec4> rsm_normal;    // xyz, w: albedo code
   std::vector<glm::vec4> rsm_flux;      // rgb: VPL flux (W), w: surfel area
   // The geometry volume of the last cascade (one volume serves each cascade in turn): per
-  // cell, the blocking SH on its +X, +Y, +Z faces; empty when the frame built none.
+  // cell, the blocking SH on its +X, +Y, +Z faces, and the spread of the blockers' normals
+  // there (xyz; lpv_closed_blocking); empty when the frame built none.
   std::vector<glm::vec4> faces;
+  std::vector<glm::vec4> face_spreads;
 };
 
 // The readback a request's output format needs.

@@ -1,11 +1,12 @@
 #version 450
 // Geometry volume, step 1: surfels add their blocking potential to the cell corners around them.
-// A surfel of area A with normal n blocks the fraction A / s^2 * max(0, <n, -w>) of light
-// travelling in direction w across a cell face of side s: one-sided, since a two-sided
-// surfel cancels in 2-band SH (LPV annotations 5.1). Surfels come from the RSMs (every light
-// view) and from the camera's surfel G-buffer; each source has its own accumulators, so the
-// same wall seen by both is not counted twice (the resolve takes the stronger source per
-// corner).
+// A surfel of area A with normal n has the blocking potential p = A / s^2 on a cell face of
+// side s: the fraction of light travelling along w it stops is p <n, -w> (one-sided, the
+// cosine lobe of the SH; LPV annotations 5.1) or p |<n, w>| (projected, from the SH's first
+// moment and, where both sides of a wall cancel there, the spread p |n|; lpv_sh.h). Surfels come from the RSMs (every light
+// view), from the camera's surfel G-buffer, or from the scene's surfaces themselves (the
+// blockers, cut from its triangles once); each source has its own accumulators, so the same
+// wall seen by two is not counted twice (the resolve takes the stronger source per corner).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
@@ -22,8 +23,11 @@ layout(set = 0, binding = 3, rgba32f) uniform readonly image2DArray rsm_flux;
 layout(set = 0, binding = 4, rgba32f) uniform readonly image2D g_position;
 layout(set = 0, binding = 5, rgba16f) uniform readonly image2D g_normal;
 layout(set = 0, binding = 6, rgba16f) uniform readonly image2D g_albedo;
-layout(std430, set = 0, binding = 7) buffer CornerSums { int64_t corner_sums[]; };  // lpv_gv_corner_words per corner, source
-layout(push_constant) uniform Push { uint cascade; uint source; } push;
+// lpv_gv_corner_words per corner and slot, `slots` slots a corner.
+layout(std430, set = 0, binding = 7) buffer CornerSums { int64_t corner_sums[]; };
+layout(std430, set = 0, binding = 8) readonly buffer Blockers { GpuBlocker blockers[]; };
+// The scene source: how many blockers, each invocation taking one (LPV_BLOCKER_GROUP a group).
+layout(push_constant) uniform Push { uint cascade; uint source; uint slot; uint slots; uint blocker_count; } push;
 
 // Surfels seen edge-on count at most this many times their projected area.
 const float MIN_AREA_COSINE = 0.25;
@@ -38,13 +42,13 @@ vec3 decode_albedo(float code) {
 // The blockers' albedo serves bounces only: without them it is neither summed nor splatted.
 layout(constant_id = 1) const bool BOUNCES = true;
 
-// The lattice is the cell corners; each holds lpv_gv_corner_words sums per source (gpu_types.h).
+// The lattice is the cell corners; each holds lpv_gv_corner_words sums per slot (gpu_types.h).
 #define SPLAT_VALUES LPV_GV_WORDS
 #define SPLAT_ACTIVE_VALUES lpv_gv_corner_words(BOUNCES)
 #define SPLAT_SUMS corner_sums
 uint splat_index(ivec3 corner) {
   uvec3 corner_dims = lpv.cascades[push.cascade].dims.xyz + 1u;
-  return (lpv_cell_index(uvec3(corner), corner_dims) * LPV_GV_SOURCES + push.source) * SPLAT_ACTIVE_VALUES;
+  return (lpv_cell_index(uvec3(corner), corner_dims) * push.slots + push.slot) * SPLAT_ACTIVE_VALUES;
 }
 #include "shared/lpv_splat.glsl"
 
@@ -58,9 +62,12 @@ bool surfel_splat(vec3 p, vec3 n, float area, vec3 albedo, out ivec3 low, out ve
   float potential = min(area / (s * s), MAX_POTENTIAL);
   vec4 lobe = sh_cosine_lobe(n);
   for (uint k = 0u; k < 4u; ++k) values[k] = lobe[k] * potential;
+  // The spread p |n| (lpv_closed_blocking), which both sides of a wall add to alike.
+  for (uint k = 0u; k < 3u; ++k) values[LPV_GV_SPREAD + k] = abs(n[k]) * potential;
+  values[LPV_GV_SPREAD + 3u] = 0.0;
   if (BOUNCES) {
-    for (uint c = 0u; c < 3u; ++c) values[4u + c] = albedo[c] * potential;
-    values[7] = potential;
+    for (uint c = 0u; c < 3u; ++c) values[LPV_GV_ALBEDO + c] = albedo[c] * potential;
+    values[LPV_GV_ALBEDO + 3u] = potential;
   }
   splat_lattice(q, low, f);  // lattice: cell corners
   return lpv_inside_distance(g, q) >= 0.0 && potential > 0.0;
@@ -86,6 +93,18 @@ void main() {
       normal = n.xyz;
       area = imageLoad(rsm_flux, texel).w * float(stride * stride);
       albedo = decode_albedo(n.w);
+    }
+  } else if (push.source == LPV_GV_SOURCE_SCENE) {
+    // A piece of a scene surface: consecutive ones lie close together (pieces of one triangle),
+    // as splat_subgroup wants.
+    uint index = gl_WorkGroupID.x * LPV_BLOCKER_GROUP + gl_LocalInvocationIndex;
+    if (index < push.blocker_count) {
+      GpuBlocker b = blockers[index];
+      found = true;
+      position = b.position.xyz;
+      normal = b.normal.xyz;
+      area = b.position.w;
+      albedo = decode_albedo(b.normal.w);
     }
   } else {
     // A texel of the camera's surfel G-buffer, standing for stride^2 pixels of the image.

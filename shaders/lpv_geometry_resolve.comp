@@ -1,6 +1,6 @@
 #version 450
-// Geometry volume, step 3: for each cell, the blocking potential on its +X, +Y and +Z faces,
-// the mean of each face's four corners. Propagation between two neighbouring cells reads the
+// Geometry volume, step 3: for each cell, the blocking potential on its +X, +Y and +Z faces
+// (its SH and spread), the mean of each face's four corners. Propagation between two neighbouring cells reads the
 // face they share. Also the blockers' mean albedo per face, for the light they reflect.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
@@ -10,8 +10,9 @@
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
 layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer corners;  // 2 texels per corner
+layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer corners;  // LPV_GV_CORNER_TEXELS per corner
 layout(std430, set = 0, binding = 2) writeonly buffer Faces { u64vec2 faces[]; };
+layout(std430, set = 0, binding = 3) writeonly buffer FaceAlbedo { u64vec2 face_albedo[]; };
 layout(push_constant) uniform Push { uint cascade; } push;
 // The blockers' albedo serves bounces only: without them its faces are not written.
 layout(constant_id = 0) const bool BOUNCES = true;
@@ -25,18 +26,21 @@ void main() {
     int u = (axis + 1) % 3;
     int v = (axis + 2) % 3;
     vec4 sh = vec4(0.0);
+    vec4 spread = vec4(0.0);
     vec4 albedo = vec4(0.0);
     for (int k = 0; k < 4; ++k) {
       ivec3 corner = cell;
       corner[axis] += 1;
       corner[u] += k & 1;
       corner[v] += k >> 1;
-      int texel = 2 * int(lpv_cell_index(uvec3(corner), dims + 1u));
+      int texel = int(LPV_GV_CORNER_TEXELS * lpv_cell_index(uvec3(corner), dims + 1u));
       sh += 0.25 * imageLoad(corners, texel);
-      if (BOUNCES) albedo += imageLoad(corners, texel + 1);
+      spread += 0.25 * imageLoad(corners, texel + 1);
+      if (BOUNCES) albedo += imageLoad(corners, texel + 2);
     }
     faces[lpv_face_texel(cell, axis, dims)] = texel_bits(sh);
+    faces[lpv_face_spread_texel(cell, axis, dims)] = texel_bits(spread);
     if (BOUNCES)
-      faces[lpv_face_albedo_texel(cell, axis, dims)] = texel_bits(vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
+      face_albedo[lpv_face_albedo_texel(cell, axis, dims)] = texel_bits(vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
   }
 }

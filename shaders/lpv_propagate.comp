@@ -43,6 +43,7 @@ layout(set = 0, binding = 2, rgba32f) uniform readonly imageBuffer accumulated_r
 layout(set = 0, binding = 3, rgba32f) uniform readonly imageBuffer accumulated_g;
 layout(set = 0, binding = 4, rgba32f) uniform readonly imageBuffer accumulated_b;
 layout(set = 0, binding = 5, rgba32f) uniform readonly imageBuffer faces;  // lpv_face_texel
+layout(set = 0, binding = 11, rgba32f) uniform readonly imageBuffer face_albedo;  // lpv_face_albedo_texel
 layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
 layout(std430, set = 0, binding = 7) writeonly buffer GridStore { u64vec2 grid_store[]; };
 layout(std430, set = 0, binding = 8) writeonly buffer AccumulatedR { u64vec2 accumulated_store_r[]; };
@@ -87,18 +88,19 @@ Sender load_sender(ivec3 cell, uint which, uvec3 dims, float inside) {
 
 // The blocking SH of a face as h = (1 - its constant term, its linear terms / sqrt(5)) in the
 // axes' order, so that with u = sqrt(5) <h.yzw, w> the fraction it lets through along w is
-// lpv_transmitted's: clamp(h.x + u, 0, 1) for the one-sided lobe, clamp(1 - 2 |u|, 0, 1) for
-// the projected area (transmitted() below); (1, 0, 0, 0), all through, when off.
+// lpv_transmitted's: clamp(h.x + u, 0, 1) for the one-sided lobe, clamp(1 - max(2 |u|, q), 0,
+// 1) for the projected area, q the closed surfaces' part (transmitted() below); (1, 0, 0, 0),
+// all through, when off.
 vec4 face_transmission(vec4 blocking, float on) {
   vec4 g = blocking * on;
   return vec4(1.0 - SH_C0 * g.x, vec3(-g.w, -g.y, g.z) * (SH_C1 / LPV_SQRT5));
 }
 
-// The fraction let through for the faces' values u (see face_transmission): lpv.transfer.z
-// selects the projected area (1) or the one-sided lobe (0), a uniform rather than a pipeline
-// variant since it costs one abs and one mix.
-vec4 transmitted(float h0, vec4 u) {
-  return clamp(mix(h0 + u, 1.0 - 2.0 * abs(u), lpv.transfer.z), 0.0, 1.0);
+// The fraction let through for the faces' values u (see face_transmission) and closed
+// blocking q: lpv.transfer.z selects the projected area (1) or the one-sided lobe (0), a
+// uniform rather than a pipeline variant since it costs one abs and one mix.
+vec4 transmitted(float h0, vec4 u, vec4 q) {
+  return clamp(mix(h0 + u, 1.0 - max(2.0 * abs(u), q), lpv.transfer.z), 0.0, 1.0);
 }
 
 // One channel of a neighbour on axis a, travelling along sigma * a, in the axes' order
@@ -130,30 +132,33 @@ void reflect_blocked(inout Gathered g, vec4 blocking, vec3 albedo, vec3 w, vec3 
 }
 
 // The 5 faces a neighbour's light enters through, for bounces: the same values as receive(),
-// in world axes, with the light its blockers stop reflected.
-void reflect_neighbour(inout Gathered g, Sender n, vec4 blocking, vec3 albedo, vec3 a, vec3 b, vec3 c) {
+// in world axes, with the light its blockers stop reflected. a = sigma times the face's axis,
+// b and c the next two axes.
+void reflect_neighbour(inout Gathered g, Sender n, vec4 blocking, vec3 spread, vec3 albedo, vec3 a, vec3 b, vec3 c) {
   vec3 dirs[5] = vec3[5](a, (2.0 * a + b) / LPV_SQRT5, (2.0 * a - b) / LPV_SQRT5, (2.0 * a + c) / LPV_SQRT5, (2.0 * a - c) / LPV_SQRT5);
   for (int f = 0; f < 5; ++f) {
     vec3 w = dirs[f];
     float omega = f == 0 ? LPV_FAR_FACE_SOLID_ANGLE : LPV_SIDE_FACE_SOLID_ANGLE;
     vec3 unblocked;
     for (int k = 0; k < 3; ++k) unblocked[k] = omega * max(n.e[k].x + LPV_SQRT5 * dot(n.e[k].yzw, w), 0.0);
-    float blocked = 1.0 - lpv_transmitted(blocking, w, lpv.transfer.z);
+    float blocked = 1.0 - lpv_transmitted(blocking, w, lpv_closed_blocking(spread, w), lpv.transfer.z);
     reflect_blocked(g, blocking, albedo, w, unblocked, blocked);
   }
 }
 
-// The face a neighbour's light enters through: its blockers' SH (zero when not occluded) and
-// mean albedo (bounces only).
+// The face a neighbour's light enters through: its blockers' SH and the spread of their
+// normals (zero when not occluded) and mean albedo (bounces only).
 struct Face {
   vec4 blocking;
+  vec3 spread;
   vec3 albedo;
 };
 
 // The face on the +axis side of `cell`.
 Face load_face(ivec3 cell, int axis, uvec3 dims) {
   return Face(OCCLUDED ? imageLoad(faces, lpv_face_texel(cell, axis, dims)) : vec4(0.0),
-              BOUNCES ? imageLoad(faces, lpv_face_albedo_texel(cell, axis, dims)).rgb : vec3(0.0));
+              OCCLUDED ? imageLoad(faces, lpv_face_spread_texel(cell, axis, dims)).xyz : vec3(0.0),
+              BOUNCES ? imageLoad(face_albedo, lpv_face_albedo_texel(cell, axis, dims)).rgb : vec3(0.0));
 }
 
 // Adds the light of neighbour n on axis `axis` (0, 1, 2 = x, y, z), travelling along sigma
@@ -166,9 +171,18 @@ void gather(inout Gathered g, Sender n, int axis, float sigma, Face face, float 
   float t_far = 1.0;
   vec4 t_side = vec4(1.0);
   if (OCCLUDED) {
-    t_far = transmitted(h.x, vec4((sigma * LPV_SQRT5) * h.y)).x;
+    // The spread in the same permuted axes; closed blocking is the same for +w and -w, and
+    // for the side faces +b and -b (and +c and -c).
+    vec3 spread = face.spread * blocking_on;
+    if (axis == 1) spread = spread.yzx;
+    if (axis == 2) spread = spread.zxy;
+    float closed_far = lpv_closed_blocking(spread, vec3(1.0, 0.0, 0.0));
+    float closed_b = lpv_closed_blocking(spread, vec3(2.0, 1.0, 0.0) * LPV_INV_SQRT5);
+    float closed_c = lpv_closed_blocking(spread, vec3(2.0, 0.0, 1.0) * LPV_INV_SQRT5);
+    t_far = transmitted(h.x, vec4((sigma * LPV_SQRT5) * h.y), vec4(closed_far)).x;
     float shared_term = (2.0 * sigma) * h.y;
-    t_side = transmitted(h.x, vec4(shared_term + h.z, shared_term - h.z, shared_term + h.w, shared_term - h.w));
+    t_side = transmitted(h.x, vec4(shared_term + h.z, shared_term - h.z, shared_term + h.w, shared_term - h.w),
+                         vec4(closed_b, closed_b, closed_c, closed_c));
   }
   for (int c = 0; c < 3; ++c) {
     if (axis == 0) receive(g.far[c], g.side[c], n.e[c], sigma, t_far, t_side);
@@ -180,7 +194,7 @@ void gather(inout Gathered g, Sender n, int axis, float sigma, Face face, float 
     a[axis] = sigma;
     b[(axis + 1) % 3] = 1.0;
     c[(axis + 2) % 3] = 1.0;
-    reflect_neighbour(g, n, face.blocking * blocking_on, face.albedo, a, b, c);
+    reflect_neighbour(g, n, face.blocking * blocking_on, face.spread * blocking_on, face.albedo, a, b, c);
   }
 }
 

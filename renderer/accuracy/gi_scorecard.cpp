@@ -81,6 +81,8 @@ SceneScore score_request(Workbench& bench, api::RenderRequest request, const Sco
   const double our_indirect = masked_mean(indirect, interior, everywhere);
   score.indirect_ratio = ratio(our_indirect, masked_mean(truth.indirect, interior, everywhere));
   score.indirect_over_direct = ratio(our_indirect, masked_mean(direct, interior, everywhere));
+  score.indirect = indirect;
+  score.reference_indirect = truth.indirect;
 
   if (request.scene == "cornell-box") {
     const image::Mask ceiling = ceiling_of(render_linear(r, request, api::View::normal), interior);

@@ -6,6 +6,7 @@
 
 #include "api/render_request.hpp"
 #include "renderer/accuracy/workbench.hpp"
+#include "renderer/image/image.hpp"
 
 #include <optional>
 #include <string>
@@ -38,6 +39,9 @@ struct SceneScore {
   double relative_noise = 0.0;  // the reference's noise over its mean indirect light
   double gpu_ms = 0.0;          // the request's frame, median of its `repeat` frames
   double off_gpu_ms = 0.0;      // the same frame with LPV off
+  // The two indirect images compared (linear), for a look at where they differ.
+  image::RgbaF32Image indirect;
+  image::RgbaF32Image reference_indirect;
 };
 
 // Renders `request` (final, direct and indirect views, and final with LPV off) at the

@@ -11,7 +11,8 @@
 
 namespace renderer {
 
-// At most `max_surfels` (the pieces grow until they fit; every triangle gives at least one).
+// At most `max_surfels` (the pieces grow until they fit), or two a triangle where there are
+// more triangles (every triangle gives at least one piece).
 std::vector<gpu::GpuEmitter> emitter_surfels(const scene::Scene& scene, std::size_t max_surfels = 1u << 16);
 
 // The largest channel of the surfels' summed flux: the emitters' share of the fixed-point range.

@@ -10,14 +10,16 @@ namespace renderer {
 namespace {
 
 constexpr VkDeviceSize kInjectedBytesPerCell = 12 * 8;
-constexpr VkDeviceSize kCornerSumBytes = gpu::LPV_GV_SOURCES * gpu::LPV_GV_WORDS * 8;
+constexpr VkDeviceSize kCornerSumBytesPerSlot = gpu::LPV_GV_WORDS * 8;
 constexpr VkDeviceSize kGridTexelsPerCell = 2 * 3;  // two grids of three channels
 constexpr VkDeviceSize kGridBytesPerCell = kGridTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
 constexpr VkDeviceSize kAccumulatedBytesPerCell = 3 * vkx::TexelBuffer::kTexelBytes;
-constexpr VkDeviceSize kCornerTexels = 2;
-constexpr VkDeviceSize kCornerBytes = kCornerSumBytes + kCornerTexels * vkx::TexelBuffer::kTexelBytes;
-constexpr VkDeviceSize kFaceTexelsPerCell = 6;
+constexpr VkDeviceSize kCornerTexels = gpu::LPV_GV_CORNER_TEXELS;
+constexpr VkDeviceSize kCornerBytes = kCornerTexels * vkx::TexelBuffer::kTexelBytes;
+constexpr VkDeviceSize kFaceTexelsPerCell = 6;  // lpv_grid.glsl: the SH and spread of 3 faces
 constexpr VkDeviceSize kFaceBytesPerCell = kFaceTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
+constexpr VkDeviceSize kFaceAlbedoTexelsPerCell = 3;
+constexpr VkDeviceSize kFaceAlbedoBytesPerCell = kFaceAlbedoTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
 constexpr VkFormat kSums = VK_FORMAT_R32G32B32A32_UINT;
 constexpr std::size_t kRecordInt64s = gpu::LPV_FLUX_SLOTS * gpu::LPV_FLUX_SLOT_INT64S;  // one flux_stats record
 
@@ -40,40 +42,43 @@ RsmMaps::RsmMaps(const vkx::Device& device, std::uint32_t res, std::uint32_t n)
       depth(device, {kDepthFormat, res, res, n, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
                      true}) {}
 
-std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades) {
+std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots) {
   const std::uint64_t cells = cell_count(dims);
-  return cells * (kInjectedBytesPerCell + kGridBytesPerCell + kFaceBytesPerCell + kAccumulatedBytesPerCell * cascades) +
-         cell_count(dims + 1u) * kCornerBytes;
+  return cells * (kInjectedBytesPerCell + kGridBytesPerCell + kFaceBytesPerCell + kFaceAlbedoBytesPerCell +
+                  kAccumulatedBytesPerCell * cascades) +
+         cell_count(dims + 1u) * (kCornerBytes + geometry_slots * kCornerSumBytesPerSlot);
 }
 
-std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades) {
+std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots) {
   const std::uint64_t per_cell =
       std::max({kInjectedBytesPerCell, kGridBytesPerCell, kFaceBytesPerCell, cascades * vkx::TexelBuffer::kTexelBytes});
-  return std::max(cell_count(dims) * per_cell, cell_count(dims + 1u) * kCornerSumBytes);
+  return std::max(cell_count(dims) * per_cell, cell_count(dims + 1u) * geometry_slots * kCornerSumBytesPerSlot);
 }
 
-LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c)
+LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c, std::uint32_t slots)
     : dims(d),
       cascades(c),
+      geometry_slots(slots),
       injected(device, cell_count(d) * kInjectedBytesPerCell / vkx::TexelBuffer::kTexelBytes, kSums),
-      corner_sums(device, cell_count(d + 1u) * kCornerSumBytes / vkx::TexelBuffer::kTexelBytes, kSums),
+      corner_sums(device, cell_count(d + 1u) * slots * kCornerSumBytesPerSlot / vkx::TexelBuffer::kTexelBytes, kSums),
       grids(device, cell_count(d) * kGridTexelsPerCell),
       accumulated{vkx::TexelBuffer(device, cell_count(d) * c), vkx::TexelBuffer(device, cell_count(d) * c),
                   vkx::TexelBuffer(device, cell_count(d) * c)},
       corners(device, cell_count(d + 1u) * kCornerTexels),
-      faces(device, cell_count(d) * kFaceTexelsPerCell) {
+      faces(device, cell_count(d) * kFaceTexelsPerCell),
+      face_albedo(device, cell_count(d) * kFaceAlbedoTexelsPerCell) {
   device.run_once([&](VkCommandBuffer cmd) {
     // The accumulated light of cascades a frame does not propagate, and the faces before a
     // geometry volume was ever built, are read (with zero effect).
-    for (const vkx::TexelBuffer* b : {&accumulated[0], &accumulated[1], &accumulated[2], &faces})
+    for (const vkx::TexelBuffer* b : {&accumulated[0], &accumulated[1], &accumulated[2], &faces, &face_albedo})
       vkCmdFillBuffer(cmd, b->buffer().handle(), 0, VK_WHOLE_SIZE, 0);
     vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   });
 }
 
-VkDeviceSize LpvVolumes::corner_sum_bytes(bool bounces) const {
-  return VkDeviceSize(cell_count(dims + 1u)) * gpu::LPV_GV_SOURCES * gpu::lpv_gv_corner_words(bounces) * 8;
+VkDeviceSize LpvVolumes::corner_sum_bytes(std::uint32_t slots, bool bounces) const {
+  return VkDeviceSize(cell_count(dims + 1u)) * slots * gpu::lpv_gv_corner_words(bounces) * 8;
 }
 
 void LpvVolumes::set_iterations(const vkx::Device& device, std::uint32_t n) {

@@ -35,22 +35,25 @@ struct RsmMaps {
 // 20 times slower), and stores a texel to a storage buffer in one loop, where an image store
 // takes four. Cells and corners are in x-fastest order (lpv_grid.glsl).
 struct LpvVolumes {
-  LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades);
+  // `geometry_slots`: the geometry volume's sources a frame may use (GeometrySources::slots).
+  LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots);
 
   // Sizes the flux statistics for `iterations` per cascade. Only that small buffer depends on
   // the iteration count, so a sweep over iterations keeps the grids; it is reallocated only
   // when it must grow.
   void set_iterations(const vkx::Device& device, std::uint32_t iterations);
 
-  // Bytes of corner_sums a frame uses: fewer sums a corner without bounces (lpv_gv_corner_words).
-  VkDeviceSize corner_sum_bytes(bool bounces) const;
+  // Bytes of corner_sums a frame uses with `slots` sources: fewer sums a corner without
+  // bounces (lpv_gv_corner_words).
+  VkDeviceSize corner_sum_bytes(std::uint32_t slots, bool bounces) const;
 
   // Device memory the volumes of these sizes take.
-  static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades);
+  static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots);
   // The largest buffer of the volumes, all texel buffers: it must fit the device's
-  // maxStorageBufferRange (128 MiB on lavapipe: up to 100^3 cells, the corner sums the
-  // largest) and, in texels of vkx::TexelBuffer::kTexelBytes, its maxTexelBufferElements.
-  static std::uint64_t largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades);
+  // maxStorageBufferRange (128 MiB on lavapipe: up to 110^3 cells with one source of the
+  // geometry volume, 76^3 with all three, whose corner sums are then the largest) and, in
+  // texels of vkx::TexelBuffer::kTexelBytes, its maxTexelBufferElements.
+  static std::uint64_t largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots);
 
   // Records of flux_stats (gpu::LPV_FLUX_SLOTS): the VPL flux of a cascade, and its grid's
   // flux after iteration k (k = 0: as injected).
@@ -64,12 +67,13 @@ struct LpvVolumes {
 
   glm::uvec3 dims;
   std::uint32_t cascades;
+  std::uint32_t geometry_slots;
   std::uint32_t iterations = 0;    // of the current frame (set_iterations)
   std::uint32_t records_per_cascade = 0;  // in flux_stats: iterations + 2
   // The scattering passes' 64-bit fixed-point sums, added with atomics and read back as RGBA32UI
   // texels (two sums a texel): int64[12] per cell, the SH of the injected VPLs; and
-  // int64[lpv_gv_corner_words(bounces)] per corner and source, the geometry volume's (room
-  // for LPV_GV_WORDS).
+  // int64[lpv_gv_corner_words(bounces)] per corner and slot, the geometry volume's (room for
+  // LPV_GV_WORDS in each of geometry_slots).
   vkx::TexelBuffer injected;
   vkx::TexelBuffer corner_sums;
   vkx::Buffer flux_stats;  // records of int64 fixed-point fluxes, host-visible
@@ -80,13 +84,15 @@ struct LpvVolumes {
   // The light the shading reads (and filters itself), one buffer per colour channel:
   // texel cascade * cells + cell.
   vkx::TexelBuffer accumulated[3];
-  // Geometry volume per cell corner, the stronger source: texel 2 corner + k (corners in
-  // x-fastest order on the (dims + 1)^3 lattice), k = 0 blocking SH, k = 1 albedo-weighted sum
-  // (rgb) and weight (a).
+  // Geometry volume per cell corner, the strongest source: texel 3 corner + k (corners in
+  // x-fastest order on the (dims + 1)^3 lattice), k = 0 blocking SH, k = 1 the spread of its
+  // normals (lpv_closed_blocking), k = 2 albedo-weighted sum (rgb) and weight (a).
   vkx::TexelBuffer corners;
   // Geometry volume per cell: texel 3 cell + k, the blocking SH on its +X, +Y, +Z faces
-  // (k = 0, 1, 2), then texel 3 (cells + cell) + k, the blockers' albedo there
-  // (lpv_face_texel).
+  // (k = 0, 1, 2), then texel 3 (cells + cell) + k, the spread there (lpv_face_texel); and
+  // apart, texel 3 cell + k, the blockers' albedo there (bounces only), so that no buffer
+  // holds more than 6 texels a cell.
   vkx::TexelBuffer faces;
+  vkx::TexelBuffer face_albedo;
 };
 }  // namespace renderer

@@ -13,9 +13,26 @@ namespace {
 struct SourceConstants {
   std::uint32_t cascade;
   std::uint32_t source;
+  std::uint32_t slot;
+  std::uint32_t slots;
+  std::uint32_t blocker_count;
+};
+
+struct CornerConstants {
+  std::uint32_t cascade;
+  std::uint32_t slots;
 };
 
 }  // namespace
+
+GeometrySources geometry_sources(const api::Lpv& lpv) {
+  GeometrySources s;
+  s.rsm = lpv.occlusion_from_rsm;
+  s.camera = lpv.occlusion_from_camera;
+  s.scene = lpv.occlusion_from_scene;
+  s.injection = lpv.injection;
+  return s;
+}
 
 GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
@@ -23,14 +40,14 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   inject_layout_ =
-      vkx::compute_layout({uniform, image, image, image, image, image, image, buffer}, sizeof(SourceConstants));
-  corners_layout_ = vkx::compute_layout({uniform, texels, buffer}, sizeof(std::uint32_t));
-  resolve_layout_ = vkx::compute_layout({uniform, texels, buffer}, sizeof(std::uint32_t));
+      vkx::compute_layout({uniform, image, image, image, image, image, image, buffer, buffer}, sizeof(SourceConstants));
+  corners_layout_ = vkx::compute_layout({uniform, texels, buffer}, sizeof(CornerConstants));
+  resolve_layout_ = vkx::compute_layout({uniform, texels, buffer, buffer}, sizeof(std::uint32_t));
 }
 
 void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
-                                const RsmMaps& maps, const GBuffer& camera, const GeometrySources& sources,
-                                const LpvVolumes& volumes) const {
+                                const RsmMaps& maps, const GBuffer& camera, const GpuScene& scene,
+                                const GeometrySources& sources, const LpvVolumes& volumes) const {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
   const std::uint32_t trilinear = sources.injection == api::Injection::trilinear ? 1u : 0u;
@@ -48,6 +65,7 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .image(5, image, camera.normal.view(), general)
       .image(6, image, camera.albedo.view(), general)
       .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.buffer().handle())
+      .buffer(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.blockers.handle())
       .apply(device_.handle());
   const vkx::Pipeline& corners = corners_.get(with_albedo[0], [&] {
     return vkx::Pipeline(device_, corners_layout_, spirv_lpv_geometry_corners_comp, with_albedo);
@@ -64,26 +82,34 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
       .texel_buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.corners.view())
       .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.buffer().handle())
+      .buffer(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.face_albedo.buffer().handle())
       .apply(device_.handle());
 
-  vkCmdFillBuffer(cmd, volumes.corner_sums.buffer().handle(), 0, volumes.corner_sum_bytes(sources.bounces), 0);
+  const std::uint32_t slots = sources.slots();
+  vkCmdFillBuffer(cmd, volumes.corner_sums.buffer().handle(), 0, volumes.corner_sum_bytes(slots, sources.bounces), 0);
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   inject.bind(cmd);
   if (sources.rsm) {
-    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_RSM});
+    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_RSM, sources.slot(gpu::LPV_GV_SOURCE_RSM), slots, 0});
     const std::uint32_t side = vkx::group_count(maps.resolution, sources.rsm_stride);
     vkCmdDispatch(cmd, vkx::group_count(side, gpu::LPV_VPL_GROUP), vkx::group_count(side, gpu::LPV_VPL_GROUP), maps.layers);
   }
   if (sources.camera) {
-    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA});
+    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA, sources.slot(gpu::LPV_GV_SOURCE_CAMERA),
+                                     slots, 0});
     vkCmdDispatch(cmd, vkx::group_count(camera.width, gpu::LPV_VPL_GROUP),
                   vkx::group_count(camera.height, gpu::LPV_VPL_GROUP), 1);
+  }
+  if (sources.scene && scene.blocker_count) {
+    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_SCENE, sources.slot(gpu::LPV_GV_SOURCE_SCENE), slots,
+                                     scene.blocker_count});
+    vkCmdDispatch(cmd, vkx::group_count(scene.blocker_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
   }
   vkx::compute_barrier(cmd);
   const glm::uvec3 d = volumes.dims;
   corners.bind(cmd);
-  corners.push(cmd, cascade);
+  corners.push(cmd, CornerConstants{cascade, slots});
   vkCmdDispatch(cmd, vkx::group_count(d.x + 1, gpu::LPV_GROUP), vkx::group_count(d.y + 1, gpu::LPV_GROUP), vkx::group_count(d.z + 1, gpu::LPV_GROUP));
   vkx::compute_barrier(cmd);
   resolve.bind(cmd);

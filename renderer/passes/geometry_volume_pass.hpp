@@ -1,31 +1,52 @@
-// LPV geometry volume for one cascade: surfels from the RSMs and from the camera's surfel
-// G-buffer (FrameTargets::surfels, drawn by the GBufferPass) add one-sided blocking
-// potentials to the cell corners (lpv_geometry_inject.comp); each corner keeps its stronger
+// LPV geometry volume for one cascade: surfels from the RSMs, from the camera's surfel
+// G-buffer (FrameTargets::surfels, drawn by the GBufferPass) and from the scene's surfaces
+// (GpuScene::blockers) add blocking potentials to the cell corners (lpv_geometry_inject.comp); each corner keeps its stronger
 // source (lpv_geometry_corners.comp); the corners become the blocking of every cell face
 // (lpv_geometry_resolve.comp).
 #pragma once
 
 #include "api/render_request.hpp"
 #include "renderer/frame_targets.hpp"
+#include "renderer/gpu_scene.hpp"
+#include "renderer/gpu_types.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/vulkan/pipeline.hpp"
+
+#include <algorithm>
 
 namespace renderer {
 
 struct GeometrySources {
   bool rsm = true;     // surfels of every rsm_stride-th RSM texel (each way)
   bool camera = true;  // surfels of every texel of the camera's surfel G-buffer
+  bool scene = false;  // the scene's surfaces, cut into pieces (GpuScene::blockers)
   std::uint32_t rsm_stride = 1;
   api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
   bool bounces = false;  // the blockers' albedo is splatted and resolved too (it serves bounces only)
+
+  // Slots of corner sums, one per source used (at least one), and the slot of `source`
+  // (gpu::LPV_GV_SOURCE_*): the sources' sums are kept apart so each corner can keep the
+  // strongest, and a frame pays in memory only for the sources it uses.
+  std::uint32_t slots() const { return std::max(1u, std::uint32_t(rsm) + std::uint32_t(camera) + std::uint32_t(scene)); }
+  std::uint32_t slot(std::uint32_t source) const {
+    const bool used[gpu::LPV_GV_SOURCES] = {rsm, camera, scene};
+    std::uint32_t s = 0;
+    for (std::uint32_t k = 0; k < source; ++k) s += used[k] ? 1u : 0u;
+    return s;
+  }
 };
+
+// The sources and splatting a request asks for (the renderer adds what the frame decides: the
+// RSM's stride, bounces, and whether the RSM ran).
+GeometrySources geometry_sources(const api::Lpv& lpv);
 
 class GeometryVolumePass {
  public:
   explicit GeometryVolumePass(const vkx::Device& device);
 
   void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
-              const GBuffer& camera_surfels, const GeometrySources& sources, const LpvVolumes& volumes) const;
+              const GBuffer& camera_surfels, const GpuScene& scene, const GeometrySources& sources,
+              const LpvVolumes& volumes) const;
 
  private:
   const vkx::Device& device_;

@@ -33,7 +33,7 @@ LpvPropagatePass::LpvPropagatePass(const vkx::Device& device, std::uint32_t colu
   const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   layout_ = vkx::compute_layout({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, texels, texels, texels, texels, texels, storage,
-                                 storage, storage, storage, storage},
+                                 storage, storage, storage, storage, texels},
                                 sizeof(IterationConstants));
 }
 
@@ -57,6 +57,7 @@ const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& par
       .buffer(8, storage, volumes.accumulated[0].buffer().handle())
       .buffer(9, storage, volumes.accumulated[1].buffer().handle())
       .buffer(10, storage, volumes.accumulated[2].buffer().handle())
+      .texel_buffer(11, texels, volumes.face_albedo.view())
       .apply(device_.handle());
   return p;
 }

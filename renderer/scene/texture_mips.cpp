@@ -55,4 +55,14 @@ std::vector<MipLevel> srgb_mip_chain(std::uint32_t width, std::uint32_t height, 
   return levels;
 }
 
+glm::vec3 linear_mean_colour(const std::vector<std::uint8_t>& rgba) {
+  const auto& decode = decode_table();
+  double sum[3] = {0.0, 0.0, 0.0};
+  const std::size_t texels = rgba.size() / 4;
+  for (std::size_t i = 0; i < texels; ++i)
+    for (int c = 0; c < 3; ++c) sum[c] += decode[rgba[4 * i + std::size_t(c)]];
+  if (texels == 0) return glm::vec3(0.0f);
+  return glm::vec3(float(sum[0] / double(texels)), float(sum[1] / double(texels)), float(sum[2] / double(texels)));
+}
+
 }  // namespace scene

@@ -2,6 +2,8 @@
 // halving the loader uses to bring a texture down to what the renderer keeps (LoadLimits).
 #pragma once
 
+#include <glm/vec3.hpp>
+
 #include <cstdint>
 #include <vector>
 
@@ -21,5 +23,8 @@ MipLevel srgb_half(const MipLevel& src);
 // box filter. Colour is averaged in linear light and re-encoded as sRGB: averaging the
 // encoded values would darken every minified texture. Alpha is averaged as stored.
 std::vector<MipLevel> srgb_mip_chain(std::uint32_t width, std::uint32_t height, const std::vector<std::uint8_t>& rgba);
+
+// The mean colour of 8-bit sRGB texels in linear light (black for none).
+glm::vec3 linear_mean_colour(const std::vector<std::uint8_t>& rgba);
 
 }  // namespace scene

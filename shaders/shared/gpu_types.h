@@ -95,6 +95,13 @@ struct GpuEmitter {
   vec4 flux;      // rgb: emitted flux, pi * radiance * area (W)
 };
 
+// A piece of a scene surface, splatted into the geometry volume as a blocker
+// (renderer/lpv/blocker_surfels.hpp).
+struct GpuBlocker {
+  vec4 position;  // xyz: world position; w: area (m^2)
+  vec4 normal;    // xyz: unit normal (the front by the triangle's winding); w: albedo as an 8-bit RGB code
+};
+
 struct GpuFrame {
   mat4 view_proj;         // world -> clip of the camera (Vulkan clip space, Y down)
   vec4 camera_position;   // xyz
@@ -125,15 +132,24 @@ LPV_CONST LPV_FLUX_SLOTS = 8u;
 LPV_CONST LPV_FLUX_SLOT_INT64S = 8u;
 LPV_CONST LPV_VPL_GROUP = 8u;     // injection: work groups of 8 x 8 VPLs
 LPV_CONST LPV_EMITTER_GROUP = 64u;  // injection of emissive surfels: work groups of 64
-LPV_CONST LPV_GV_SOURCES = 2u;    // geometry volume sources: RSM surfels, camera surfels
+// Geometry volume sources: RSM surfels, camera surfels, scene surfaces. A frame keeps the
+// sums of each source it uses apart, in a slot of its own (GeometrySources::slot).
+LPV_CONST LPV_GV_SOURCES = 3u;
 LPV_CONST LPV_GV_SOURCE_RSM = 0u;
 LPV_CONST LPV_GV_SOURCE_CAMERA = 1u;
-// int64 sums per corner and source: the blocking potential's SH (4), then the blockers'
-// albedo (3) and the potential (1), each weighted by it. The albedo serves bounces only, so a
-// frame without them lays its corners out with the SH's 4 alone and clears and splats into
-// half the memory; LPV_GV_WORDS is what the buffer holds.
-LPV_CONST LPV_GV_WORDS = 8u;
-LPV_CONST_FUNC uint lpv_gv_corner_words(bool bounces) { return bounces ? LPV_GV_WORDS : 4u; }
+LPV_CONST LPV_GV_SOURCE_SCENE = 2u;
+LPV_CONST LPV_BLOCKER_GROUP = 64u;  // the scene's blockers: work groups of 64 (8 x 8)
+// int64 sums per corner and slot: the blocking potential's SH (4), the spread of its
+// normals sum p |n| (3, and one unused; lpv_closed_blocking), then the blockers' albedo (3)
+// and the potential (1), each weighted by it. The albedo serves bounces only, so a frame
+// without them lays its corners out without it and clears and splats less memory;
+// LPV_GV_WORDS is what the buffer holds.
+LPV_CONST LPV_GV_WORDS = 12u;
+LPV_CONST LPV_GV_SPREAD = 4u;   // the first word of the spread
+LPV_CONST LPV_GV_ALBEDO = 8u;   // the first word of the albedo
+LPV_CONST_FUNC uint lpv_gv_corner_words(bool bounces) { return bounces ? LPV_GV_WORDS : LPV_GV_ALBEDO; }
+// Float texels per corner after the sources are resolved: the SH, the spread, the albedo.
+LPV_CONST LPV_GV_CORNER_TEXELS = 3u;
 
 // Light views of the RSM pass (GpuRsmView.info.y).
 LPV_CONST RSM_VIEW_PERSPECTIVE = 0u;

@@ -27,11 +27,13 @@ int lpv_accumulated_texel(ivec3 cell, uint cascade, uvec3 dims) {
 }
 
 // Texels of the geometry volume's faces (LpvVolumes::faces): the blocking SH on face k = 0,
-// 1, 2 (+X, +Y, +Z) of a cell, and the blockers' albedo there (bounces only) in a second
-// block, so that the blocking SH of neighbouring cells share cache lines.
+// 1, 2 (+X, +Y, +Z) of a cell, and in a second block the spread of the blockers' normals
+// there (lpv_closed_blocking), so that the blocking SH of neighbouring cells share cache
+// lines; and in LpvVolumes::face_albedo the blockers' albedo there (bounces only).
 int lpv_face_texel(ivec3 cell, int k, uvec3 dims) { return 3 * int(lpv_cell_index(uvec3(cell), dims)) + k; }
-int lpv_face_albedo_texel(ivec3 cell, int k, uvec3 dims) {
+int lpv_face_spread_texel(ivec3 cell, int k, uvec3 dims) {
   return 3 * int(dims.x * dims.y * dims.z + lpv_cell_index(uvec3(cell), dims)) + k;
 }
+int lpv_face_albedo_texel(ivec3 cell, int k, uvec3 dims) { return 3 * int(lpv_cell_index(uvec3(cell), dims)) + k; }
 
 #endif

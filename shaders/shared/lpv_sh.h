@@ -111,15 +111,27 @@ LPV_FUNC lpv_real sh_evaluate(vec4 sh, vec3 d) { return dot(sh, sh_basis(d)); }
 // only 3/4 of the light meeting it head-on. An opaque surfel stops the fraction p |<n, w>| of
 // light along w, its area projected across w, from either side (projected, `projected` = 1):
 // |<m, w>| = 2 |band-1 part|, exact for one plane. Blockers facing opposite ways on one face
-// cancel in m (both sides of a wall thinner than a cell, where both are seen), and clutter
-// facing many ways partly: they block less than they should. Returns the fraction let
-// through, in [0, 1].
-LPV_FUNC lpv_real lpv_transmitted(vec4 b, vec3 w, lpv_real projected) {
+// cancel in m: both sides of a wall thinner than a cell, which the scene's surfaces always
+// give (and the views' surfels where both sides are seen). The spread of their normals does
+// not cancel (lpv_closed_blocking): the projected blocking stops the larger of the two, `closed`.
+// Returns the fraction let through, in [0, 1].
+LPV_FUNC lpv_real lpv_transmitted(vec4 b, vec3 w, lpv_real closed, lpv_real projected) {
   const lpv_real one_sided = sh_evaluate(b, -w);
   const lpv_real directional = one_sided - SH_C0 * b.x;
-  const lpv_real blocked = one_sided + projected * (lpv_real(2) * abs(directional) - one_sided);
+  const lpv_real blocked = one_sided + projected * (max(lpv_real(2) * abs(directional), closed) - one_sided);
   return lpv_real(1) - clamp(blocked, lpv_real(0), lpv_real(1));
 }
+
+// The projected area across w of blockers that may be closed surfaces, from the sums of
+// their normals' absolute components, spread = sum p |n| (per axis). Each blocker's |<n, w>|
+// is at most sum_k |n_k| |w_k|, with equality when w lies along an axis (every far face) or
+// n does, or both lie in one quadrant: so <spread, |w|> is exact for any surface in the far
+// faces' directions and for surfaces along the axes in every direction, and too large by up
+// to 3 times for a slanted one in some side directions. It counts the two sides of a thin
+// wall twice, as a closed surface's sides add up (a ray crosses it twice): half of it is
+// the closed surfaces' projected area, and for one open plane half of its own (the first
+// moment gives that one in full: lpv_transmitted takes the larger).
+LPV_FUNC lpv_real lpv_closed_blocking(vec3 spread, vec3 w) { return lpv_real(0.5) * dot(spread, abs(w)); }
 
 // An SH vector whose irradiance is nowhere negative (docs/lpv.md, "Shading"). The irradiance of
 // a 2-band SH onto a surface facing n, <s, cosine lobe(-n)>, is least against the band-1 vector,

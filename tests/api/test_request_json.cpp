@@ -101,6 +101,7 @@ void expect_same(const api::RenderRequest& a, const api::RenderRequest& b) {
   EXPECT_EQ(a.lpv.occlusion, b.lpv.occlusion);
   EXPECT_EQ(a.lpv.occlusion_from_rsm, b.lpv.occlusion_from_rsm);
   EXPECT_EQ(a.lpv.occlusion_from_camera, b.lpv.occlusion_from_camera);
+  EXPECT_EQ(a.lpv.occlusion_from_scene, b.lpv.occlusion_from_scene);
   EXPECT_EQ(a.lpv.bounces, b.lpv.bounces);
   EXPECT_EQ(a.lpv.injection, b.lpv.injection);
   EXPECT_EQ(a.lpv.injection_offset, b.lpv.injection_offset);
@@ -198,7 +199,7 @@ TEST(ParseRequest, ReadsEveryField) {
     "output": {"width": 640, "height": 480, "format": "exr", "view": "normal", "exposure": -1.5, "tonemap": "aces"},
     "shadows": {"enabled": false, "resolution": 2048},
     "lpv": {"enabled": false, "grid": [16, 8, 4], "cascades": 3, "iterations": 0, "rsm": 64, "vpl_downsample": 4,
-            "occlusion": false, "occlusion_sources": ["camera"], "bounces": 2, "injection": "nearest",
+            "occlusion": false, "occlusion_sources": ["camera", "scene"], "bounces": 2, "injection": "nearest",
             "injection_offset": 0.25, "transfer": "cosine", "blocking": "sh_lobe", "intensity": 2.5,
             "origin": [-1, 0, -1], "extent": 2},
     "repeat": 10
@@ -248,6 +249,7 @@ TEST(ParseRequest, ReadsEveryField) {
   EXPECT_FALSE(r.lpv.occlusion);
   EXPECT_FALSE(r.lpv.occlusion_from_rsm);
   EXPECT_TRUE(r.lpv.occlusion_from_camera);
+  EXPECT_TRUE(r.lpv.occlusion_from_scene);
   EXPECT_EQ(r.lpv.bounces, 2u);
   EXPECT_EQ(r.lpv.injection, api::Injection::nearest);
   EXPECT_EQ(r.lpv.injection_offset, 0.25f);
@@ -465,7 +467,7 @@ std::vector<BadRequest> bad_requests() {
       {R"({"lpv": {"occlusion": "yes"}})", "lpv.occlusion"},
       {R"({"lpv": {"occlusion_sources": []}})", "lpv.occlusion_sources"},
       {R"({"lpv": {"occlusion_sources": ["sky"]}})", "lpv.occlusion_sources[0]"},
-      {R"({"lpv": {"occlusion_sources": ["rsm", "camera", "rsm"]}})", "lpv.occlusion_sources"},
+      {R"({"lpv": {"occlusion_sources": ["rsm", "camera", "scene", "rsm"]}})", "lpv.occlusion_sources"},
       {R"({"lpv": {"occlusion_sources": "rsm"}})", "lpv.occlusion_sources"},
       {R"({"lpv": {"bounces": 0}})", "lpv.bounces"},
       {R"({"lpv": {"bounces": 3}})", "lpv.bounces"},

@@ -26,9 +26,10 @@ struct Maths;
     static VEC4 emitter(vec3 n, real phi) { return NS::sh_diffuse_emitter(n, phi); }                 \
     static real outgoing_scale(const VEC4& sh) { return NS::lpv_outgoing_scale(sh); }                \
     static real evaluate(const VEC4& sh, vec3 d) { return NS::sh_evaluate(sh, d); }                  \
-    static real transmitted(const VEC4& b, vec3 w, real projected) {                                 \
-      return NS::lpv_transmitted(b, w, projected);                                                   \
+    static real transmitted(const VEC4& b, vec3 spread, vec3 w, real projected) {                    \
+      return NS::lpv_transmitted(b, w, NS::lpv_closed_blocking(spread, w), projected);               \
     }                                                                                                \
+    static VEC4 cosine_lobe(vec3 n) { return NS::sh_cosine_lobe(n); }                                \
     static vec3 face_direction(vec3 ahead, vec3 side) { return NS::lpv_face_direction(ahead, side); } \
   };
 LPV_REF_MATHS(glm::vec4, gpu)
@@ -36,6 +37,14 @@ LPV_REF_MATHS(glm::dvec4, gpu_double)
 #undef LPV_REF_MATHS
 
 }  // namespace
+
+template <class Vec4>
+void BasicFaceBlocking<Vec4>::add(std::size_t i, glm::vec3 n, float p) {
+  using M = Maths<Vec4>;
+  using real = typename M::real;
+  sh[i] += M::cosine_lobe(Vec3(n)) * real(p);
+  spread[i] += glm::abs(Vec3(n)) * real(p);
+}
 
 template <class Vec4>
 double BasicGrid<Vec4>::flux(int channel) const {
@@ -95,7 +104,12 @@ BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<V
           if (!grid.contains(from)) continue;
           const vec3 ahead(kAxes[i]);
           Vec4 block(0);
-          if (!blocking.empty()) block = blocking[grid.index(glm::min(cell, from)) * 3 + std::size_t(i / 2)];
+          vec3 spread(0);
+          if (!blocking.empty()) {
+            const std::size_t face = grid.index(glm::min(cell, from)) * 3 + std::size_t(i / 2);
+            block = blocking.sh[face];
+            spread = blocking.spread[face];
+          }
           for (int c = 0; c < 3; ++c) {
             const Vec4 sent = grid.at(from, c) * M::outgoing_scale(grid.at(from, c));
             // The far face, then the side faces across `ahead`.
@@ -106,7 +120,8 @@ BasicGrid<Vec4> propagate(const BasicGrid<Vec4>& grid, const BasicFaceBlocking<V
               const vec3 w = far ? ahead : M::face_direction(ahead, normal);
               const real omega = far ? M::far_omega : M::side_omega;
               real flux = omega * std::max(M::evaluate(sent, w), real(0));
-              if (!blocking.empty()) flux *= M::transmitted(block, w, model == api::Blocking::projected ? 1 : 0);
+              if (!blocking.empty())
+                flux *= M::transmitted(block, spread, w, model == api::Blocking::projected ? 1 : 0);
               next.at(cell, c) += M::emitter(normal, flux);
             }
           }
@@ -124,7 +139,9 @@ BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels,
   constexpr double kMaxPotential = 64.0;  // lpv_geometry_inject.comp's MAX_POTENTIAL
   const glm::ivec3 corner_dims = dims + 1;
   auto corner_index = [&](glm::ivec3 c) { return std::size_t(c.x + corner_dims.x * (c.y + corner_dims.y * c.z)); };
-  std::vector<glm::dvec4> corners(std::size_t(corner_dims.x) * corner_dims.y * corner_dims.z, glm::dvec4(0.0));
+  const std::size_t corner_count = std::size_t(corner_dims.x) * corner_dims.y * corner_dims.z;
+  std::vector<glm::dvec4> corners(corner_count, glm::dvec4(0.0));
+  std::vector<glm::dvec3> spreads(corner_count, glm::dvec3(0.0));
   for (const Surfel& s : surfels) {
     const glm::dvec3 q = (glm::dvec3(s.position) - glm::dvec3(origin)) / double(cell_size);
     const double potential = std::min(double(s.area) / (double(cell_size) * cell_size), kMaxPotential);
@@ -132,12 +149,15 @@ BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels,
         !(potential > 0.0))
       continue;
     const glm::dvec4 values = gpu_double::sh_cosine_lobe(glm::dvec3(s.normal)) * potential;
+    const glm::dvec3 spread = glm::abs(glm::dvec3(s.normal)) * potential;
     const glm::ivec3 low(glm::floor(q));
     const glm::dvec3 f = q - glm::dvec3(low);
     for (int corner = 0; corner < 8; ++corner) {
       const glm::ivec3 o(corner & 1, (corner >> 1) & 1, corner >> 2);
       const glm::dvec3 w3 = glm::mix(1.0 - f, f, glm::dvec3(o));
-      corners[corner_index(glm::clamp(low + o, glm::ivec3(0), dims))] += w3.x * w3.y * w3.z * values;
+      const std::size_t c = corner_index(glm::clamp(low + o, glm::ivec3(0), dims));
+      corners[c] += w3.x * w3.y * w3.z * values;
+      spreads[c] += w3.x * w3.y * w3.z * spread;
     }
   }
   BasicFaceBlocking<glm::dvec4> faces;
@@ -147,18 +167,23 @@ BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels,
         for (int axis = 0; axis < 3; ++axis) {
           const int u = (axis + 1) % 3, v = (axis + 2) % 3;
           glm::dvec4 sum(0.0);
+          glm::dvec3 spread(0.0);
           for (int k = 0; k < 4; ++k) {
             glm::ivec3 c(x, y, z);
             c[axis] += 1;
             c[u] += k & 1;
             c[v] += k >> 1;
             sum += corners[corner_index(c)];
+            spread += spreads[corner_index(c)];
           }
-          faces.push_back(0.25 * sum);
+          faces.sh.push_back(0.25 * sum);
+          faces.spread.push_back(0.25 * spread);
         }
   return faces;
 }
 
+template struct BasicFaceBlocking<glm::vec4>;
+template struct BasicFaceBlocking<glm::dvec4>;
 template struct BasicGrid<glm::vec4>;
 template struct BasicGrid<glm::dvec4>;
 template Grid inject<glm::vec4>(const std::vector<Vpl>&, glm::vec3, float, glm::ivec3, float, bool, double);

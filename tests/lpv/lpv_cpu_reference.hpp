@@ -52,9 +52,22 @@ template <class Vec4>
 BasicGrid<Vec4> inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_size, glm::ivec3 dims,
                        float offset_cells, bool nearest = false, double lobe = 1.0);
 
-// Blocking potential SH on the +X, +Y, +Z faces of every cell (3 per cell), or empty.
+// The geometry volume on the +X, +Y, +Z faces of every cell (3 per cell, face 3 cell + axis):
+// the blockers' potential SH and the spread of their normals, sum p |n| (lpv_closed_blocking
+// in lpv_sh.h); empty: nothing blocks.
 template <class Vec4>
-using BasicFaceBlocking = std::vector<Vec4>;
+struct BasicFaceBlocking {
+  using Vec3 = glm::vec<3, typename Vec4::value_type>;
+  std::vector<Vec4> sh;
+  std::vector<Vec3> spread;
+
+  BasicFaceBlocking() = default;
+  explicit BasicFaceBlocking(std::size_t faces) : sh(faces, Vec4(0)), spread(faces, Vec3(0)) {}
+  bool empty() const { return sh.empty(); }
+  std::size_t size() const { return sh.size(); }
+  // Adds a blocker of potential p with unit normal n to face i, as the geometry volume does.
+  void add(std::size_t i, glm::vec3 n, float p);
+};
 using FaceBlocking = BasicFaceBlocking<glm::vec4>;
 
 // A surfel of the geometry volume: an RSM texel or camera pixel, standing for `area` (m^2)
@@ -66,9 +79,9 @@ struct Surfel {
 };
 
 // The geometry volume from one source of surfels, in double: each adds its blocking
-// potential min(area / s^2, 64) times the cosine lobe of its normal to the 8 cell corners
-// around it, with trilinear weights (shares past the border to the border corners); each
-// face then takes the mean of its 4 corners.
+// potential p = min(area / s^2, 64) times the cosine lobe of its normal, and p |n|, to the 8
+// cell corners around it, with trilinear weights (shares past the border to the border
+// corners); each face then takes the mean of its 4 corners.
 BasicFaceBlocking<glm::dvec4> geometry_faces(const std::vector<Surfel>& surfels, glm::vec3 origin, float cell_size,
                                              glm::ivec3 dims);
 

@@ -182,22 +182,51 @@ TEST(Blocking, ProjectedStopsTheBlockersProjectedAreaFromEitherSide) {
   std::normal_distribution<float> g(0.0f, 1.0f);
   for (int i = 0; i < 200; ++i) {
     const glm::vec3 w = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
-    EXPECT_NEAR(gpu::lpv_transmitted(b, w, 1.0f), 1.0f - p * std::abs(glm::dot(n, w)), 1e-5f);
+    EXPECT_NEAR(gpu::lpv_transmitted(b, w, 0.0f, 1.0f), 1.0f - p * std::abs(glm::dot(n, w)), 1e-5f);
     const float one_sided = p * (0.25f + 0.5f * glm::dot(n, -w));
-    EXPECT_NEAR(gpu::lpv_transmitted(b, w, 0.0f), 1.0f - std::clamp(one_sided, 0.0f, 1.0f), 1e-5f);
+    EXPECT_NEAR(gpu::lpv_transmitted(b, w, 0.0f, 0.0f), 1.0f - std::clamp(one_sided, 0.0f, 1.0f), 1e-5f);
   }
   const glm::vec3 grazing = glm::normalize(glm::cross(n, glm::vec3(1, 0, 0)));
-  EXPECT_NEAR(gpu::lpv_transmitted(b, grazing, 1.0f), 1.0f, 1e-6f);
-  EXPECT_NEAR(gpu::lpv_transmitted(b, grazing, 0.0f), 1.0f - p / 4.0f, 1e-6f);
-  EXPECT_NEAR(gpu::lpv_transmitted(b, -n, 1.0f), 1.0f - p, 1e-6f);
-  EXPECT_NEAR(gpu::lpv_transmitted(b, n, 1.0f), 1.0f - p, 1e-6f) << "from behind, as an opaque surface";
-  EXPECT_NEAR(gpu::lpv_transmitted(b, -n, 0.0f), 1.0f - 0.75f * p, 1e-6f);
-  EXPECT_NEAR(gpu::lpv_transmitted(b, n, 0.0f), 1.0f, 1e-6f);
-  // The first moment of blockers facing opposite ways cancels (a limit, docs/lpv.md); more
-  // than a face's worth of one plane stops everything.
-  const glm::vec4 wall = gpu::sh_cosine_lobe(glm::vec3(1, 0, 0)) + gpu::sh_cosine_lobe(glm::vec3(-1, 0, 0));
-  EXPECT_NEAR(gpu::lpv_transmitted(wall * 0.5f, glm::vec3(1, 0, 0), 1.0f), 1.0f, 1e-6f) << "the first moments cancel";
-  EXPECT_EQ(gpu::lpv_transmitted(gpu::sh_cosine_lobe(glm::vec3(1, 0, 0)) * 3.0f, glm::vec3(1, 0, 0), 1.0f), 0.0f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, grazing, 0.0f, 1.0f), 1.0f, 1e-6f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, grazing, 0.0f, 0.0f), 1.0f - p / 4.0f, 1e-6f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, -n, 0.0f, 1.0f), 1.0f - p, 1e-6f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, n, 0.0f, 1.0f), 1.0f - p, 1e-6f) << "from behind, as an opaque surface";
+  EXPECT_NEAR(gpu::lpv_transmitted(b, -n, 0.0f, 0.0f), 1.0f - 0.75f * p, 1e-6f);
+  EXPECT_NEAR(gpu::lpv_transmitted(b, n, 0.0f, 0.0f), 1.0f, 1e-6f);
+  // More than a face's worth of one plane stops everything.
+  EXPECT_EQ(gpu::lpv_transmitted(gpu::sh_cosine_lobe(glm::vec3(1, 0, 0)) * 3.0f, glm::vec3(1, 0, 0), 0.0f, 1.0f), 0.0f);
+}
+
+// A plane's blocking with the closed part (lpv_closed_blocking) taken into account: for one
+// open plane the first moment still decides in every direction a far face passes (along an
+// axis), whatever the plane's slant, and in every direction for a plane along an axis. The
+// two sides of a thin wall, whose first moments cancel, stop what one plane does.
+TEST(Blocking, TheClosedPartLeavesOnePlaneAloneAndStopsLightAtAThinWall) {
+  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const float p = 0.7f;
+  auto transmitted = [](const glm::vec4& sh, const glm::vec3& spread, const glm::vec3& w) {
+    return gpu::lpv_transmitted(sh, w, gpu::lpv_closed_blocking(spread, w), 1.0f);
+  };
+  std::mt19937 rng(9);
+  std::normal_distribution<float> g(0.0f, 1.0f);
+  for (int i = 0; i < 200; ++i) {
+    const glm::vec3 n = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
+    const glm::vec3 w = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
+    for (const glm::vec3& a : axes) {
+      // A slanted plane, light along an axis.
+      EXPECT_NEAR(transmitted(gpu::sh_cosine_lobe(n) * p, glm::abs(n) * p, a), 1.0f - p * std::abs(glm::dot(n, a)), 1e-5f);
+      // A plane along an axis, light any way: one open plane, then both sides of a thin wall.
+      const float head_on = 1.0f - p * std::abs(glm::dot(a, w));
+      EXPECT_NEAR(transmitted(gpu::sh_cosine_lobe(a) * p, a * p, w), head_on, 1e-5f);
+      const glm::vec4 wall = (gpu::sh_cosine_lobe(a) + gpu::sh_cosine_lobe(-a)) * p;
+      EXPECT_NEAR(gpu::lpv_transmitted(wall, w, 0.0f, 1.0f), 1.0f, 1e-5f) << "the first moments cancel";
+      EXPECT_NEAR(transmitted(wall, 2.0f * a * p, w), head_on, 1e-5f);
+    }
+    // In general the closed part is at least half the blockers' summed projected area.
+    const glm::vec3 m = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
+    const float sum = std::abs(glm::dot(n, w)) + std::abs(glm::dot(m, w));
+    EXPECT_GE(gpu::lpv_closed_blocking(glm::abs(n) + glm::abs(m), w), 0.5f * sum - 1e-6f);
+  }
 }
 
 // Shading reads each cell's SH made nowhere negative: its irradiance onto any surface is >= 0,

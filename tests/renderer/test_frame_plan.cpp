@@ -180,8 +180,12 @@ TEST(PlanFrame, BlackSurfacesReflectNothingButEmittersStillInject) {
   EXPECT_NE(p.reason[renderer::kInject].find("every albedo is 0"), std::string::npos);
 
   const renderer::FramePlan glowing = plan(request, black.lights, black, 100);
-  EXPECT_TRUE(glowing.run[renderer::kRsm]) << "black surfaces still occlude the emitters' light";
+  EXPECT_FALSE(glowing.run[renderer::kRsm]) << "the scene's own surfaces occlude: black ones need no RSM";
+  EXPECT_TRUE(glowing.run[renderer::kGeometryVolume]) << "black surfaces still occlude the emitters' light";
   EXPECT_TRUE(glowing.run[renderer::kInject]) << "emissive surfaces inject without any reflection";
+  request.lpv.occlusion_from_scene = false;
+  request.lpv.occlusion_from_rsm = true;
+  EXPECT_TRUE(plan(request, black.lights, black, 100).run[renderer::kRsm]) << "their RSM is the source of occluders";
 
   request.plan = api::PlanMode::exact;
   EXPECT_TRUE(plan(request, black.lights, black).run[renderer::kRsm]);

@@ -190,16 +190,21 @@ TEST(SurfelSampling, TexelCentresFallOnTheSampledPixels) {
 }
 
 // The grid's largest buffer decides which grids a device binds (lavapipe: 128 MiB storage
-// buffers): the geometry volume's corner sums, 2 sources x 8 int64 per corner of the
-// (n + 1)^3 lattice, are the largest, and 100^3 is the most that fits (docs/lpv.md).
-TEST(LpvVolumes, LargestBufferIsTheCornerSumsAndBoundsTheGridAt100Cells) {
+// buffers). With one source of the geometry volume (the default, the scene's surfaces) the
+// corner sums, 12 int64 per corner of the (n + 1)^3 lattice, are the largest, and 110^3 is the
+// most that fits; with all three sources the corner sums are three times that, and 76^3 fits
+// (docs/lpv.md).
+TEST(LpvVolumes, LargestBufferIsTheCornerSumsAndBoundsTheGrid) {
   constexpr std::uint64_t kLavapipeRange = 128ull << 20;
-  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 1), 101ull * 101 * 101 * 128);
-  EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 4), kLavapipeRange);
-  EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(101), 1), kLavapipeRange);
-  // In texels (maxTexelBufferElements): 8 texels of 16 bytes per corner.
-  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(100), 1) / vkx::TexelBuffer::kTexelBytes,
-            101ull * 101 * 101 * 8);
+  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 1, 1), 111ull * 111 * 111 * 96);
+  EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 4, 1), kLavapipeRange);
+  EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(111), 1, 1), kLavapipeRange);
+  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(76), 1, 3), 77ull * 77 * 77 * 288);
+  EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(76), 1, 3), kLavapipeRange);
+  EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(77), 1, 3), kLavapipeRange);
+  // In texels (maxTexelBufferElements): 6 texels of 16 bytes per corner.
+  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 1, 1) / vkx::TexelBuffer::kTexelBytes,
+            111ull * 111 * 111 * 6);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "lpv_cpu_reference.hpp"
 #include "lpv_snapshot_grid.hpp"
 #include "renderer/gpu_types.hpp"
+#include "renderer/lpv/blocker_surfels.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 
@@ -210,7 +211,9 @@ TEST_F(Lpv, OccludedPropagationMatchesTheDoublePrecisionReference) {
     request.lpv.iterations = 6;
     const auto propagated = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
     ASSERT_FALSE(propagated.lpv.faces.empty());
-    lpv_ref::BasicFaceBlocking<glm::dvec4> faces(propagated.lpv.faces.begin(), propagated.lpv.faces.end());
+    lpv_ref::BasicFaceBlocking<glm::dvec4> faces;
+    faces.sh.assign(propagated.lpv.faces.begin(), propagated.lpv.faces.end());
+    for (const glm::vec4& spread : propagated.lpv.face_spreads) faces.spread.push_back(glm::dvec3(spread));
     const double transfer = renderer::transfer_factors(request.lpv.transfer).propagated;
     lpv_ref::GridD grid = grid_of(injected.lpv.cascades.at(0));
     lpv_ref::GridD accumulated = grid;
@@ -287,6 +290,29 @@ TEST_F(Lpv, OcclusionActsFromTheSecondIterationAndBouncesReturnBlockedLight) {
   EXPECT_LE(bounced, open * (1.0 + 1e-5));
 }
 
+// The GPU's geometry volume (its faces' SH and spreads) against the CPU reference's, to the
+// fixed-point sums' rounding.
+void expect_faces_match(const std::string& what, const renderer::LpvSnapshot& snap,
+                        const lpv_ref::BasicFaceBlocking<glm::dvec4>& exact) {
+  ASSERT_EQ(snap.faces.size(), exact.size());
+  ASSERT_EQ(snap.face_spreads.size(), exact.size());
+  double largest = 0.0, difference = 0.0;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    for (int k = 0; k < 4; ++k) {
+      largest = std::max(largest, std::abs(exact.sh[i][k]));
+      difference = std::max(difference, std::abs(double(snap.faces[i][k]) - exact.sh[i][k]));
+    }
+    for (int k = 0; k < 3; ++k) {
+      largest = std::max(largest, exact.spread[i][k]);
+      difference = std::max(difference, std::abs(double(snap.face_spreads[i][k]) - exact.spread[i][k]));
+    }
+  }
+  std::printf("geometry volume (%s), GPU against double: %.2e of the largest coefficient %.3g\n", what.c_str(),
+              difference / largest, largest);
+  EXPECT_GT(largest, 0.1);
+  EXPECT_LT(difference, 3e-5 * largest);  // the fixed-point sums round each add to 2^-21
+}
+
 // The geometry volume from the RSM's surfels alone, against the CPU reference fed the same
 // surfels: every second texel of a 256^2 map each way (about 128 rows), standing for four.
 TEST_F(Lpv, GeometryVolumeMatchesTheDoublePrecisionReference) {
@@ -295,7 +321,8 @@ TEST_F(Lpv, GeometryVolumeMatchesTheDoublePrecisionReference) {
     request.plan = api::PlanMode::exact;  // keeps the 256^2 RSM on the 8^3 grid
     request.lpv.rsm_resolution = 256;
     request.lpv.occlusion = true;
-    request.lpv.occlusion_from_camera = false;
+    request.lpv.occlusion_from_rsm = true;
+    request.lpv.occlusion_from_scene = false;
     request.lpv.bounces = bounces;
     const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
     const renderer::LpvSnapshot& snap = result.lpv;
@@ -312,18 +339,27 @@ TEST_F(Lpv, GeometryVolumeMatchesTheDoublePrecisionReference) {
                              snap.rsm_flux[i].w * float(stride * stride)});
         }
     const auto exact = lpv_ref::geometry_faces(surfels, c.origin, c.cell_size, glm::ivec3(c.dims));
-    ASSERT_EQ(snap.faces.size(), exact.size());
-    double largest = 0.0, difference = 0.0;
-    for (std::size_t i = 0; i < exact.size(); ++i)
-      for (int k = 0; k < 4; ++k) {
-        largest = std::max(largest, std::abs(exact[i][k]));
-        difference = std::max(difference, std::abs(double(snap.faces[i][k]) - exact[i][k]));
-      }
-    std::printf("geometry volume (bounces %u), GPU against double: %.2e of the largest coefficient %.3g\n", bounces,
-                difference / largest, largest);
-    EXPECT_GT(largest, 0.1);
-    EXPECT_LT(difference, 3e-5 * largest);  // the fixed-point sums round each add to 2^-21
+    expect_faces_match("rsm, bounces " + std::to_string(bounces), snap, exact);
   }
+}
+
+// The geometry volume from the scene's own surfaces (occlusion_sources "scene"), against the
+// CPU reference fed the same pieces (renderer/lpv/blocker_surfels.hpp): every wall, the box's
+// backs and the faces no view sees included.
+TEST_F(Lpv, SceneGeometryVolumeMatchesTheDoublePrecisionReference) {
+  api::RenderRequest request = small_grid_request(2);
+  request.lpv.occlusion = true;
+  request.lpv.occlusion_from_scene = true;
+  request.lpv.occlusion_from_rsm = request.lpv.occlusion_from_camera = false;
+  const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+  const renderer::LpvSnapshot& snap = result.lpv;
+  ASSERT_EQ(snap.cascades.size(), 1u);
+  const auto& c = snap.cascades[0];
+  std::vector<lpv_ref::Surfel> surfels;
+  for (const gpu::GpuBlocker& b : renderer::blocker_surfels(*scene::make_builtin_scene("cornell-box")))
+    surfels.push_back({glm::vec3(b.position), glm::vec3(b.normal), b.position.w});
+  const auto exact = lpv_ref::geometry_faces(surfels, c.origin, c.cell_size, glm::ivec3(c.dims));
+  expect_faces_match("scene", snap, exact);
 }
 
 // The geometry volume takes about 128 rows of surfels from each RSM, each standing for the
@@ -334,7 +370,8 @@ TEST_F(Lpv, LightBlockedByRsmSurfelsDoesNotDependOnTheRsmResolution) {
     api::RenderRequest request = lpv_request("cornell-box");
     request.lpv.rsm_resolution = rsm_resolution;
     request.lpv.occlusion = occlusion;
-    request.lpv.occlusion_from_camera = false;
+    request.lpv.occlusion_from_rsm = true;
+    request.lpv.occlusion_from_scene = false;
     const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear);
     return result.stats.lpv->cascades.at(0).propagated_flux.back()[0];
   };

@@ -110,7 +110,8 @@ TEST_F(Planner, EmittersWithoutOccludersSkipTheGeometryVolume) {
   // without occlusion.
   api::RenderRequest rsm_only = request(api::PlanMode::exact), unoccluded = request(api::PlanMode::exact);
   rsm_only.output.view = unoccluded.output.view = api::View::indirect;
-  rsm_only.lpv.occlusion_from_camera = false;
+  rsm_only.lpv.occlusion_from_rsm = true;
+  rsm_only.lpv.occlusion_from_scene = false;
   unoccluded.lpv.occlusion = false;
   auto& r = gpu_test::renderer();
   const auto skipped = r.render(lamp, rsm_only, renderer::kReadbackLinear);

@@ -4,6 +4,7 @@
 // value of each invariant is printed at the end.
 #include "api/request_error.hpp"
 #include "gpu_test.hpp"
+#include "renderer/passes/geometry_volume_pass.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_builder.hpp"
@@ -63,7 +64,8 @@ TEST_P(Stability, FiniteDeterministicAndNoEnergyGain) {
   const stability::Case& c = GetParam();
   const scene::Scene scene = c.scene();
   auto& r = gpu_test::renderer();
-  if (renderer::LpvVolumes::largest_buffer_bytes(c.request.lpv.grid, c.request.lpv.cascades) >
+  if (renderer::LpvVolumes::largest_buffer_bytes(c.request.lpv.grid, c.request.lpv.cascades,
+                                                 renderer::geometry_sources(c.request.lpv).slots()) >
       gpu_test::device().info().limits.maxStorageBufferRange) {
     // Beyond what the device binds: the documented error, not a crash or a silent clamp.
     try {

@@ -1,0 +1,33 @@
+#include "renderer/lpv/surface_pieces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace renderer {
+
+std::uint32_t pieces_per_edge(const SurfaceTriangle& t, float edge) {
+  const float longest = std::max({glm::distance(t.a, t.b), glm::distance(t.b, t.c), glm::distance(t.c, t.a)});
+  return std::uint32_t(std::clamp(std::ceil(longest / edge), 1.0f, 256.0f));
+}
+
+float triangle_area(const SurfaceTriangle& t) { return 0.5f * glm::length(glm::cross(t.b - t.a, t.c - t.a)); }
+
+void append_pieces(const SurfaceTriangle& t, float edge, std::vector<SurfacePiece>& out) {
+  const glm::vec3 cross = glm::cross(t.b - t.a, t.c - t.a);
+  const float area = 0.5f * glm::length(cross);
+  if (!(area > 0.0f) || !std::isfinite(area)) return;
+  const glm::vec3 normal = cross / (2.0f * area);
+  const std::uint32_t n = pieces_per_edge(t, edge);
+  const float piece_area = area / float(n * n);
+  // n(n+1)/2 pieces pointing like the triangle, n(n-1)/2 upside down.
+  auto add = [&](float u, float v) {
+    out.push_back({t.a + (u / float(n)) * (t.b - t.a) + (v / float(n)) * (t.c - t.a), normal, piece_area});
+  };
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; i + j < n; ++j) {
+      add(float(i) + 1.0f / 3.0f, float(j) + 1.0f / 3.0f);
+      if (i + j + 1 < n) add(float(i) + 2.0f / 3.0f, float(j) + 2.0f / 3.0f);
+    }
+}
+
+}  // namespace renderer
