@@ -2,6 +2,7 @@
 
 #include "api/counted.hpp"
 #include "api/request_error.hpp"
+#include "shaders/shared/light_falloff.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -132,10 +133,9 @@ LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Boun
       case api::LightType::spot: g.info.x = gpu::LIGHT_SPOT; break;
     }
     if (light.type == api::LightType::spot) {
-      const float cos_outer = std::cos(glm::radians(light.outer_cone_deg));
-      const float cos_inner = std::cos(glm::radians(light.inner_cone_deg));
-      g.params.x = 1.0f / std::max(1e-3f, cos_inner - cos_outer);
-      g.params.y = -cos_outer * g.params.x;
+      const glm::vec2 cone = gpu::spot_cone_constants(light.inner_cone_deg, light.outer_cone_deg);
+      g.params.x = cone.x;
+      g.params.y = cone.y;
     }
     setup.lights.push_back(g);
   }

@@ -1,5 +1,7 @@
 #include "renderer/reference/punctual_lights.hpp"
 
+#include "shaders/shared/light_falloff.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,11 +17,10 @@ PunctualLight prepare_light(const api::Light& light) {
   p.radiant = light.color * light.intensity;
   p.range = light.range;
   if (light.type == api::LightType::spot) {
-    // Same single-precision maths as renderer::setup_lights, so cone edges land where the GPU's do.
-    const float cos_outer = std::cos(glm::radians(light.outer_cone_deg));
-    const float cos_inner = std::cos(glm::radians(light.inner_cone_deg));
-    p.spot_scale = 1.0f / std::max(1e-3f, cos_inner - cos_outer);
-    p.spot_offset = -cos_outer * p.spot_scale;
+    // The GPU's single-precision constants, so cone edges land where the GPU's do.
+    const glm::vec2 cone = gpu::spot_cone_constants(light.inner_cone_deg, light.outer_cone_deg);
+    p.spot_scale = cone.x;
+    p.spot_offset = cone.y;
   }
   return p;
 }
@@ -46,14 +47,10 @@ Incident incident_at(const PunctualLight& light, glm::vec3 p) {
   in.to_light = glm::vec3(d / dist);
   in.distance = float(dist);
   double attenuation = 1.0;
-  if (light.range > 0.0f) {
-    const double r = dist / light.range;  // glTF's recommended window, clamp(1 - (d/range)^4, 0, 1)
-    attenuation = std::clamp(1.0 - r * r * r * r, 0.0, 1.0);
-  }
+  if (light.range > 0.0f) attenuation = gpu::range_window(dist, double(light.range));
   if (light.type == api::LightType::spot) {
     const double cos_angle = glm::dot(glm::dvec3(light.direction), -glm::dvec3(in.to_light));
-    const double a = std::clamp(cos_angle * light.spot_scale + light.spot_offset, 0.0, 1.0);
-    attenuation *= a * a;
+    attenuation *= gpu::spot_cone(cos_angle, double(light.spot_scale), double(light.spot_offset));
   }
   in.irradiance = glm::vec3(glm::dvec3(light.radiant) * (attenuation / dist2));
   return in;

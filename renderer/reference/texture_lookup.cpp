@@ -1,5 +1,7 @@
 #include "renderer/reference/texture_lookup.hpp"
 
+#include "shaders/shared/display_transfer.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,10 +12,7 @@ namespace {
 const std::array<float, 256>& srgb_table() {
   static const std::array<float, 256> table = [] {
     std::array<float, 256> t{};
-    for (int i = 0; i < 256; ++i) {
-      const double c = i / 255.0;
-      t[i] = float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
-    }
+    for (int i = 0; i < 256; ++i) t[std::size_t(i)] = float(gpu::srgb_decode(i / 255.0));
     return t;
   }();
   return table;

@@ -1,5 +1,7 @@
 #include "renderer/scene/texture_mips.hpp"
 
+#include "shaders/shared/display_transfer.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -7,13 +9,11 @@
 namespace scene {
 namespace {
 
-float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-float linear_to_srgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
 
 const std::array<float, 256>& decode_table() {
   static const std::array<float, 256> table = [] {
     std::array<float, 256> t{};
-    for (int i = 0; i < 256; ++i) t[std::size_t(i)] = srgb_to_linear(float(i) / 255.0f);
+    for (int i = 0; i < 256; ++i) t[std::size_t(i)] = gpu::srgb_decode(float(i) / 255.0f);
     return t;
   }();
   return table;
@@ -41,7 +41,8 @@ MipLevel srgb_half(const MipLevel& src) {
         }
       }
       std::uint8_t* q = &dst.rgba[(std::size_t(y) * dst.width + x) * 4];
-      for (int c = 0; c < 3; ++c) q[c] = to_byte(linear_to_srgb(sum[c] * 0.25f));
+      const glm::vec3 encoded = gpu::srgb_encode(glm::vec3(sum[0], sum[1], sum[2]) * 0.25f);
+      for (int c = 0; c < 3; ++c) q[c] = to_byte(encoded[c]);
       q[3] = to_byte(sum[3] * 0.25f);
     }
   }

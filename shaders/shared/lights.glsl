@@ -3,6 +3,8 @@
 #ifndef LPV_LIGHTS_GLSL
 #define LPV_LIGHTS_GLSL
 
+#include "light_falloff.h"
+
 // An includer that knows no light has a spot cone or a range window may define these false
 // (lavapipe runs both sides of a branch, so code that cannot apply still costs).
 #ifndef LIGHTS_MAY_HAVE_CONE
@@ -20,15 +22,9 @@ vec3 light_intensity_toward(GpuLight light, vec3 p, out vec3 to_light, out float
   to_light = dist2 > 0.0 ? d * inversesqrt(dist2) : vec3(0.0);
   float attenuation = 1.0;
   float range = light.direction.w;
-  if (LIGHTS_MAY_HAVE_RANGE && range > 0.0) {
-    float r = sqrt(dist2) / range;  // glTF KHR_lights_punctual recommended window
-    attenuation = clamp(1.0 - r * r * r * r, 0.0, 1.0);
-  }
-  if (LIGHTS_MAY_HAVE_CONE && light.info.x == LIGHT_SPOT) {
-    float cd = dot(light.direction.xyz, -to_light);
-    float a = clamp(cd * light.params.x + light.params.y, 0.0, 1.0);
-    attenuation *= a * a;
-  }
+  if (LIGHTS_MAY_HAVE_RANGE && range > 0.0) attenuation = range_window(sqrt(dist2), range);
+  if (LIGHTS_MAY_HAVE_CONE && light.info.x == LIGHT_SPOT)
+    attenuation *= spot_cone(dot(light.direction.xyz, -to_light), light.params.x, light.params.y);
   return light.radiant.rgb * attenuation;
 }
 
