@@ -121,10 +121,9 @@ glm::vec3 seen_centre(const scene::Scene& scene, const std::vector<bool>& seen) 
 }
 
 void plan_shadow_resolution(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
-                            const std::vector<api::Light>& lights, const CameraSetup& camera, float fov_y_deg,
-                            std::uint64_t budget_texels) {
+                            const std::vector<api::Light>& lights, const std::vector<LightView>& views,
+                            const CameraSetup& camera, float fov_y_deg, std::uint64_t budget_texels) {
   if (request.shadows.resolution) return;
-  const std::vector<LightView> views = light_views(lights, scene.bounds, plan.light_drawn);
   ShadowSight sight;
   sight.receiver = seen_centre(scene, plan.draw_seen);
   sight.eye = camera.position;

@@ -131,11 +131,12 @@ std::uint32_t shadow_resolution_for(const std::vector<LightView>& views, const s
 glm::vec3 seen_centre(const scene::Scene& scene, const std::vector<bool>& seen);
 
 // Sets request.shadows.resolution where the request leaves it out (in both plan modes: it is
-// the default's value, not a pass skipped) by shadow_resolution_for within `budget_texels`
-// (the device's) and kShadowTexelBudget, and says so in `plan` when it is over the least.
+// the default's value, not a pass skipped) by shadow_resolution_for of the frame's light
+// `views` within `budget_texels` (the device's) and kShadowTexelBudget, and says so in `plan`
+// when it is over the least.
 void plan_shadow_resolution(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
-                            const std::vector<api::Light>& lights, const CameraSetup& camera, float fov_y_deg,
-                            std::uint64_t budget_texels);
+                            const std::vector<api::Light>& lights, const std::vector<LightView>& views,
+                            const CameraSetup& camera, float fov_y_deg, std::uint64_t budget_texels);
 
 // The part of the scene the grid should cover: the draws the camera may see and the draws a
 // drawn light may reach (by their bounds), since light flows from the lit ones to the seen

@@ -118,10 +118,10 @@ std::vector<LightView> light_views(const std::vector<api::Light>& lights, const 
   return views;
 }
 
-LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
-                        const api::Shadows& shadows, const std::vector<bool>& drawn, const std::vector<bool>& shadowed) {
+LightSetup setup_lights(const std::vector<api::Light>& lights, std::vector<LightView> views,
+                        const api::Shadows& shadows, const std::vector<bool>& shadowed) {
   LightSetup setup;
-  setup.views = light_views(lights, bounds, drawn);
+  setup.views = std::move(views);
   for (const api::Light& light : lights) {
     gpu::GpuLight g{};
     g.position = glm::vec4(light.position, 1.0f);

@@ -56,10 +56,9 @@ struct LightSetup {
   std::vector<glm::mat4> shadow_views;  // index = shadow map layer; empty when shadows are off
 };
 
-// GPU lights, their views, and the shadow maps' view-projections when shadows are on.
-// `shadowed[i]` false: light i gets no shadow map (the planner found nothing to cast one).
-LightSetup setup_lights(const std::vector<api::Light>& lights, const scene::Bounds& bounds,
-                        const api::Shadows& shadows, const std::vector<bool>& drawn = {},
-                        const std::vector<bool>& shadowed = {});
+// GPU lights, their views (light_views'), and the shadow maps' view-projections when shadows
+// are on. `shadowed[i]` false: light i gets no shadow map (the planner found nothing to cast one).
+LightSetup setup_lights(const std::vector<api::Light>& lights, std::vector<LightView> views,
+                        const api::Shadows& shadows, const std::vector<bool>& shadowed = {});
 
 }  // namespace renderer

@@ -352,10 +352,11 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   auto plan_start = Clock::now();
   FramePlan plan =
       plan_frame({request, lights, scene, gpu.emitter_count, camera.view_proj});
-  plan_shadow_resolution(plan, request, scene, lights, camera, camera_request.fov_y_deg, kShadowAtlasBudgetBytes / 4);
+  std::vector<LightView> views = light_views(lights, scene.bounds, plan.light_drawn);
+  plan_shadow_resolution(plan, request, scene, lights, views, camera, camera_request.fov_y_deg,
+                         kShadowAtlasBudgetBytes / 4);
   double plan_ms = ms_since(plan_start);
-  const LightSetup light_setup =
-      setup_lights(lights, scene.bounds, request.shadows, plan.light_drawn, plan.light_shadowed);
+  const LightSetup light_setup = setup_lights(lights, std::move(views), request.shadows, plan.light_shadowed);
   plan_start = Clock::now();
   const LpvPlan lpv_plan = plan_lpv(
       plan, request, scene, lights, light_setup.views,

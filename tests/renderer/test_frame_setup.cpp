@@ -15,6 +15,11 @@ const scene::Scene& cornell() {
   return s;
 }
 
+// The lights' GPU setup in the Cornell box: their views first, as a frame makes them.
+renderer::LightSetup setup_lights_in_cornell(const std::vector<api::Light>& lights, const api::Shadows& shadows) {
+  return renderer::setup_lights(lights, renderer::light_views(lights, cornell().bounds), shadows);
+}
+
 glm::vec3 project(const glm::mat4& view_proj, glm::vec3 p) {
   const glm::vec4 clip = view_proj * glm::vec4(p, 1.0f);
   return glm::vec3(clip) / clip.w;
@@ -110,7 +115,7 @@ TEST(SetupLights, PointLightGetsSixCubeFacesEachCentredOnItsAxis) {
   api::Light point;
   point.type = api::LightType::point;
   point.position = {0.1f, 1.0f, -0.2f};
-  const auto setup = renderer::setup_lights({point}, cornell().bounds, api::Shadows{true, 512});
+  const auto setup = setup_lights_in_cornell({point}, api::Shadows{true, 512});
   ASSERT_EQ(setup.shadow_views.size(), 6u);
   EXPECT_EQ(setup.lights[0].info.z, 6u);
   const glm::vec3 axes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
@@ -126,7 +131,7 @@ TEST(SetupLights, SpotMapCoversItsOuterConeAndDirectionalMapCoversTheScene) {
   api::Light sun;
   sun.type = api::LightType::directional;
   sun.direction = glm::normalize(glm::vec3(0.3f, -1.0f, 0.2f));
-  const auto setup = renderer::setup_lights({spot, sun}, cornell().bounds, api::Shadows{true, 512});
+  const auto setup = setup_lights_in_cornell({spot, sun}, api::Shadows{true, 512});
   ASSERT_EQ(setup.shadow_views.size(), 2u);
   EXPECT_EQ(setup.lights[1].info.y, 1u) << "the sun's map follows the spot's";
 
@@ -140,10 +145,10 @@ TEST(SetupLights, SpotMapCoversItsOuterConeAndDirectionalMapCoversTheScene) {
 TEST(SetupLights, DarkLightsAndDisabledShadowsGetNoShadowMap) {
   api::Light dark;
   dark.intensity = 0.0f;
-  EXPECT_TRUE(renderer::setup_lights({dark}, cornell().bounds, api::Shadows{true, 512}).shadow_views.empty());
+  EXPECT_TRUE(setup_lights_in_cornell({dark}, api::Shadows{true, 512}).shadow_views.empty());
   api::Shadows off;
   off.enabled = false;
-  const auto setup = renderer::setup_lights(cornell().lights, cornell().bounds, off);
+  const auto setup = setup_lights_in_cornell(cornell().lights, off);
   EXPECT_TRUE(setup.shadow_views.empty());
   EXPECT_EQ(setup.lights[0].info.z, 0u);
 }
@@ -152,7 +157,7 @@ TEST(SetupLights, RadiantValueIsColourTimesIntensity) {
   api::Light l;
   l.color = {1.0f, 0.5f, 0.0f};
   l.intensity = 8.0f;
-  const auto setup = renderer::setup_lights({l}, cornell().bounds, api::Shadows{true, 512});
+  const auto setup = setup_lights_in_cornell({l}, api::Shadows{true, 512});
   EXPECT_EQ(glm::vec3(setup.lights[0].radiant), glm::vec3(8.0f, 4.0f, 0.0f));
 }
 
