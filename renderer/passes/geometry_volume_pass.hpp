@@ -1,8 +1,8 @@
-// LPV geometry volume for one cascade: surfels from the RSMs, from the camera's surfel
-// G-buffer (FrameTargets::surfels, drawn by the GBufferPass) and from the scene's surfaces
-// (GpuScene::blockers) add blocking potentials to the cell corners (lpv_geometry_inject.comp); each corner keeps its stronger
-// source (lpv_geometry_corners.comp); the corners become the blocking of every cell face
-// (lpv_geometry_resolve.comp).
+// LPV geometry volume for one cascade: the scene's surfaces (GpuScene::blockers), surfels
+// from the RSMs or from the camera's surfel G-buffer (FrameTargets::surfels, drawn by the
+// GBufferPass) add blocking potentials to the cell corners (lpv_geometry_inject.comp); each
+// corner keeps its strongest source (lpv_geometry_corners.comp); the corners become the
+// blocking of every cell face (lpv_geometry_resolve.comp).
 #pragma once
 
 #include "api/render_request.hpp"
@@ -17,9 +17,9 @@
 namespace renderer {
 
 struct GeometrySources {
-  bool rsm = true;     // surfels of every rsm_stride-th RSM texel (each way)
-  bool camera = true;  // surfels of every texel of the camera's surfel G-buffer
-  bool scene = false;  // the scene's surfaces, cut into pieces (GpuScene::blockers)
+  bool rsm = false;     // surfels of every rsm_stride-th RSM texel (each way)
+  bool camera = false;  // surfels of every texel of the camera's surfel G-buffer
+  bool scene = true;    // the scene's surfaces, cut into pieces (GpuScene::blockers)
   std::uint32_t rsm_stride = 1;
   api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
   bool bounces = false;  // the blockers' albedo is splatted and resolved too (it serves bounces only)
