@@ -83,6 +83,11 @@ SceneScore score_request(Workbench& bench, api::RenderRequest request, const Sco
   score.indirect_over_direct = ratio(our_indirect, masked_mean(direct, interior, everywhere));
   score.indirect = indirect;
   score.reference_indirect = truth.indirect;
+  score.off = off_image;
+  score.reference_final = truth.final_image;
+  score.interior = off_image;
+  for (std::size_t i = 0; i < interior.size(); ++i)
+    for (std::size_t c = 0; c < 3; ++c) score.interior.pixels[4 * i + c] = interior[i] ? 1.0f : 0.0f;
 
   if (request.scene == "cornell-box") {
     const image::Mask ceiling = ceiling_of(render_linear(r, request, api::View::normal), interior);

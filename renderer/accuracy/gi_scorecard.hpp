@@ -39,9 +39,14 @@ struct SceneScore {
   double relative_noise = 0.0;  // the reference's noise over its mean indirect light
   double gpu_ms = 0.0;          // the request's frame, median of its `repeat` frames
   double off_gpu_ms = 0.0;      // the same frame with LPV off
-  // The two indirect images compared (linear), for a look at where they differ.
+  // The images scored (linear), for a look at where they differ or to score combinations of
+  // requests: the indirect light and the reference's, the frame with LPV off and the
+  // reference's final image, and the interior mask as an image (1 inside, 0 outside).
   image::RgbaF32Image indirect;
   image::RgbaF32Image reference_indirect;
+  image::RgbaF32Image off;
+  image::RgbaF32Image reference_final;
+  image::RgbaF32Image interior;
 };
 
 // Renders `request` (final, direct and indirect views, and final with LPV off) at the

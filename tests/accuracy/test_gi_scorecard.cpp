@@ -7,8 +7,9 @@
 //   the reference's paths per pixel (docs/accuracy.md's table: 256 and 4096).
 //   LPV_SCORECARD_REQUEST: a render request (JSON) to score instead of the default, its scene
 //   replaced by each built-in's: to compare settings on every scene (the bounds still apply).
-//   LPV_SCORECARD_DUMP: a folder to write each scene's indirect light and the reference's to,
-//   SCENE-indirect.pfm and SCENE-reference-indirect.pfm, to see where they differ.
+//   LPV_SCORECARD_DUMP: a folder to write each scene's images to (SCENE-indirect.pfm, and
+//   -reference-indirect, -off (LPV off), -reference-final, -interior (the mask, 1 inside)), to
+//   see where the indirect light differs, or to score combinations of requests' images.
 #include "gpu_test.hpp"
 
 #include "api/request_json.hpp"
@@ -21,6 +22,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -72,8 +74,11 @@ TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) {
   print(s);
   if (const char* dump = std::getenv("LPV_SCORECARD_DUMP")) {
     const std::filesystem::path folder(dump);
-    image::write_file_atomically(folder / (s.scene + "-indirect.pfm"), image::encode_pfm(s.indirect));
-    image::write_file_atomically(folder / (s.scene + "-reference-indirect.pfm"), image::encode_pfm(s.reference_indirect));
+    const std::pair<const char*, const image::RgbaF32Image*> images[] = {
+        {"indirect", &s.indirect}, {"reference-indirect", &s.reference_indirect}, {"off", &s.off},
+        {"reference-final", &s.reference_final}, {"interior", &s.interior}};
+    for (const auto& [name, img] : images)
+      image::write_file_atomically(folder / (s.scene + "-" + name + ".pfm"), image::encode_pfm(*img));
   }
   EXPECT_LE(s.gain, b.max_gain);
   if (b.min_indirect_ratio > 0.0) {
