@@ -3,10 +3,11 @@
 // A surfel of area A with normal n has the blocking potential p = A / s^2 on a cell face of
 // side s: the fraction of light travelling along w it stops is p <n, -w> (one-sided, the
 // cosine lobe of the SH; LPV annotations 5.1) or p |<n, w>| (projected, from the SH's first
-// moment and, where both sides of a wall cancel there, the spread p |n|; lpv_sh.h). Surfels come from the RSMs (every light
-// view), from the camera's surfel G-buffer, or from the scene's surfaces themselves (the
-// blockers, cut from its triangles once); each source has its own accumulators, so the same
-// wall seen by two is not counted twice (the resolve takes the stronger source per corner).
+// moment and, where both sides of a wall cancel there, the spread p |n|; lpv_sh.h). Surfels
+// come from the RSMs (every light view), from the camera's surfel G-buffer, or from the
+// scene's surfaces themselves (the blockers, cut from its triangles once); each source has
+// its own slot of sums, so the same wall held by two is not counted twice (the resolve takes
+// the strongest source per corner).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"

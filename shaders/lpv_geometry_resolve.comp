@@ -1,7 +1,8 @@
 #version 450
 // Geometry volume, step 3: for each cell, the blocking potential on its +X, +Y and +Z faces
-// (its SH and spread), the mean of each face's four corners. Propagation between two neighbouring cells reads the
-// face they share. Also the blockers' mean albedo per face, for the light they reflect.
+// (its SH and spread), the mean of each face's four corners. Propagation between two
+// neighbouring cells reads the face they share. Also the blockers' mean albedo per face, for
+// the light they reflect.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_grid.glsl"

@@ -19,8 +19,10 @@ image::Rgba8Image display_image(const image::RgbaF32Image& linear, api::Tonemap 
       x[c] = v > 0.0f ? v : 0.0f;  // negative and NaN: black
     }
     const glm::vec3 encoded = gpu::srgb_encode(glm::clamp(gpu::tone_curve(x, curve), 0.0f, 1.0f));
-    for (int c = 0; c < 3; ++c)
-      display.pixels[i + std::size_t(c)] = static_cast<std::uint8_t>(std::clamp(encoded[c], 0.0f, 1.0f) * 255.0f + 0.5f);
+    for (int c = 0; c < 3; ++c) {
+      const float level = std::clamp(encoded[c], 0.0f, 1.0f) * 255.0f + 0.5f;
+      display.pixels[i + std::size_t(c)] = static_cast<std::uint8_t>(level);
+    }
     display.pixels[i + 3] = 255;
   }
   return display;

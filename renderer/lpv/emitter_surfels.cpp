@@ -18,7 +18,9 @@ std::vector<gpu::GpuEmitter> emitter_surfels(const scene::Scene& scene, std::siz
       [&](const SurfaceTriangle& t, std::size_t) { triangles.push_back(t); });
   if (triangles.empty()) return {};
   // Every piece of an emissive triangle, one surfel each side that emits.
-  auto sides = [&](const SurfaceTriangle& t) -> std::size_t { return scene.materials[t.material].double_sided ? 2 : 1; };
+  auto sides = [&](const SurfaceTriangle& t) -> std::size_t {
+    return scene.materials[t.material].double_sided ? 2 : 1;
+  };
   const float edge = piece_edge(scene.bounds, std::max(max_surfels, 2 * triangles.size()), [&](float e) {
     std::size_t n = 0;
     for (const SurfaceTriangle& t : triangles) {

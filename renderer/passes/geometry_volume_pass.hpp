@@ -27,7 +27,9 @@ struct GeometrySources {
   // Slots of corner sums, one per source used (at least one), and the slot of `source`
   // (gpu::LPV_GV_SOURCE_*): the sources' sums are kept apart so each corner can keep the
   // strongest, and a frame pays in memory only for the sources it uses.
-  std::uint32_t slots() const { return std::max(1u, std::uint32_t(rsm) + std::uint32_t(camera) + std::uint32_t(scene)); }
+  std::uint32_t slots() const {
+    return std::max(1u, std::uint32_t(rsm) + std::uint32_t(camera) + std::uint32_t(scene));
+  }
   std::uint32_t slot(std::uint32_t source) const {
     const bool used[gpu::LPV_GV_SOURCES] = {rsm, camera, scene};
     std::uint32_t s = 0;

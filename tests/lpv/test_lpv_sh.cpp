@@ -214,7 +214,8 @@ TEST(Blocking, TheClosedPartLeavesOnePlaneAloneAndStopsLightAtAThinWall) {
     const glm::vec3 w = glm::normalize(glm::vec3(g(rng), g(rng), g(rng)));
     for (const glm::vec3& a : axes) {
       // A slanted plane, light along an axis.
-      EXPECT_NEAR(transmitted(gpu::sh_cosine_lobe(n) * p, glm::abs(n) * p, a), 1.0f - p * std::abs(glm::dot(n, a)), 1e-5f);
+      EXPECT_NEAR(transmitted(gpu::sh_cosine_lobe(n) * p, glm::abs(n) * p, a), 1.0f - p * std::abs(glm::dot(n, a)),
+                  1e-5f);
       // A plane along an axis, light any way: one open plane, then both sides of a thin wall.
       const float head_on = 1.0f - p * std::abs(glm::dot(a, w));
       EXPECT_NEAR(transmitted(gpu::sh_cosine_lobe(a) * p, a * p, w), head_on, 1e-5f);
