@@ -368,6 +368,9 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
         return setup;
       });
   plan_shading(plan, request.output.view, readback == kReadbackDisplay);
+  if (plan.run[kGeometryVolume]) {  // why it runs: what it is made of
+    plan.reason[kGeometryVolume] = describe_occluders(geometry_sources(request.lpv, plan.run[kRsm]), gpu.blocker_count);
+  }
   plan_ms += ms_since(plan_start);
   const LpvSetup& lpv_setup = lpv_plan.setup;
   const std::vector<std::uint32_t>& iterations = lpv_plan.iterations;
@@ -674,8 +677,7 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
         else
           GBufferPass::record_unused(cmd, targets->surfels);
       }
-      GeometrySources sources = geometry_sources(lpv);
-      sources.rsm = sources.rsm && frame.plan.run[kRsm];
+      GeometrySources sources = geometry_sources(lpv, frame.plan.run[kRsm]);
       sources.rsm_stride = frame.lpv.gpu.sizes.w;
       sources.bounces = frame.lpv.bounces;
       geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, targets->surfels, frame.gpu, sources, *volumes);

@@ -1,11 +1,13 @@
 #include "renderer/passes/geometry_volume_pass.hpp"
 
+#include "api/counted.hpp"
 #include "renderer/gpu_types.hpp"
 #include "shaders/lpv_geometry_corners.comp.h"
 #include "shaders/lpv_geometry_inject.comp.h"
 #include "shaders/lpv_geometry_resolve.comp.h"
 
 #include <array>
+#include <vector>
 
 namespace renderer {
 namespace {
@@ -25,13 +27,24 @@ struct CornerConstants {
 
 }  // namespace
 
-GeometrySources geometry_sources(const api::Lpv& lpv) {
+GeometrySources geometry_sources(const api::Lpv& lpv, bool rsm_drawn) {
   GeometrySources s;
-  s.rsm = lpv.occlusion_from_rsm;
+  s.rsm = lpv.occlusion_from_rsm && rsm_drawn;
   s.camera = lpv.occlusion_from_camera;
   s.scene = lpv.occlusion_from_scene;
   s.injection = lpv.injection;
   return s;
+}
+
+std::string describe_occluders(const GeometrySources& sources, std::uint32_t blockers) {
+  std::vector<std::string> parts;
+  if (sources.scene) parts.push_back("the scene's surfaces (" + api::counted(blockers, "piece") + ")");
+  if (sources.rsm) parts.push_back("the RSMs' surfels");
+  if (sources.camera) parts.push_back("the camera's surfels");
+  std::string text = "occluders:";
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    text += (i == 0 ? " " : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+  return text;
 }
 
 GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(device) {

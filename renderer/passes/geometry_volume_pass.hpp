@@ -13,6 +13,7 @@
 #include "renderer/vulkan/pipeline.hpp"
 
 #include <algorithm>
+#include <string>
 
 namespace renderer {
 
@@ -38,9 +39,13 @@ struct GeometrySources {
   }
 };
 
-// The sources and splatting a request asks for (the renderer adds what the frame decides: the
-// RSM's stride, bounces, and whether the RSM ran).
-GeometrySources geometry_sources(const api::Lpv& lpv);
+// The sources and splatting a request asks for, the RSMs only where the frame draws them
+// (`rsm_drawn`); the renderer adds the RSM's stride and bounces.
+GeometrySources geometry_sources(const api::Lpv& lpv, bool rsm_drawn = true);
+
+// What the volume is made of, for the stats: "occluders: the scene's surfaces (19800 pieces)
+// and the camera's surfels". `blockers`: the scene's pieces (GpuScene::blocker_count).
+std::string describe_occluders(const GeometrySources& sources, std::uint32_t blockers);
 
 class GeometryVolumePass {
  public:

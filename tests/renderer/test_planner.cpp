@@ -120,6 +120,19 @@ TEST_F(Planner, EmittersWithoutOccludersSkipTheGeometryVolume) {
   EXPECT_NE(pass(skipped, "geometry_volume").reason.find("no occluders"), std::string::npos);
   EXPECT_EQ(pass(skipped, "geometry_volume").gpu_ms.median, 0.0);
   EXPECT_EQ(skipped.linear.pixels, reference.linear.pixels) << "an empty geometry volume blocks nothing";
+
+  // The scene's own surfaces (the default) occlude with no light at all, and the stats say
+  // what the volume is made of.
+  api::RenderRequest from_scene = request(api::PlanMode::exact);
+  from_scene.output.view = api::View::indirect;
+  const auto occluded = r.render(lamp, from_scene, renderer::kReadbackLinear);
+  EXPECT_TRUE(pass(occluded, "geometry_volume").ran);
+  EXPECT_EQ(pass(occluded, "geometry_volume").reason.rfind("occluders: the scene's surfaces (", 0), 0u)
+      << pass(occluded, "geometry_volume").reason;
+  from_scene.lpv.occlusion_from_camera = true;
+  EXPECT_NE(pass(r.render(lamp, from_scene, renderer::kReadbackLinear), "geometry_volume")
+                .reason.find(" and the camera's surfels"),
+            std::string::npos);
 }
 
 TEST_F(Planner, BlackSurfacesSkipTheLpvAndChangeNothing) {
