@@ -7,7 +7,10 @@ namespace renderer {
 
 std::uint32_t pieces_per_edge(const SurfaceTriangle& t, float edge) {
   const float longest = std::max({glm::distance(t.a, t.b), glm::distance(t.b, t.c), glm::distance(t.c, t.a)});
-  return std::uint32_t(std::clamp(std::ceil(longest / edge), 1.0f, 256.0f));
+  // A sliver cut by its longest edge would give n^2 slivers for little area: at most twice
+  // what its area asks for (which leaves triangles up to about 4:1 as they were).
+  const float by_area = std::ceil(2.0f * std::sqrt(triangle_area(t) / piece_area(edge)));
+  return std::uint32_t(std::clamp(std::min(std::ceil(longest / edge), by_area), 1.0f, 256.0f));
 }
 
 float triangle_area(const SurfaceTriangle& t) { return 0.5f * glm::length(glm::cross(t.b - t.a, t.c - t.a)); }

@@ -57,7 +57,8 @@ float piece_edge(const scene::Bounds& bounds, std::size_t max_pieces, CountAt co
 // triangles of a regular subdivision, each at its centroid. Nothing for a degenerate one.
 void append_pieces(const SurfaceTriangle& t, float edge, std::vector<SurfacePiece>& out);
 
-// Pieces per edge of `t` for pieces' edges at most `edge` long (the subdivision's n).
+// Pieces per edge of `t` for pieces' edges at most `edge` long (the subdivision's n), but for
+// a sliver no more than twice what its area needs (its pieces are then longer).
 std::uint32_t pieces_per_edge(const SurfaceTriangle& t, float edge);
 
 // The area of `t`, and that of a piece whose edges are `edge` long (equilateral).

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace {
 
@@ -60,6 +61,29 @@ TEST(BlockerSurfels, SampleTrianglesSmallerThanAPieceWithinTheBudget) {
   const auto again = renderer::blocker_surfels(floor, 2000);
   ASSERT_EQ(again.size(), blockers.size());
   for (std::size_t i = 0; i < blockers.size(); ++i) EXPECT_EQ(again[i].position, blockers[i].position);
+}
+
+// A thousand slivers 1 m long and 0.1 mm wide (0.1 m^2 in all) beside a 1 m^2 floor: cut by
+// their length alone they would take as many pieces each as the floor does, and leave the
+// floor a thousandth of the budget; cut by their area they leave it a good part of it.
+TEST(BlockerSurfels, SliversDoNotSpendTheBudget) {
+  auto floor_pieces = [](bool with_slivers) {
+    scene::SceneBuilder b("slivers");
+    const auto white = b.add_material({"white", glm::vec3(0.5f), {}});
+    b.add_quad({0, 0, 1}, {1, 0, 1}, {1, 0, 0}, {0, 0, 0}, white);
+    for (int i = 0; with_slivers && i < 1000; ++i) {
+      const float x = float(i) / 1000.0f;
+      b.add_quad({x, 0.5f, 0}, {x + 1e-4f, 0.5f, 0}, {x + 1e-4f, 0.5f, 1}, {x, 0.5f, 1}, white);
+    }
+    const auto blockers = renderer::blocker_surfels(b.build());
+    EXPECT_LE(blockers.size(), std::size_t(1) << 15);
+    std::size_t n = 0;
+    for (const gpu::GpuBlocker& p : blockers) n += p.position.y == 0.0f ? 1 : 0;
+    return n;
+  };
+  const std::size_t alone = floor_pieces(false), beside_slivers = floor_pieces(true);
+  std::printf("the floor's pieces: %zu alone, %zu beside the slivers\n", alone, beside_slivers);
+  EXPECT_GE(beside_slivers, alone / 4);  // the pieces grow by steps of 1.5 (2.25 in count)
 }
 
 TEST(EmitterSurfels, KeepTheEmittedFlux) {
