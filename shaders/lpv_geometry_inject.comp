@@ -35,6 +35,7 @@ const float MIN_AREA_COSINE = 0.25;
 // One surfel blocks at most this many cell faces (keeps the fixed point far from overflow).
 const float MAX_POTENTIAL = 64.0;
 
+// The albedo a surfel carries as shared/albedo_code.h encodes it.
 vec3 decode_albedo(float code) {
   uint q = uint(code);
   return vec3(q & 255u, (q >> 8) & 255u, (q >> 16) & 255u) / 255.0;

@@ -6,6 +6,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lights.glsl"
+#include "shared/albedo_code.h"
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
@@ -26,12 +27,6 @@ layout(location = 2) out vec4 out_flux;      // rgb: reflected flux (W); w: surf
 
 // Surfaces seen edge-on from the light get at most this many times their projected area.
 const float MIN_AREA_COSINE = 0.25;
-
-// An 8-bit RGB albedo as one exactly representable integer in a float.
-float albedo_code(vec3 albedo) {
-  uvec3 q = uvec3(round(clamp(albedo, 0.0, 1.0) * 255.0));
-  return float(q.r | (q.g << 8) | (q.b << 16));
-}
 
 void main() {
   GpuRsmView view = views[draw.view];

@@ -2,21 +2,13 @@
 
 #include "renderer/lpv/surface_pieces.hpp"
 #include "renderer/scene/texture_mips.hpp"
+#include "shaders/shared/albedo_code.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace renderer {
 namespace {
-
-// An albedo as the RSM's normal texels carry it (rsm.frag, albedo_code): 8 bits a channel
-// in one exactly representable integer.
-float albedo_code(glm::vec3 albedo) {
-  std::uint32_t code = 0;
-  for (int c = 0; c < 3; ++c)
-    code |= std::uint32_t(std::lround(std::clamp(albedo[c], 0.0f, 1.0f) * 255.0f)) << (8 * c);
-  return float(code);
-}
 
 // A material's albedo averaged over its texture: the blockers reflect what they stop (bounces)
 // with one albedo each.
@@ -26,7 +18,7 @@ std::vector<float> material_albedo_codes(const scene::Scene& scene) {
     glm::vec3 albedo = m.base_color;
     if (m.base_color_texture >= 0 && std::size_t(m.base_color_texture) < scene.textures.size())
       albedo *= scene::linear_mean_colour(scene.textures[std::size_t(m.base_color_texture)].rgba);
-    codes.push_back(albedo_code(albedo));
+    codes.push_back(gpu::albedo_code(albedo));
   }
   return codes;
 }
