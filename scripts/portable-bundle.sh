@@ -5,8 +5,8 @@
 # libraries they load (all but the C and C++ runtimes, which a newer distribution has too),
 # the Vulkan loader, the validation layer, the GL vendor-neutral dispatch libraries
 # (libglvnd: NVIDIA's Vulkan driver is a GLX vendor library, and without them its
-# vkCreateInstance is not found; containers often lack them), the glTF corpus and the
-# tracked source files the tests read.
+# vkCreateInstance is not found; containers often lack them), HAProxy for the scale-out test
+# (where the build found one), the glTF corpus and the tracked source files the tests read.
 #
 #   scripts/portable-bundle.sh [ARCHIVE [BUILD]]   # defaults: build-portable/lpv-portable.tar.xz, build
 #   # on the other machine:
@@ -27,7 +27,7 @@ mkdir -p "$(dirname "$archive")"
 archive="$(cd "$(dirname "$archive")" && pwd)/$(basename "$archive")"
 stage="$(mktemp -d "${TMPDIR:-/tmp}/lpv-portable.XXXXXX")"
 trap 'rm -rf "$stage"' EXIT
-mkdir -p "$stage/lib" "$stage/layers"
+mkdir -p "$stage/lib" "$stage/layers" "$stage/bin"
 
 # The tracked sources as they are in the working tree (the tests' scripts, web/, bench/, api/);
 # outside a git checkout (a Docker image), the tree but its builds.
@@ -42,12 +42,16 @@ cp -a "$build" "$stage/build"
 (cd "$stage/build" && find . \( -name CMakeFiles -o -name Testing -o -name artifacts \) -prune -exec rm -rf {} + &&
   find . -name '*.a' -delete)
 
+# HAProxy, which the scale-out test runs (its path is in the CTest files; run.sh points them here).
+haproxy=$(sed -n 's/^LPV_HAPROXY:[A-Z]*=//p' "$build/CMakeCache.txt")
+[ -x "$haproxy" ] && cp "$haproxy" "$stage/bin/haproxy" || haproxy=
+
 # Shared libraries: what the binaries and the layer load, but the C and C++ runtimes.
 layer=/usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so
 layer_json=/usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json
 elves=$(find "$stage/build" -type f -perm -u+x -exec sh -c 'head -c4 "$1" | grep -q ELF' _ {} \; -print)
 {
-  for f in $elves "$layer"; do ldd "$f" 2>/dev/null | awk '$2 == "=>" && $3 ~ /^\// { print $3 }'; done
+  for f in $elves "$layer" ${haproxy:+"$stage/bin/haproxy"}; do ldd "$f" 2>/dev/null | awk '$2 == "=>" && $3 ~ /^\// { print $3 }'; done
   echo "$layer"
   for gl in libGLdispatch.so.0 libGLX.so.0 libGL.so.1 libEGL.so.1 libOpenGL.so.0 libGLESv2.so.2; do
     [ -e "/usr/lib/x86_64-linux-gnu/$gl" ] && echo "/usr/lib/x86_64-linux-gnu/$gl"
@@ -63,7 +67,7 @@ if [ -n "$corpus" ] && [ -d "$corpus" ]; then
 fi
 
 # Where the build was made: run.sh rewrites the CTest files from these to where it is.
-printf '%s\n%s\n%s\n' "$build" "$root" "$corpus" >"$stage/origin"
+printf '%s\n%s\n%s\n%s\n' "$build" "$root" "$corpus" "$haproxy" >"$stage/origin"
 cat >"$stage/run.sh" <<'RUN'
 #!/usr/bin/env bash
 # Runs a command from this bundle's root with its libraries, validation layer and test paths
@@ -78,13 +82,15 @@ if [ -z "${VK_DRIVER_FILES:-}${VK_ICD_FILENAMES:-}" ]; then
     [ -e "$f" ] && export VK_DRIVER_FILES="$f" VK_ICD_FILENAMES="$f" && break
   done
 fi
-{ read -r build; read -r source; read -r corpus; } <"$here/origin"
+{ read -r build; read -r source; read -r corpus; read -r haproxy || true; } <"$here/origin"
 if [ "$source" != "$here" ]; then
   # Through markers, so that no new path is rewritten again by a later pattern.
   find "$here/build" -name CTestTestfile.cmake -exec sed -i -e "s#$build#@BUILD@#g" -e "s#$source#@SOURCE@#g" \
-    ${corpus:+-e "s#$corpus#@CORPUS@#g"} -e "s#@BUILD@#$here/build#g" -e "s#@SOURCE@#$here#g" \
-    -e "s#@CORPUS@#$here/corpus/glTF2#g" {} +
-  printf '%s\n%s\n%s\n' "$here/build" "$here" "${corpus:+$here/corpus/glTF2}" >"$here/origin"
+    ${corpus:+-e "s#$corpus#@CORPUS@#g"} ${haproxy:+-e "s#LPV_HAPROXY=$haproxy#LPV_HAPROXY=@HAPROXY@#g"} \
+    -e "s#@BUILD@#$here/build#g" -e "s#@SOURCE@#$here#g" -e "s#@CORPUS@#$here/corpus/glTF2#g" \
+    -e "s#@HAPROXY@#$here/bin/haproxy#g" {} +
+  printf '%s\n%s\n%s\n%s\n' "$here/build" "$here" "${corpus:+$here/corpus/glTF2}" "${haproxy:+$here/bin/haproxy}" \
+    >"$here/origin"
 fi
 # The server tests read the corpus at the path compiled in: link it there when it is missing.
 if [ -n "$corpus" ] && [ ! -e "$corpus" ] && [ -d "$here/corpus/glTF2" ]; then

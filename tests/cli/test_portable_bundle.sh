@@ -6,6 +6,11 @@ set -u
 source_dir="$1"
 build_dir="$2"
 . "$(dirname "$0")/script_checks.sh"
+# Run from a bundle (its run.sh and origin at the top), there is no build machine to pack from.
+if [ -e "$source_dir/origin" ] && [ -x "$source_dir/run.sh" ]; then
+  echo "portable_bundle: skipped: this is a bundle; packing one needs the build machine's libraries" >&2
+  exit 77
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -25,6 +30,12 @@ check "the validation layer is in the bundle" test -s "$here/lib/libVkLayer_khro
   -s "$here/layers/VkLayer_khronos_validation.json"
 check "the CTest files name the bundle, not the build" \
   bash -c "! grep -rq --include=CTestTestfile.cmake '$build_dir' '$here/build' && grep -q '$here/build' '$here/build/CTestTestfile.cmake'"
+haproxy=$(sed -n 's/^LPV_HAPROXY:[A-Z]*=//p' "$build_dir/CMakeCache.txt")
+if [ -x "$haproxy" ]; then
+  check "HAProxy comes with the bundle, and the scale-out test runs it from there" \
+    bash -c "test -x '$here/bin/haproxy' && grep -rq --include=CTestTestfile.cmake 'LPV_HAPROXY=$here/bin/haproxy' '$here/build' &&
+      '$here/run.sh' bin/haproxy -v | grep -q HAProxy"
+fi
 "$here/run.sh" ctest --test-dir build -R '^cli$' >"$work/ctest.txt" 2>&1
 check "a suite runs from the bundle" grep -q "100% tests passed" "$work/ctest.txt"
 finish || { cat "$work/pack.txt" "$work/render.txt" "$work/ctest.txt"; exit 1; }

@@ -47,6 +47,25 @@ const char* type_name(const nlohmann::json& j) {
 
 }  // namespace
 
+std::string long_render_body(const ServerProcess& server) {
+  nlohmann::json request = {{"output", {{"width", 1024}, {"height", 1024}}},
+                            {"lpv", {{"grid", 96}, {"iterations", 64}}},
+                            {"plan", "exact"},
+                            {"repeat", 2}};
+  const auto timed = server.client()->Post("/v1/render", {{"X-Deadline-Ms", "1000"}}, request.dump(), "application/json");
+  if (!timed) throw std::runtime_error("long_render_body: the timing render got no answer");
+  int repeat = kLongRenderMaxRepeat;
+  if (timed->status == 200) {
+    const double frame_ms = nlohmann::json::parse(timed->get_header_value("X-Render-Stats"))["wall_ms"]["min"];
+    if (frame_ms * kLongRenderMaxRepeat < 10000.0) return {};
+    repeat = std::min(kLongRenderMaxRepeat, int(std::ceil(60000.0 / std::max(frame_ms, 1e-3))));
+  } else if (timed->status != 504) {
+    throw std::runtime_error("long_render_body: the timing render answered " + std::to_string(timed->status));
+  }
+  request["repeat"] = repeat;
+  return request.dump();
+}
+
 std::future<httplib::Result> start_slow_render(const ServerProcess& server) {
   // Two frames, the faster one counted: the first also compiles the pipelines (2.5 times a
   // warm frame on lavapipe).

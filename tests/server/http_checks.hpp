@@ -63,6 +63,15 @@ double elapsed_ms(Work&& work) {
 inline constexpr int kSlowRenderSize = 2048;
 std::future<httplib::Result> start_slow_render(const ServerProcess& server);
 
+// The body of a render that keeps this server's worker busy for about a minute or more,
+// for tests that stop one: 1024^2 frames with a 96^3 grid and 64 steps, as many as a minute
+// needs on this device (a warm frame timed first), at most kLongRenderMaxRepeat (start the
+// server with that --max-repeat). The timing render is cut at one second: a device that
+// cannot render two such frames in a second (lavapipe takes about 6 s a frame) gets the most.
+// Empty when even the most frames would take under 10 s: there is nothing long to stop.
+inline constexpr int kLongRenderMaxRepeat = 1000;
+std::string long_render_body(const ServerProcess& server);
+
 // The value of the /metrics series `series` (a name with its labels, exactly as the server
 // writes it): 0 when the series is absent, -1 when /metrics does not answer 200.
 double metric(const ServerProcess& server, const std::string& series);

@@ -17,20 +17,19 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Minutes of work on lavapipe: a 1024^2 frame, a 96^3 grid, 64 steps, 100 frames.
-constexpr const char* kLongRender =
-    R"({"output": {"width": 1024, "height": 1024}, "lpv": {"grid": 96, "iterations": 64}, "repeat": 100,
-        "plan": "exact"})";
+const std::string kMaxRepeat = std::to_string(kLongRenderMaxRepeat);
 constexpr const char* kSmallRender = R"({"output": {"width": 64, "height": 64}})";
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 TEST(StoppedRenders, AnAbandonedRenderFreesTheWorkerWithinASecond) {
-  ServerProcess server({"--workers", "1"});
+  ServerProcess server({"--workers", "1", "--max-repeat", kMaxRepeat});
+  const std::string long_render = long_render_body(server);
+  if (long_render.empty()) GTEST_SKIP() << "this device renders the longest request in under 10 s";
   auto http = server.client();
   http->set_read_timeout(60, 0);
   const auto start = Clock::now();
-  const auto abandoned = http->Post("/v1/render", {{"X-Deadline-Ms", "1000"}}, kLongRender, "application/json");
+  const auto abandoned = http->Post("/v1/render", {{"X-Deadline-Ms", "1000"}}, long_render, "application/json");
   EXPECT_TRUE(is_json_error(abandoned, 504, "deadline_exceeded", ""));
   const double answered = seconds_since(start);
   EXPECT_LT(answered, 3.0);
@@ -45,18 +44,20 @@ TEST(StoppedRenders, AnAbandonedRenderFreesTheWorkerWithinASecond) {
 }
 
 TEST(StoppedRenders, SigtermStopsWhatStillRunsAfterTheDrain) {
-  ServerProcess server({"--drain-ms", "500"});
+  ServerProcess server({"--drain-ms", "500", "--max-repeat", kMaxRepeat});
+  const std::string long_render = long_render_body(server);
+  if (long_render.empty()) GTEST_SKIP() << "this device renders the longest request in under 10 s";
   const int port = server.port();
-  auto running = std::async(std::launch::async, [port] {
+  auto running = std::async(std::launch::async, [port, long_render] {
     httplib::Client http("127.0.0.1", port);
     http.set_read_timeout(60, 0);
-    return http.Post("/v1/render", kLongRender, "application/json");
+    return http.Post("/v1/render", long_render, "application/json");
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // it is rendering
   const auto signalled = Clock::now();
   EXPECT_EQ(server.stop(SIGTERM, std::chrono::seconds(20)), 0);
   const double exit_s = seconds_since(signalled);
-  std::printf("SIGTERM with a minutes-long render running: exited after %.2f s (--drain-ms 500)\n", exit_s);
+  std::printf("SIGTERM with a minute-long render running: exited after %.2f s (--drain-ms 500)\n", exit_s);
   EXPECT_LT(exit_s, 6.0);
   EXPECT_TRUE(is_json_error(running.get(), 504, "deadline_exceeded", ""));
 }
