@@ -1,5 +1,7 @@
 // lpv-server: keeps a Vulkan device, its pipelines and the built-in scenes warm and
 // serves render requests over HTTP (api/openapi.yaml).
+#include "server/fronted_server.hpp"
+#include "server/http_front.hpp"
 #include "server/render_queue.hpp"
 #include "server/request_log.hpp"
 #include "server/routes.hpp"
@@ -29,9 +31,8 @@ namespace {
 
 
 // Connections the kernel may hold before the server accepts them. Debian's httplib listens
-// with a backlog of 5: a burst of clients then overflows the accept queue, the handshakes
-// that overflow stall in retransmits, and httplib closes such a connection unanswered when
-// its request arrives later than the keep-alive timeout. (The kernel caps this at somaxconn.)
+// with a backlog of 5: a burst of clients then overflows the accept queue, and the handshakes
+// that overflow stall in retransmits. (The kernel caps this at somaxconn.)
 constexpr int kListenBacklog = 1024;
 
 vkx::DeviceOptions device_options(const server::ServerOptions& options) {
@@ -69,9 +70,8 @@ void stop_server(httplib::Server& http, const std::atomic<bool>& listening_over)
   http.stop();
 }
 
-// --health-port: /healthz and /readyz on a listener of their own. Slow or many clients of the
-// main port can take all its threads (httplib 0.11 bounds each read, not a request's head),
-// never these two.
+// --health-port: /healthz and /readyz on a listener of their own, for probes that must not
+// share the main port's connection caps (a client at its cap of connections gets 503 there).
 class ProbeListener {
  public:
   explicit ProbeListener(const server::RenderQueue& queue) {
@@ -178,26 +178,29 @@ int run(int argc, char** argv) {
   }
 
   SignalWatcher signals;
-  httplib::Server http;
-  std::atomic<bool> listening_over{false};
-  std::atomic<int> exit_code{0};
+  server::FrontedServer http(options.connections);
   server::Metrics metrics;
+  // Accept and every request's head are the front's; the serving threads run httplib's routes.
+  server::HttpFront front(
+      options.connections, options.http_threads,
+      [&http](const server::HeadReady& connection, bool closing) { return http.serve(connection, closing); },
+      [&metrics](int status, const std::string& code, const std::string& client) {
+        metrics.count_refused_connection(status, code);
+        log_event("refused", {{"status", status}, {"code", code}, {"client", client}});
+      });
+  std::atomic<int> exit_code{0};
   server::SceneStore scenes(scene_store_config(options));
   server::RenderQueue queue(
       {options.queue_capacity, options.render_workers, device_options(options), options.scene_cache_bytes}, scenes,
       [&](const std::string& message) {
         log_event("fatal", {{"message", message}});
         exit_code = tools::kExitFailure;
-        stop_server(http, listening_over);
+        front.stop();
       });
   server::Service service{options, queue, metrics, scenes};
   server::install_routes(http, service);
-  http.new_task_queue = [n = options.http_threads] { return new httplib::ThreadPool(n); };
   // One limit for every route: the largest. The routes that take a body hold it to their own.
   http.set_payload_max_length(server::largest_body_bytes(options));
-  http.set_tcp_nodelay(true);  // the headers and body go out in separate writes
-  http.set_keep_alive_max_count(1000);
-  http.set_keep_alive_timeout(2);  // also how long shutdown may wait for an idle connection
   int listening_socket = -1;
   http.set_socket_options([&listening_socket](socket_t socket) {
     httplib::default_socket_options(socket);
@@ -208,13 +211,11 @@ int run(int argc, char** argv) {
                                      : (http.bind_to_port(options.host, options.port) ? options.port : -1);
   if (port < 0) {
     std::fprintf(stderr, "lpv-server: cannot listen on %s:%d\n", options.host.c_str(), options.port);
-    listening_over = true;
     queue.shutdown();
     return tools::kExitFailure;
   }
   if (::listen(listening_socket, kListenBacklog) != 0) {  // on a listening socket: a new backlog
     std::fprintf(stderr, "lpv-server: cannot set the listen backlog: %s\n", std::strerror(errno));
-    listening_over = true;
     queue.shutdown();
     return tools::kExitFailure;
   }
@@ -226,7 +227,6 @@ int run(int argc, char** argv) {
     const int bound = probes.start(options.host, options.health_port);
     if (bound < 0) {
       std::fprintf(stderr, "lpv-server: cannot listen on %s:%d for probes\n", options.host.c_str(), options.health_port);
-      listening_over = true;
       queue.shutdown();
       return tools::kExitFailure;
     }
@@ -238,11 +238,10 @@ int run(int argc, char** argv) {
 
   signals.start([&](int signal) {
     log_event("shutdown", {{"signal", signal == SIGINT ? "SIGINT" : "SIGTERM"}, {"drain_ms", options.drain.count()}});
-    queue.begin_drain(options.drain);   // what still runs after the drain is stopped
-    stop_server(http, listening_over);  // listen_after_bind returns once open requests are answered
+    queue.begin_drain(options.drain);  // what still runs after the drain is stopped
+    front.stop();                      // run returns once the requests in hand are answered
   });
-  http.listen_after_bind();
-  listening_over = true;
+  front.run(listening_socket);
   probes.stop();
   signals.stop();
   queue.shutdown();  // work still queued or running finishes (or stops at the drain) before its device closes

@@ -76,6 +76,11 @@ void Metrics::observe_pass(const std::string& pass, double gpu_seconds) {
   pass_seconds_.try_emplace(pass, kPassBuckets).first->second.observe(gpu_seconds);
 }
 
+void Metrics::count_refused_connection(int status, const std::string& code) {
+  std::lock_guard lock(mutex_);
+  ++refused_connections_[{status, code}];
+}
+
 void Metrics::count_render(const std::string& outcome) {
   std::lock_guard lock(mutex_);
   ++renders_[outcome];
@@ -102,6 +107,11 @@ std::string Metrics::prometheus_text(const QueueGauges& queue, const StoreGauges
   header(out, "lpv_renders_total", "counter", "Render jobs by outcome.");
   for (const auto& [outcome, count] : renders_)
     out += "lpv_renders_total{outcome=\"" + label_value(outcome) + "\"} " + std::to_string(count) + "\n";
+  header(out, "lpv_http_refused_connections_total", "counter",
+         "Connections the front refused or cut short, by the status answered (0: none) and code.");
+  for (const auto& [key, count] : refused_connections_)
+    out += "lpv_http_refused_connections_total{status=\"" + std::to_string(key.first) + "\",code=\"" +
+           label_value(key.second) + "\"} " + std::to_string(count) + "\n";
   header(out, "lpv_render_queue_depth", "gauge", "Renders waiting for a worker.");
   out += "lpv_render_queue_depth " + std::to_string(queue.depth) + "\n";
   header(out, "lpv_render_queue_capacity", "gauge", "Renders that may wait before requests are answered 503.");

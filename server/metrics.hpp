@@ -55,6 +55,9 @@ class Metrics {
   // "ok", "rejected" (by the renderer: 404/422), "failed" (500), "queue_full",
   // "deadline_exceeded", "client_gone"
   void count_render(const std::string& outcome);
+  // A connection the front refused or cut short (server/http_front): the status it was
+  // answered (0: closed unanswered) and the error's code.
+  void count_refused_connection(int status, const std::string& code);
 
   std::string prometheus_text(const QueueGauges& queue, const StoreGauges& store) const;
 
@@ -65,6 +68,7 @@ class Metrics {
   std::map<std::string, Histogram> pass_seconds_;     // by pass
   Histogram queue_wait_seconds_{{0.001, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1, 2.5, 5, 10, 30}};
   std::map<std::string, std::uint64_t> renders_;
+  std::map<std::pair<int, std::string>, std::uint64_t> refused_connections_;
 };
 
 }  // namespace server

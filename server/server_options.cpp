@@ -71,6 +71,22 @@ const std::vector<Setting>& settings() {
       {"--insecure", false, [](ServerOptions& o, S s, S v) { o.insecure = parse_switch(s, v); }},
       {"--allowed-host", true, [](ServerOptions& o, S s, S v) { add_allowed_hosts(o, s, v); }},
       {"--threads", true, [](ServerOptions& o, S s, S v) { o.http_threads = parse_count(s, v, 1, 1024); }},
+      {"--max-connections", true,
+       [](ServerOptions& o, S s, S v) { o.connections.max_connections = parse_count(s, v, 1, 1'000'000); }},
+      {"--max-connections-per-client", true,
+       [](ServerOptions& o, S s, S v) { o.connections.max_connections_per_client = parse_count(s, v, 1, 1'000'000); }},
+      {"--head-timeout-ms", true,
+       [](ServerOptions& o, S s, S v) {
+         o.connections.head_timeout = std::chrono::milliseconds(parse_count(s, v, 100, 3600000));
+       }},
+      {"--transfer-timeout-ms", true,
+       [](ServerOptions& o, S s, S v) {
+         o.connections.transfer_timeout = std::chrono::milliseconds(parse_count(s, v, 100, 3600000));
+       }},
+      {"--max-header-lines", true,
+       [](ServerOptions& o, S s, S v) { o.connections.max_header_lines = parse_count(s, v, 8, 100'000); }},
+      {"--max-head-bytes", true,
+       [](ServerOptions& o, S s, S v) { o.connections.max_head_bytes = parse_count(s, v, 1024, 64u << 20); }},
       {"--workers", true, [](ServerOptions& o, S s, S v) { o.render_workers = parse_count(s, v, 1, 16); }},
       {"--queue", true, [](ServerOptions& o, S s, S v) { o.queue_capacity = parse_count(s, v, 1, 10000); }},
       {"--deadline-ms", true,
@@ -143,7 +159,19 @@ options (each also read from the environment variable in brackets; a flag wins):
   --allowed-host NAME    without a token, requests must name a loopback host or one of these
                          (repeatable, or comma-separated; "*": any) in Host, else 421; the
                          --host address is allowed too [LPV_SERVER_ALLOWED_HOST]
-  --threads N            HTTP connections served at once (16) [LPV_SERVER_THREADS]
+  --threads N            HTTP requests served at once, once their heads have arrived (16)
+                         [LPV_SERVER_THREADS]
+  --max-connections N    connections open at once; more get 503 (512) [LPV_SERVER_MAX_CONNECTIONS]
+  --max-connections-per-client N  connections open at once from one address; more get 503
+                         (64) [LPV_SERVER_MAX_CONNECTIONS_PER_CLIENT]
+  --head-timeout-ms N    a request's line and headers must arrive within this, from the
+                         connection (or a kept-alive request's first byte), else 408 (10000)
+                         [LPV_SERVER_HEAD_TIMEOUT_MS]
+  --transfer-timeout-ms N  a request's body must arrive, and its response leave, each within
+                         this, else 408 or a close (60000) [LPV_SERVER_TRANSFER_TIMEOUT_MS]
+  --max-header-lines N   header lines of one request before 431 (100) [LPV_SERVER_MAX_HEADER_LINES]
+  --max-head-bytes N     bytes of a request's line and headers before 431 (65536)
+                         [LPV_SERVER_MAX_HEAD_BYTES]
   --workers N            render workers, each with its own device (1) [LPV_SERVER_WORKERS]
   --queue N              renders that may wait for a worker; more get 503 (8) [LPV_SERVER_QUEUE]
   --deadline-ms N        time from arrival to image before 504 (30000) [LPV_SERVER_DEADLINE_MS]

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "renderer/scene/gltf_loader.hpp"
+#include "server/connection_limits.hpp"
 #include "server/limits.hpp"
 
 #include <chrono>
@@ -28,7 +29,8 @@ struct ServerOptions {
   // Without a token, the Host names besides loopback ones that requests may carry ("*": any).
   std::vector<std::string> allowed_hosts;
   bool insecure = false;           // allow a non-loopback address without a token
-  std::size_t http_threads = 16;   // connections served at once
+  std::size_t http_threads = 16;   // requests served at once (their heads read by the front)
+  ConnectionLimits connections;
   std::size_t render_workers = 1;  // each owns its own device and renderer
   std::size_t queue_capacity = 8;  // renders waiting for a worker; more are answered 503
   std::chrono::milliseconds deadline{30000};  // from arrival to the rendered image

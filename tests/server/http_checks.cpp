@@ -47,6 +47,14 @@ const char* type_name(const nlohmann::json& j) {
 
 }  // namespace
 
+long status_kb(pid_t pid, const std::string& field) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind(field + ":", 0) == 0) return std::stol(line.substr(field.size() + 1));
+  return -1;
+}
+
 std::string long_render_body(const ServerProcess& server) {
   nlohmann::json request = {{"output", {{"width", 1024}, {"height", 1024}}},
                             {"lpv", {{"grid", 96}, {"iterations", 64}}},

@@ -72,6 +72,9 @@ std::future<httplib::Result> start_slow_render(const ServerProcess& server);
 inline constexpr int kLongRenderMaxRepeat = 1000;
 std::string long_render_body(const ServerProcess& server);
 
+// kB of /proc/PID/status's field (VmRSS: now; VmHWM: the peak so far); -1 when absent.
+long status_kb(pid_t pid, const std::string& field);
+
 // The value of the /metrics series `series` (a name with its labels, exactly as the server
 // writes it): 0 when the series is absent, -1 when /metrics does not answer 200.
 double metric(const ServerProcess& server, const std::string& series);

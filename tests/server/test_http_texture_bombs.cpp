@@ -26,15 +26,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// kB of /proc/PID/status's field (VmRSS: now; VmHWM: the peak so far).
-long status_kb(pid_t pid, const std::string& field) {
-  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind(field + ":", 0) == 0) return std::stol(line.substr(field.size() + 1));
-  return -1;
-}
-
 // The same bomb image in `count` files that differ in a node's name, so none is a repeat.
 std::vector<std::string> texture_bombs(int count, int side) {
   test_gltf::GltfBuilder b;

@@ -1,0 +1,137 @@
+#include "server/fronted_server.hpp"
+
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+
+#include <algorithm>
+#include <arpa/inet.h>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+
+namespace server {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// One request's connection: the bytes the front read first, then the socket. Reading the body
+// and writing the response each have one deadline, from their first byte; a body that misses
+// its deadline is answered 408 here, and what httplib writes after that is dropped.
+class FrontStream : public httplib::Stream {
+ public:
+  FrontStream(int fd, std::string buffered, std::chrono::milliseconds transfer_timeout)
+      : fd_(fd), buffered_(std::move(buffered)), transfer_timeout_(transfer_timeout),
+        read_deadline_(Clock::now() + transfer_timeout) {}
+
+  bool is_readable() const override { return position_ < buffered_.size() || wait(POLLIN, read_deadline_); }
+  bool is_writable() const override { return wait(POLLOUT, write_deadline()); }
+
+  ssize_t read(char* ptr, size_t size) override {
+    if (answered_) return -1;
+    if (position_ < buffered_.size()) {
+      const std::size_t n = std::min(size, buffered_.size() - position_);
+      std::memcpy(ptr, buffered_.data() + position_, n);
+      position_ += n;
+      return ssize_t(n);
+    }
+    // Read straight into the caller's buffer: nothing beyond what it asks is taken from the
+    // socket, so a pipelined next request stays there for the front.
+    while (true) {
+      if (!wait(POLLIN, read_deadline_)) {
+        answer_timeout();
+        return -1;
+      }
+      const ssize_t n = recv(fd_, ptr, size, 0);
+      if (n >= 0 || (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) return n;
+    }
+  }
+
+  ssize_t write(const char* ptr, size_t size) override {
+    if (answered_) return ssize_t(size);  // after the 408: dropped
+    if (!write_deadline_) write_deadline_ = Clock::now() + transfer_timeout_;
+    while (true) {
+      if (!wait(POLLOUT, *write_deadline_)) return -1;
+      const ssize_t n = send(fd_, ptr, size, MSG_NOSIGNAL);
+      if (n >= 0 || (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) return n;
+    }
+  }
+
+  void get_remote_ip_and_port(std::string& ip, int& port) const override { address(getpeername, ip, port); }
+  void get_local_ip_and_port(std::string& ip, int& port) const override { address(getsockname, ip, port); }
+  socket_t socket() const override { return fd_; }
+
+  // The connection can serve another request: it was not answered here.
+  bool reusable() const { return !answered_; }
+  // The bytes after this request's (a pipelined next request's start).
+  std::string leftover() const { return buffered_.substr(std::min(position_, buffered_.size())); }
+
+ private:
+  Clock::time_point write_deadline() const { return write_deadline_.value_or(Clock::now() + transfer_timeout_); }
+
+  // Whether `fd_` has `events` before `deadline`.
+  bool wait(short events, Clock::time_point deadline) const {
+    while (true) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+      if (left <= 0) return false;
+      pollfd p{fd_, events, 0};
+      const int n = poll(&p, 1, int(std::min<long long>(left, 1000)));
+      if (n > 0) return true;  // ready, or an error that the read or write then reports
+      if (n < 0 && errno != EINTR) return false;
+    }
+  }
+
+  void answer_timeout() {
+    const std::string response = raw_error_response(
+        {408, "request_timeout",
+         "the request's body did not arrive within " + std::to_string(transfer_timeout_.count()) +
+             " ms (--transfer-timeout-ms)", ""});
+    send(fd_, response.data(), response.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+    answered_ = true;
+  }
+
+  template <class Get>
+  void address(Get get, std::string& ip, int& port) const {
+    sockaddr_storage a{};
+    socklen_t length = sizeof a;
+    ip.clear();
+    port = 0;
+    if (get(fd_, reinterpret_cast<sockaddr*>(&a), &length) != 0) return;
+    char text[INET6_ADDRSTRLEN] = "";
+    if (a.ss_family == AF_INET) {
+      const auto& v4 = reinterpret_cast<const sockaddr_in&>(a);
+      inet_ntop(AF_INET, &v4.sin_addr, text, sizeof text);
+      port = ntohs(v4.sin_port);
+    } else if (a.ss_family == AF_INET6) {
+      const auto& v6 = reinterpret_cast<const sockaddr_in6&>(a);
+      inet_ntop(AF_INET6, &v6.sin6_addr, text, sizeof text);
+      port = ntohs(v6.sin6_port);
+    }
+    ip = text;
+  }
+
+  int fd_;
+  std::string buffered_;
+  std::size_t position_ = 0;
+  std::chrono::milliseconds transfer_timeout_;
+  Clock::time_point read_deadline_;
+  std::optional<Clock::time_point> write_deadline_;
+  bool answered_ = false;
+};
+
+}  // namespace
+
+FrontedServer::FrontedServer(const ConnectionLimits& limits) : limits_(limits) {
+  // The Keep-Alive header's timeout: the front closes a connection idle this long.
+  set_keep_alive_timeout(std::max<time_t>(1, time_t(limits.keep_alive_timeout.count() / 1000)));
+}
+
+std::optional<std::string> FrontedServer::serve(const HeadReady& connection, bool closing) {
+  FrontStream stream(connection.fd, connection.buffered, limits_.transfer_timeout);
+  bool connection_closed = false;
+  const bool written = process_request(stream, closing, connection_closed, nullptr);
+  if (!written || connection_closed || closing || !stream.reusable()) return std::nullopt;
+  return stream.leftover();
+}
+
+}  // namespace server

@@ -1,0 +1,29 @@
+// httplib's request handling behind server/http_front: the routes, body reading and responses
+// stay httplib's; accept and the request head are the front's. A request is served from the
+// socket the front hands over, with the head the front read first, through a stream that
+// bounds the body's arrival and the response's departure as wholes (--transfer-timeout-ms),
+// where httplib bounds each read and write alone.
+#pragma once
+
+#include "server/connection_limits.hpp"
+#include "server/http_front.hpp"
+
+#include <httplib.h>
+
+#include <optional>
+#include <string>
+
+namespace server {
+
+class FrontedServer : public httplib::Server {
+ public:
+  explicit FrontedServer(const ConnectionLimits& limits);
+
+  // Serves the one request whose head `connection` holds (HttpFront::Serve).
+  std::optional<std::string> serve(const HeadReady& connection, bool closing);
+
+ private:
+  ConnectionLimits limits_;
+};
+
+}  // namespace server
