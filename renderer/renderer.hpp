@@ -7,7 +7,6 @@
 #include "api/render_stats.hpp"
 #include "renderer/image/image.hpp"
 #include "renderer/scene/scene.hpp"
-#include "renderer/vulkan/device.hpp"
 
 #include <glm/glm.hpp>
 
@@ -18,6 +17,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+namespace vkx {
+class Device;  // renderer/vulkan/device.hpp: the renderer's own, not its users'
+}
 
 namespace renderer {
 

@@ -146,12 +146,12 @@ void RenderQueue::run(Job& job, accuracy::Workbench& bench) const {
 
 void RenderQueue::work(std::size_t index) {
   // Declared in this order so the renderer is destroyed before its device.
-  std::optional<vkx::Device> device;
+  std::optional<renderer::GpuDevice> device;
   std::optional<renderer::Renderer> renderer;
   std::optional<accuracy::Workbench> bench;
   try {
     device.emplace(config_.device);
-    renderer.emplace(*device, renderer::RendererOptions{[this](const std::string& id) { return scenes_.load(id); },
+    renderer.emplace(device->vulkan(), renderer::RendererOptions{[this](const std::string& id) { return scenes_.load(id); },
                                                         config_.scene_cache_bytes});
     warm_up(*renderer);
     bench.emplace(*renderer);
@@ -174,7 +174,7 @@ void RenderQueue::work(std::size_t index) {
   }
   {
     std::lock_guard lock(mutex_);
-    if (index == 0) device_report_ = server::device_report(device->info());
+    if (index == 0) device_report_ = server::device_report(device->report());
     const renderer::SceneCacheStats cache = renderer->scene_cache();
     scene_caches_[index] = {cache.scenes, cache.bytes};
     ++ready_workers_;

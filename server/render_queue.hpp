@@ -9,7 +9,7 @@
 #include "api/render_request.hpp"
 #include "renderer/accuracy/workbench.hpp"
 #include "renderer/renderer.hpp"
-#include "renderer/vulkan/device.hpp"
+#include "renderer/vulkan/device_options.hpp"
 #include "server/metrics.hpp"
 #include "server/scene_store.hpp"
 

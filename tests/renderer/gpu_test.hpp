@@ -5,6 +5,7 @@
 #include "renderer/frame_setup.hpp"
 #include "renderer/renderer.hpp"
 #include "renderer/scene/scene_builder.hpp"
+#include "renderer/vulkan/device.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 
 #include "bench_options.hpp"
 #include "renderer/accuracy/workbench.hpp"
+#include "renderer/gpu_device.hpp"
 #include "renderer/renderer.hpp"
-#include "renderer/vulkan/device.hpp"
 
 namespace bench {
 
@@ -15,9 +15,9 @@ struct Lab {
           if (options.device) device_options.selector = *options.device;
           return device_options;
         }()),
-        renderer(device, {.test_slowdown = options.test_slowdown}),
+        renderer(device.vulkan(), {.test_slowdown = options.test_slowdown}),
         bench(renderer) {}
-  vkx::Device device;
+  renderer::GpuDevice device;
   renderer::Renderer renderer;
   accuracy::Workbench bench;
 };

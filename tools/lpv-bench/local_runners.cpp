@@ -34,6 +34,6 @@ RoundTrips::RoundTrips(const Options& options, const api::BenchSuite& suite) {
 LocalRunners::LocalRunners(const Options& options, const api::BenchSuite& suite)
     : round_trips_(options, suite),
       lab_(options),
-      renders_(lab_.renderer, {lab_.device.info().name, lab_.device.info().driver}, true) {}
+      renders_(lab_.renderer, {lab_.device.report().name, lab_.device.report().driver}, true) {}
 
 }  // namespace bench

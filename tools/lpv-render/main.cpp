@@ -3,6 +3,7 @@
 #include "api/request_error.hpp"
 #include "api/request_json.hpp"
 #include "cli_options.hpp"
+#include "renderer/gpu_device.hpp"
 #include "renderer/image/file_io.hpp"
 #include "renderer/output.hpp"
 #include "renderer/renderer.hpp"
@@ -102,7 +103,7 @@ int run(int argc, char** argv) {
     return 0;
   }
   if (options.list_devices) {
-    const auto devices = vkx::Device::enumerate();
+    const auto devices = renderer::GpuDevice::enumerate();
     for (std::size_t i = 0; i < devices.size(); ++i)
       std::printf("[%zu] %s (%s)\n", i, devices[i].name.c_str(), devices[i].driver.c_str());
     return 0;
@@ -135,7 +136,7 @@ int run(int argc, char** argv) {
   vkx::DeviceOptions device_options = vkx::DeviceOptions::from_environment();
   if (options.device) device_options.selector = *options.device;
   if (options.validation) device_options.validation = true;
-  vkx::Device device(device_options);
+  renderer::GpuDevice device(device_options);
   // Progress on a terminal, erased when the render is done: the summary stays, not the bar.
   const bool show_progress = !options.quiet && isatty(STDERR_FILENO) == 1;
   tools::ProgressBar bar(show_progress);
@@ -144,7 +145,7 @@ int run(int argc, char** argv) {
     renderer_options.progress = [&](const renderer::RenderProgress& p) {
       bar.update("render", p.done, "frame " + std::to_string(p.frame) + "/" + std::to_string(p.frames) + " " + p.pass);
     };
-  renderer::Renderer renderer(device, std::move(renderer_options));
+  renderer::Renderer renderer(device.vulkan(), std::move(renderer_options));
   renderer::RenderResult result;
   if (file_scene) {
     try {
