@@ -135,6 +135,28 @@ TEST(SlowClients, HeadsThatTrickleAreAnswered408AndTakeNoServingThread) {
   EXPECT_EQ(server.stop(SIGTERM), 0);
 }
 
+TEST(SlowClients, AHeadInPiecesWithinItsDeadlineAndPipelinedRequestsAreServed) {
+  ServerProcess server({"--head-timeout-ms", "3000"});
+  const int fd = connect_to(server.port());
+  ASSERT_GE(fd, 0);
+  // The head in five pieces, its end split across two of them ("\r\n" then "\r\n").
+  for (const char* piece : {"GET /heal", "thz HTTP/1.1\r\n", "Host: 127.0.0.1\r\n", "X-A: 1\r\n", "\r\n"}) {
+    ASSERT_TRUE(send_all(fd, piece));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  // Then two requests in one write; the second asks to close.
+  ASSERT_TRUE(send_all(fd, "GET /healthz HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n"
+                           "GET /v1/scenes HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n"));
+  const std::string text = answer(fd, 5.0);
+  close(fd);
+  std::size_t answers = 0;
+  for (std::size_t at = text.find("HTTP/1.1 200 OK"); at != std::string::npos; at = text.find("HTTP/1.1 200 OK", at + 1))
+    ++answers;
+  EXPECT_EQ(answers, 3u) << text;
+  EXPECT_NE(text.find("\"scenes\""), std::string::npos) << "the pipelined request's answer";
+  EXPECT_EQ(server.stop(SIGTERM), 0);
+}
+
 TEST(SlowClients, AHeaderFloodIsAnswered431AndHeldInNoMemory) {
   constexpr int kFloods = 16;
   ServerProcess server;
