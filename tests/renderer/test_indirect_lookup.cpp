@@ -124,13 +124,13 @@ void expect_lookup_matches_the_host(glm::uvec3 grid, std::uint32_t cascades) {
   ASSERT_GT(brightest, 0.0) << "no indirect light to compare";
   // A wrong cell or weight is a difference of percents (a swapped corner: 0.16 to 0.41). The
   // host's point is the depth view's, rounded apart from the G-buffer's: lavapipe agrees within
-  // 1.2e-6 to 8.0e-6 of the brightest. NVIDIA's driver (H100, 580.159) differed by 3.4e-5,
-  // 5.2e-5 and 1.6e-4 in the three cases, more than that rounding explains (the nearest point
-  // on each worst pixel's ray whose host lookup matched within 1e-6 was 1.5e-4 to 1.2e-3 of
-  // the distance away). Not traced further: the lookup's float arithmetic there (Vulkan lets
-  // a division be 2.5 ulp off) or the G-buffer's point across the ray; either way far from a
-  // wrong cell.
-  EXPECT_LT(worst, 3e-4 * brightest);
+  // 1.2e-6 to 8.0e-6 of the brightest. NVIDIA's driver (H100, 580.159) differed by 4.1e-5,
+  // 1.7e-4 and 4.4e-4 in the three cases, more than that rounding explains: the host's lookup
+  // anywhere within 2e-5 of the distance along each pixel's ray left 3.4e-5, 5.2e-5 and 1.6e-4,
+  // and the worst pixels matched within 1e-6 only 1.5e-4 to 1.2e-3 of the distance away. Not
+  // traced further: the lookup's float arithmetic there (Vulkan lets a division be 2.5 ulp
+  // off) or the G-buffer's point across the ray; either way far from a wrong cell.
+  EXPECT_LT(worst, 1e-3 * brightest);
 }
 
 TEST_F(IndirectLookup, CoarseGridMostPixelsShareTheirCells) { expect_lookup_matches_the_host(glm::uvec3(8), 1); }
