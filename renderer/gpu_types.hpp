@@ -1,7 +1,10 @@
 // The C++ view of shaders/shared/gpu_types.h, with the layout checks that keep both sides equal.
 #pragma once
 
+#include "shaders/shared/geometry_volume_interface.h"
 #include "shaders/shared/gpu_types.h"
+#include "shaders/shared/lpv_inject_interface.h"
+#include "shaders/shared/lpv_propagate_interface.h"
 
 namespace gpu {
 static_assert(sizeof(GpuLight) == 80);
@@ -14,6 +17,13 @@ static_assert(sizeof(GpuLpvCascade) == 32);
 static_assert(sizeof(GpuLpv) == 192);
 static_assert(sizeof(GpuRsmView) == 96);
 static_assert(sizeof(mat4) == 64);
+// Push constants: plain 32-bit words, laid out alike by C++ and GLSL.
+static_assert(sizeof(LpvPropagatePush) == 12);
+static_assert(sizeof(LpvInjectPush) == 8);
+static_assert(sizeof(LpvInjectEmittersPush) == 12);
+static_assert(sizeof(GeometryInjectPush) == 20);
+static_assert(sizeof(GeometryCornersPush) == 8);
+static_assert(sizeof(GeometryResolvePush) == 4);
 // splat_group_point (lpv_splat.glsl) tiles 8x8 work groups with 4x2 blocks.
 static_assert(LPV_VPL_GROUP == 8);
 }  // namespace gpu

@@ -2,6 +2,7 @@
 // Geometry volume, step 2: each cell corner keeps the strongest of its sources (RSM, camera
 // or scene surfels, which may hold the same wall), as floats for the face pass.
 #extension GL_GOOGLE_include_directive : require
+#include "shared/geometry_volume_interface.h"
 #include "shared/gpu_types.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
@@ -9,12 +10,12 @@
 
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
-layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
+layout(std140, set = 0, binding = GEOMETRY_CORNERS_LPV) uniform Lpv { GpuLpv lpv; };
 // lpv_gv_corner_words(BOUNCES) sums per corner and slot, `slots` a corner (gpu_types.h), two a texel.
 // Written: LPV_GV_CORNER_TEXELS texels per corner.
-layout(set = 0, binding = 1, rgba32ui) uniform readonly uimageBuffer corner_sums;
-layout(std430, set = 0, binding = 2) writeonly buffer Corners { u64vec2 corners[]; };
-layout(push_constant) uniform Push { uint cascade; uint slots; } push;
+layout(set = 0, binding = GEOMETRY_CORNERS_SUMS, rgba32ui) uniform readonly uimageBuffer corner_sums;
+layout(std430, set = 0, binding = GEOMETRY_CORNERS_CORNERS) writeonly buffer Corners { u64vec2 corners[]; };
+layout(push_constant) uniform Push { GeometryCornersPush push; };
 // The blockers' albedo serves bounces only: without them its corners are neither read nor written.
 layout(constant_id = 0) const bool BOUNCES = true;
 

@@ -9,6 +9,7 @@
 // its own slot of sums, so the same wall held by two is not counted twice (the resolve takes
 // the strongest source per corner).
 #extension GL_GOOGLE_include_directive : require
+#include "shared/geometry_volume_interface.h"
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
@@ -16,19 +17,19 @@
 
 layout(local_size_x = LPV_VPL_GROUP, local_size_y = LPV_VPL_GROUP) in;
 
-layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(set = 0, binding = 1, rgba32f) uniform readonly image2DArray rsm_position;
-layout(set = 0, binding = 2, rgba32f) uniform readonly image2DArray rsm_normal;
-layout(set = 0, binding = 3, rgba32f) uniform readonly image2DArray rsm_flux;
+layout(std140, set = 0, binding = GEOMETRY_INJECT_LPV) uniform Lpv { GpuLpv lpv; };
+layout(set = 0, binding = GEOMETRY_INJECT_RSM_POSITION, rgba32f) uniform readonly image2DArray rsm_position;
+layout(set = 0, binding = GEOMETRY_INJECT_RSM_NORMAL, rgba32f) uniform readonly image2DArray rsm_normal;
+layout(set = 0, binding = GEOMETRY_INJECT_RSM_FLUX, rgba32f) uniform readonly image2DArray rsm_flux;
 // The camera's surfel G-buffer (FrameTargets::surfels): a texel per stride x stride pixels.
-layout(set = 0, binding = 4, rgba32f) uniform readonly image2D g_position;
-layout(set = 0, binding = 5, rgba16f) uniform readonly image2D g_normal;
-layout(set = 0, binding = 6, rgba16f) uniform readonly image2D g_albedo;
+layout(set = 0, binding = GEOMETRY_INJECT_CAMERA_POSITION, rgba32f) uniform readonly image2D g_position;
+layout(set = 0, binding = GEOMETRY_INJECT_CAMERA_NORMAL, rgba16f) uniform readonly image2D g_normal;
+layout(set = 0, binding = GEOMETRY_INJECT_CAMERA_ALBEDO, rgba16f) uniform readonly image2D g_albedo;
 // lpv_gv_corner_words per corner and slot, `slots` slots a corner.
-layout(std430, set = 0, binding = 7) buffer CornerSums { int64_t corner_sums[]; };
-layout(std430, set = 0, binding = 8) readonly buffer Blockers { GpuBlocker blockers[]; };
+layout(std430, set = 0, binding = GEOMETRY_INJECT_CORNER_SUMS) buffer CornerSums { int64_t corner_sums[]; };
+layout(std430, set = 0, binding = GEOMETRY_INJECT_BLOCKERS) readonly buffer Blockers { GpuBlocker blockers[]; };
 // The scene source: how many blockers, each invocation taking one (LPV_BLOCKER_GROUP a group).
-layout(push_constant) uniform Push { uint cascade; uint source; uint slot; uint slots; uint blocker_count; } push;
+layout(push_constant) uniform Push { GeometryInjectPush push; };
 
 // Surfels seen edge-on count at most this many times their projected area.
 const float MIN_AREA_COSINE = 0.25;

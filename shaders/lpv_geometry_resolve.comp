@@ -4,17 +4,18 @@
 // neighbouring cells reads the face they share. Also the blockers' mean albedo per face, for
 // the light they reflect.
 #extension GL_GOOGLE_include_directive : require
+#include "shared/geometry_volume_interface.h"
 #include "shared/gpu_types.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/texel_store.glsl"
 
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
-layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer corners;  // LPV_GV_CORNER_TEXELS per corner
-layout(std430, set = 0, binding = 2) writeonly buffer Faces { u64vec2 faces[]; };
-layout(std430, set = 0, binding = 3) writeonly buffer FaceAlbedo { u64vec2 face_albedo[]; };
-layout(push_constant) uniform Push { uint cascade; } push;
+layout(std140, set = 0, binding = GEOMETRY_RESOLVE_LPV) uniform Lpv { GpuLpv lpv; };
+layout(set = 0, binding = GEOMETRY_RESOLVE_CORNERS, rgba32f) uniform readonly imageBuffer corners;  // LPV_GV_CORNER_TEXELS per corner
+layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACES) writeonly buffer Faces { u64vec2 faces[]; };
+layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACE_ALBEDO) writeonly buffer FaceAlbedo { u64vec2 face_albedo[]; };
+layout(push_constant) uniform Push { GeometryResolvePush push; };
 // The blockers' albedo serves bounces only: without them its faces are not written.
 layout(constant_id = 0) const bool BOUNCES = true;
 

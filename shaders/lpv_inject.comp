@@ -3,19 +3,20 @@
 // is a virtual point light (shared/lpv_inject_vpl.glsl).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
+#include "shared/lpv_inject_interface.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
 
 layout(local_size_x = LPV_VPL_GROUP, local_size_y = LPV_VPL_GROUP) in;
 
-layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(set = 0, binding = 1, rgba32f) uniform readonly image2DArray rsm_position;
-layout(set = 0, binding = 2, rgba32f) uniform readonly image2DArray rsm_normal;
-layout(set = 0, binding = 3, rgba32f) uniform readonly image2DArray rsm_flux;
-layout(std430, set = 0, binding = 4) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
-layout(std430, set = 0, binding = 5) buffer FluxStats { int64_t flux_stats[]; };
-layout(push_constant) uniform Push { uint cascade; uint stats_record; } push;
+layout(std140, set = 0, binding = INJECT_LPV) uniform Lpv { GpuLpv lpv; };
+layout(set = 0, binding = INJECT_RSM_POSITION, rgba32f) uniform readonly image2DArray rsm_position;
+layout(set = 0, binding = INJECT_RSM_NORMAL, rgba32f) uniform readonly image2DArray rsm_normal;
+layout(set = 0, binding = INJECT_RSM_FLUX, rgba32f) uniform readonly image2DArray rsm_flux;
+layout(std430, set = 0, binding = INJECT_INJECTED) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
+layout(std430, set = 0, binding = INJECT_FLUX_STATS) buffer FluxStats { int64_t flux_stats[]; };
+layout(push_constant) uniform Push { LpvInjectPush push; };
 
 #include "shared/lpv_grid_flux.glsl"
 #include "shared/lpv_inject_vpl.glsl"

@@ -3,17 +3,18 @@
 // its emitted flux, added to the same fixed-point sums as the RSM's VPLs.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
+#include "shared/lpv_inject_interface.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
 
 layout(local_size_x = LPV_EMITTER_GROUP) in;
 
-layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(std430, set = 0, binding = 1) readonly buffer Emitters { GpuEmitter emitters[]; };
-layout(std430, set = 0, binding = 2) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
-layout(std430, set = 0, binding = 3) buffer FluxStats { int64_t flux_stats[]; };
-layout(push_constant) uniform Push { uint cascade; uint stats_record; uint count; } push;
+layout(std140, set = 0, binding = INJECT_EMITTERS_LPV) uniform Lpv { GpuLpv lpv; };
+layout(std430, set = 0, binding = INJECT_EMITTERS_EMITTERS) readonly buffer Emitters { GpuEmitter emitters[]; };
+layout(std430, set = 0, binding = INJECT_EMITTERS_INJECTED) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
+layout(std430, set = 0, binding = INJECT_EMITTERS_FLUX_STATS) buffer FluxStats { int64_t flux_stats[]; };
+layout(push_constant) uniform Push { LpvInjectEmittersPush push; };
 
 #include "shared/lpv_grid_flux.glsl"
 #include "shared/lpv_inject_vpl.glsl"

@@ -3,6 +3,7 @@
 // (and the first term of the accumulated light). Also sums the grid's flux for the statistics.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
+#include "shared/lpv_inject_interface.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
@@ -10,14 +11,14 @@
 
 layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
 
-layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-layout(set = 0, binding = 1, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
-layout(std430, set = 0, binding = 2) writeonly buffer Grids { u64vec2 grids[]; };
-layout(std430, set = 0, binding = 3) writeonly buffer AccumulatedR { u64vec2 accumulated_r[]; };
-layout(std430, set = 0, binding = 4) writeonly buffer AccumulatedG { u64vec2 accumulated_g[]; };
-layout(std430, set = 0, binding = 5) writeonly buffer AccumulatedB { u64vec2 accumulated_b[]; };
-layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
-layout(push_constant) uniform Push { uint cascade; uint stats_record; } push;
+layout(std140, set = 0, binding = INJECT_RESOLVE_LPV) uniform Lpv { GpuLpv lpv; };
+layout(set = 0, binding = INJECT_RESOLVE_INJECTED, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
+layout(std430, set = 0, binding = INJECT_RESOLVE_GRIDS) writeonly buffer Grids { u64vec2 grids[]; };
+layout(std430, set = 0, binding = INJECT_RESOLVE_ACCUMULATED_R) writeonly buffer AccumulatedR { u64vec2 accumulated_r[]; };
+layout(std430, set = 0, binding = INJECT_RESOLVE_ACCUMULATED_G) writeonly buffer AccumulatedG { u64vec2 accumulated_g[]; };
+layout(std430, set = 0, binding = INJECT_RESOLVE_ACCUMULATED_B) writeonly buffer AccumulatedB { u64vec2 accumulated_b[]; };
+layout(std430, set = 0, binding = INJECT_RESOLVE_FLUX_STATS) buffer FluxStats { int64_t flux_stats[]; };
+layout(push_constant) uniform Push { LpvInjectPush push; };
 
 #include "shared/lpv_grid_flux.glsl"
 

@@ -28,6 +28,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_shuffle : require
 #include "shared/gpu_types.h"
+#include "shared/lpv_propagate_interface.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/lpv_fixed_point.glsl"
@@ -35,21 +36,19 @@
 
 layout(local_size_x = LPV_PROPAGATE_GROUP, local_size_y = LPV_PROPAGATE_GROUP, local_size_z = 1) in;
 
-layout(std140, set = 0, binding = 0) uniform Lpv { GpuLpv lpv; };
-// The grids and the accumulated light are read as texel buffers and written as storage
-// buffers, views of the same memory (vkx::TexelBuffer and texel_store.glsl say why).
-layout(set = 0, binding = 1, rgba32f) uniform readonly imageBuffer grids;
-layout(set = 0, binding = 2, rgba32f) uniform readonly imageBuffer accumulated_r;
-layout(set = 0, binding = 3, rgba32f) uniform readonly imageBuffer accumulated_g;
-layout(set = 0, binding = 4, rgba32f) uniform readonly imageBuffer accumulated_b;
-layout(set = 0, binding = 5, rgba32f) uniform readonly imageBuffer faces;  // lpv_face_texel
-layout(set = 0, binding = 11, rgba32f) uniform readonly imageBuffer face_albedo;  // lpv_face_albedo_texel
-layout(std430, set = 0, binding = 6) buffer FluxStats { int64_t flux_stats[]; };
-layout(std430, set = 0, binding = 7) writeonly buffer GridStore { u64vec2 grid_store[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer AccumulatedR { u64vec2 accumulated_store_r[]; };
-layout(std430, set = 0, binding = 9) writeonly buffer AccumulatedG { u64vec2 accumulated_store_g[]; };
-layout(std430, set = 0, binding = 10) writeonly buffer AccumulatedB { u64vec2 accumulated_store_b[]; };
-layout(push_constant) uniform Push { uint cascade; uint stats_record; uint iteration; } push;
+layout(std140, set = 0, binding = PROPAGATE_LPV) uniform Lpv { GpuLpv lpv; };
+layout(set = 0, binding = PROPAGATE_GRIDS, rgba32f) uniform readonly imageBuffer grids;
+layout(set = 0, binding = PROPAGATE_ACCUMULATED_R, rgba32f) uniform readonly imageBuffer accumulated_r;
+layout(set = 0, binding = PROPAGATE_ACCUMULATED_G, rgba32f) uniform readonly imageBuffer accumulated_g;
+layout(set = 0, binding = PROPAGATE_ACCUMULATED_B, rgba32f) uniform readonly imageBuffer accumulated_b;
+layout(set = 0, binding = PROPAGATE_FACES, rgba32f) uniform readonly imageBuffer faces;  // lpv_face_texel
+layout(set = 0, binding = PROPAGATE_FACE_ALBEDO, rgba32f) uniform readonly imageBuffer face_albedo;  // lpv_face_albedo_texel
+layout(std430, set = 0, binding = PROPAGATE_FLUX_STATS) buffer FluxStats { int64_t flux_stats[]; };
+layout(std430, set = 0, binding = PROPAGATE_GRID_STORE) writeonly buffer GridStore { u64vec2 grid_store[]; };
+layout(std430, set = 0, binding = PROPAGATE_ACCUMULATED_STORE_R) writeonly buffer AccumulatedR { u64vec2 accumulated_store_r[]; };
+layout(std430, set = 0, binding = PROPAGATE_ACCUMULATED_STORE_G) writeonly buffer AccumulatedG { u64vec2 accumulated_store_g[]; };
+layout(std430, set = 0, binding = PROPAGATE_ACCUMULATED_STORE_B) writeonly buffer AccumulatedB { u64vec2 accumulated_store_b[]; };
+layout(push_constant) uniform Push { LpvPropagatePush push; };
 
 // The faces' blocking potentials apply (when the frame has a geometry volume; from the second
 // iteration on), and with them the light the blockers reflect (bounces: 2).

@@ -7,6 +7,7 @@
 // lavapipe, and a PNG frame writes no linear image at all.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
+#include "shared/shade_interface.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
 
@@ -28,23 +29,23 @@ layout(constant_id = 3) const uint LIGHT_COUNT = SHADE_LIGHTS_FROM_FRAME;
 layout(constant_id = 4) const uint OUTPUTS = SHADE_OUTPUT_LINEAR;  // SHADE_OUTPUT_* bits
 layout(constant_id = 5) const uint TONE_CURVE = TONEMAP_NONE;      // of the display image
 
-layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
-layout(set = 0, binding = 1, rgba32f) uniform readonly image2D g_position;
-layout(set = 0, binding = 2, rgba16f) uniform readonly image2D g_normal;
-layout(set = 0, binding = 3, rgba16f) uniform readonly image2D g_albedo;
-layout(set = 0, binding = 4) uniform sampler2DArrayShadow shadow_maps;
-layout(std430, set = 0, binding = 5) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, set = 0, binding = 6) readonly buffer ShadowViews { mat4 shadow_view_proj[]; };
-layout(std430, set = 0, binding = 7) readonly buffer Materials { GpuMaterial materials[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer Linear { vec4 linear_pixels[]; };
-layout(std140, set = 0, binding = 9) uniform Lpv { GpuLpv lpv; };
+layout(std140, set = 0, binding = SHADE_FRAME) uniform Frame { GpuFrame frame; };
+layout(set = 0, binding = SHADE_G_POSITION, rgba32f) uniform readonly image2D g_position;
+layout(set = 0, binding = SHADE_G_NORMAL, rgba16f) uniform readonly image2D g_normal;
+layout(set = 0, binding = SHADE_G_ALBEDO, rgba16f) uniform readonly image2D g_albedo;
+layout(set = 0, binding = SHADE_SHADOW_MAPS) uniform sampler2DArrayShadow shadow_maps;
+layout(std430, set = 0, binding = SHADE_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
+layout(std430, set = 0, binding = SHADE_SHADOW_VIEWS) readonly buffer ShadowViews { mat4 shadow_view_proj[]; };
+layout(std430, set = 0, binding = SHADE_MATERIALS) readonly buffer Materials { GpuMaterial materials[]; };
+layout(std430, set = 0, binding = SHADE_LINEAR) writeonly buffer Linear { vec4 linear_pixels[]; };
+layout(std140, set = 0, binding = SHADE_LPV) uniform Lpv { GpuLpv lpv; };
 // Read with imageLoad and filtered here: lavapipe's trilinear sampler lookups cost more than
 // the eight loads and weights written out (the pass took 19 ms at 512^2 with them, 17 without,
 // when this was changed).
-layout(set = 0, binding = 10, rgba32f) uniform readonly imageBuffer accumulated_r;
-layout(set = 0, binding = 11, rgba32f) uniform readonly imageBuffer accumulated_g;
-layout(set = 0, binding = 12, rgba32f) uniform readonly imageBuffer accumulated_b;
-layout(std430, set = 0, binding = 13) writeonly buffer Display { uint display_pixels[]; };
+layout(set = 0, binding = SHADE_ACCUMULATED_R, rgba32f) uniform readonly imageBuffer accumulated_r;
+layout(set = 0, binding = SHADE_ACCUMULATED_G, rgba32f) uniform readonly imageBuffer accumulated_g;
+layout(set = 0, binding = SHADE_ACCUMULATED_B, rgba32f) uniform readonly imageBuffer accumulated_b;
+layout(std430, set = 0, binding = SHADE_DISPLAY) writeonly buffer Display { uint display_pixels[]; };
 #include "shared/direct_light.glsl"
 #include "shared/display_encode.glsl"
 #include "shared/lpv_irradiance.glsl"

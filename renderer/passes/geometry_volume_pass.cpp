@@ -2,6 +2,7 @@
 
 #include "api/counted.hpp"
 #include "renderer/gpu_types.hpp"
+#include "shaders/shared/geometry_volume_interface.h"
 #include "shaders/lpv_geometry_corners.comp.h"
 #include "shaders/lpv_geometry_inject.comp.h"
 #include "shaders/lpv_geometry_resolve.comp.h"
@@ -10,22 +11,6 @@
 #include <vector>
 
 namespace renderer {
-namespace {
-
-struct SourceConstants {
-  std::uint32_t cascade;
-  std::uint32_t source;
-  std::uint32_t slot;
-  std::uint32_t slots;
-  std::uint32_t blocker_count;
-};
-
-struct CornerConstants {
-  std::uint32_t cascade;
-  std::uint32_t slots;
-};
-
-}  // namespace
 
 GeometrySources geometry_sources(const api::Lpv& lpv, bool rsm_drawn) {
   GeometrySources s;
@@ -52,10 +37,25 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
   const VkDescriptorType buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
-  inject_layout_ =
-      vkx::compute_layout({uniform, image, image, image, image, image, image, buffer, buffer}, sizeof(SourceConstants));
-  corners_layout_ = vkx::compute_layout({uniform, texels, buffer}, sizeof(CornerConstants));
-  resolve_layout_ = vkx::compute_layout({uniform, texels, buffer, buffer}, sizeof(std::uint32_t));
+  inject_layout_ = vkx::compute_layout({{gpu::GEOMETRY_INJECT_LPV, uniform},
+                                        {gpu::GEOMETRY_INJECT_RSM_POSITION, image},
+                                        {gpu::GEOMETRY_INJECT_RSM_NORMAL, image},
+                                        {gpu::GEOMETRY_INJECT_RSM_FLUX, image},
+                                        {gpu::GEOMETRY_INJECT_CAMERA_POSITION, image},
+                                        {gpu::GEOMETRY_INJECT_CAMERA_NORMAL, image},
+                                        {gpu::GEOMETRY_INJECT_CAMERA_ALBEDO, image},
+                                        {gpu::GEOMETRY_INJECT_CORNER_SUMS, buffer},
+                                        {gpu::GEOMETRY_INJECT_BLOCKERS, buffer}},
+                                       sizeof(gpu::GeometryInjectPush));
+  corners_layout_ = vkx::compute_layout({{gpu::GEOMETRY_CORNERS_LPV, uniform},
+                                         {gpu::GEOMETRY_CORNERS_SUMS, texels},
+                                         {gpu::GEOMETRY_CORNERS_CORNERS, buffer}},
+                                        sizeof(gpu::GeometryCornersPush));
+  resolve_layout_ = vkx::compute_layout({{gpu::GEOMETRY_RESOLVE_LPV, uniform},
+                                         {gpu::GEOMETRY_RESOLVE_CORNERS, texels},
+                                         {gpu::GEOMETRY_RESOLVE_FACES, buffer},
+                                         {gpu::GEOMETRY_RESOLVE_FACE_ALBEDO, buffer}},
+                                        sizeof(gpu::GeometryResolvePush));
 }
 
 void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
@@ -70,15 +70,15 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
                          std::array<std::uint32_t, 2>{trilinear, with_albedo[0]});
   });
   vkx::DescriptorWriter(inject.descriptor_set())
-      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .image(1, image, maps.position.view(), general)
-      .image(2, image, maps.normal.view(), general)
-      .image(3, image, maps.flux.view(), general)
-      .image(4, image, camera.position.view(), general)
-      .image(5, image, camera.normal.view(), general)
-      .image(6, image, camera.albedo.view(), general)
-      .buffer(7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.buffer().handle())
-      .buffer(8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.blockers.handle())
+      .buffer(gpu::GEOMETRY_INJECT_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .image(gpu::GEOMETRY_INJECT_RSM_POSITION, image, maps.position.view(), general)
+      .image(gpu::GEOMETRY_INJECT_RSM_NORMAL, image, maps.normal.view(), general)
+      .image(gpu::GEOMETRY_INJECT_RSM_FLUX, image, maps.flux.view(), general)
+      .image(gpu::GEOMETRY_INJECT_CAMERA_POSITION, image, camera.position.view(), general)
+      .image(gpu::GEOMETRY_INJECT_CAMERA_NORMAL, image, camera.normal.view(), general)
+      .image(gpu::GEOMETRY_INJECT_CAMERA_ALBEDO, image, camera.albedo.view(), general)
+      .buffer(gpu::GEOMETRY_INJECT_CORNER_SUMS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corner_sums.buffer().handle())
+      .buffer(gpu::GEOMETRY_INJECT_BLOCKERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, scene.blockers.handle())
       .apply(device_.handle());
   const vkx::Pipeline& corners = corners_.get(with_albedo[0], [&] {
     return vkx::Pipeline(device_, corners_layout_, spirv_lpv_geometry_corners_comp, with_albedo);
@@ -87,15 +87,15 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
     return vkx::Pipeline(device_, resolve_layout_, spirv_lpv_geometry_resolve_comp, with_albedo);
   });
   vkx::DescriptorWriter(corners.descriptor_set())
-      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .texel_buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.corner_sums.view())
-      .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corners.buffer().handle())
+      .buffer(gpu::GEOMETRY_CORNERS_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .texel_buffer(gpu::GEOMETRY_CORNERS_SUMS, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.corner_sums.view())
+      .buffer(gpu::GEOMETRY_CORNERS_CORNERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.corners.buffer().handle())
       .apply(device_.handle());
   vkx::DescriptorWriter(resolve.descriptor_set())
-      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .texel_buffer(1, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.corners.view())
-      .buffer(2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.buffer().handle())
-      .buffer(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.face_albedo.buffer().handle())
+      .buffer(gpu::GEOMETRY_RESOLVE_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .texel_buffer(gpu::GEOMETRY_RESOLVE_CORNERS, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.corners.view())
+      .buffer(gpu::GEOMETRY_RESOLVE_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.buffer().handle())
+      .buffer(gpu::GEOMETRY_RESOLVE_FACE_ALBEDO, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.face_albedo.buffer().handle())
       .apply(device_.handle());
 
   const std::uint32_t slots = sources.slots();
@@ -104,29 +104,29 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   inject.bind(cmd);
   if (sources.rsm) {
-    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_RSM, sources.slot(gpu::LPV_GV_SOURCE_RSM), slots, 0});
+    inject.push(cmd, gpu::GeometryInjectPush{cascade, gpu::LPV_GV_SOURCE_RSM, sources.slot(gpu::LPV_GV_SOURCE_RSM), slots, 0});
     const std::uint32_t side = vkx::group_count(maps.resolution, sources.rsm_stride);
     vkCmdDispatch(cmd, vkx::group_count(side, gpu::LPV_VPL_GROUP), vkx::group_count(side, gpu::LPV_VPL_GROUP), maps.layers);
   }
   if (sources.camera) {
-    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_CAMERA, sources.slot(gpu::LPV_GV_SOURCE_CAMERA),
-                                     slots, 0});
+    inject.push(cmd, gpu::GeometryInjectPush{cascade, gpu::LPV_GV_SOURCE_CAMERA,
+                                             sources.slot(gpu::LPV_GV_SOURCE_CAMERA), slots, 0});
     vkCmdDispatch(cmd, vkx::group_count(camera.width, gpu::LPV_VPL_GROUP),
                   vkx::group_count(camera.height, gpu::LPV_VPL_GROUP), 1);
   }
   if (sources.scene && scene.blocker_count) {
-    inject.push(cmd, SourceConstants{cascade, gpu::LPV_GV_SOURCE_SCENE, sources.slot(gpu::LPV_GV_SOURCE_SCENE), slots,
-                                     scene.blocker_count});
+    inject.push(cmd, gpu::GeometryInjectPush{cascade, gpu::LPV_GV_SOURCE_SCENE,
+                                             sources.slot(gpu::LPV_GV_SOURCE_SCENE), slots, scene.blocker_count});
     vkCmdDispatch(cmd, vkx::group_count(scene.blocker_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
   }
   vkx::compute_barrier(cmd);
   const glm::uvec3 d = volumes.dims;
   corners.bind(cmd);
-  corners.push(cmd, CornerConstants{cascade, slots});
+  corners.push(cmd, gpu::GeometryCornersPush{cascade, slots});
   vkCmdDispatch(cmd, vkx::group_count(d.x + 1, gpu::LPV_GROUP), vkx::group_count(d.y + 1, gpu::LPV_GROUP), vkx::group_count(d.z + 1, gpu::LPV_GROUP));
   vkx::compute_barrier(cmd);
   resolve.bind(cmd);
-  resolve.push(cmd, cascade);
+  resolve.push(cmd, gpu::GeometryResolvePush{cascade});
   vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), vkx::group_count(d.z, gpu::LPV_GROUP));
   vkx::compute_barrier(cmd);
 }

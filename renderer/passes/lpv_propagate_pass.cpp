@@ -1,18 +1,13 @@
 #include "renderer/passes/lpv_propagate_pass.hpp"
 
 #include "renderer/gpu_types.hpp"
+#include "shaders/shared/lpv_propagate_interface.h"
 #include "shaders/lpv_propagate.comp.h"
 
 #include <array>
 
 namespace renderer {
 namespace {
-
-struct IterationConstants {
-  std::uint32_t cascade;
-  std::uint32_t stats_record;
-  std::uint32_t iteration;  // 1-based
-};
 
 // The cells an invocation walks along z. On lavapipe each invocation is a SIMD lane of a
 // CPU thread, and a long column reuses the cells and the face it read for the next step
@@ -32,9 +27,19 @@ LpvPropagatePass::LpvPropagatePass(const vkx::Device& device, std::uint32_t colu
     : device_(device), column_length_(column_length ? column_length : device_column_length(device)) {
   const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  layout_ = vkx::compute_layout({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, texels, texels, texels, texels, texels, storage,
-                                 storage, storage, storage, storage, texels},
-                                sizeof(IterationConstants));
+  layout_ = vkx::compute_layout({{gpu::PROPAGATE_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                 {gpu::PROPAGATE_GRIDS, texels},
+                                 {gpu::PROPAGATE_ACCUMULATED_R, texels},
+                                 {gpu::PROPAGATE_ACCUMULATED_G, texels},
+                                 {gpu::PROPAGATE_ACCUMULATED_B, texels},
+                                 {gpu::PROPAGATE_FACES, texels},
+                                 {gpu::PROPAGATE_FLUX_STATS, storage},
+                                 {gpu::PROPAGATE_GRID_STORE, storage},
+                                 {gpu::PROPAGATE_ACCUMULATED_STORE_R, storage},
+                                 {gpu::PROPAGATE_ACCUMULATED_STORE_G, storage},
+                                 {gpu::PROPAGATE_ACCUMULATED_STORE_B, storage},
+                                 {gpu::PROPAGATE_FACE_ALBEDO, texels}},
+                                sizeof(gpu::LpvPropagatePush));
 }
 
 const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& params, const LpvVolumes& volumes) const {
@@ -46,18 +51,18 @@ const vkx::Pipeline& LpvPropagatePass::variant(Variant v, const vkx::Buffer& par
   const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   vkx::DescriptorWriter(p.descriptor_set())
-      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .texel_buffer(1, texels, volumes.grids.view())
-      .texel_buffer(2, texels, volumes.accumulated[0].view())
-      .texel_buffer(3, texels, volumes.accumulated[1].view())
-      .texel_buffer(4, texels, volumes.accumulated[2].view())
-      .texel_buffer(5, texels, volumes.faces.view())
-      .buffer(6, storage, volumes.flux_stats.handle())
-      .buffer(7, storage, volumes.grids.buffer().handle())
-      .buffer(8, storage, volumes.accumulated[0].buffer().handle())
-      .buffer(9, storage, volumes.accumulated[1].buffer().handle())
-      .buffer(10, storage, volumes.accumulated[2].buffer().handle())
-      .texel_buffer(11, texels, volumes.face_albedo.view())
+      .buffer(gpu::PROPAGATE_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
+      .texel_buffer(gpu::PROPAGATE_GRIDS, texels, volumes.grids.view())
+      .texel_buffer(gpu::PROPAGATE_ACCUMULATED_R, texels, volumes.accumulated[0].view())
+      .texel_buffer(gpu::PROPAGATE_ACCUMULATED_G, texels, volumes.accumulated[1].view())
+      .texel_buffer(gpu::PROPAGATE_ACCUMULATED_B, texels, volumes.accumulated[2].view())
+      .texel_buffer(gpu::PROPAGATE_FACES, texels, volumes.faces.view())
+      .buffer(gpu::PROPAGATE_FLUX_STATS, storage, volumes.flux_stats.handle())
+      .buffer(gpu::PROPAGATE_GRID_STORE, storage, volumes.grids.buffer().handle())
+      .buffer(gpu::PROPAGATE_ACCUMULATED_STORE_R, storage, volumes.accumulated[0].buffer().handle())
+      .buffer(gpu::PROPAGATE_ACCUMULATED_STORE_G, storage, volumes.accumulated[1].buffer().handle())
+      .buffer(gpu::PROPAGATE_ACCUMULATED_STORE_B, storage, volumes.accumulated[2].buffer().handle())
+      .texel_buffer(gpu::PROPAGATE_FACE_ALBEDO, texels, volumes.face_albedo.view())
       .apply(device_.handle());
   return p;
 }
@@ -70,7 +75,7 @@ void LpvPropagatePass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::u
   pipeline.bind(cmd);
   const glm::uvec3 d = volumes.dims;
   for (std::uint32_t k = first; k < first + count; ++k) {
-    pipeline.push(cmd, IterationConstants{cascade, volumes.grid_flux_record(cascade, k), k});
+    pipeline.push(cmd, gpu::LpvPropagatePush{cascade, volumes.grid_flux_record(cascade, k), k});
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_PROPAGATE_GROUP), vkx::group_count(d.y, gpu::LPV_PROPAGATE_GROUP),
                   vkx::group_count(d.z, column_length_));
     vkx::compute_barrier(cmd);

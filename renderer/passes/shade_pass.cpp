@@ -3,6 +3,7 @@
 #include "renderer/gpu_types.hpp"
 #include "renderer/passes/display_encoding.hpp"
 #include "shaders/shade.comp.h"
+#include "shaders/shared/shade_interface.h"
 
 namespace renderer {
 
@@ -12,8 +13,20 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
-  layout_ = vkx::compute_layout(
-      {uniform, image, image, image, sampled, buffer, buffer, buffer, buffer, uniform, texels, texels, texels, buffer});
+  layout_ = vkx::compute_layout({{gpu::SHADE_FRAME, uniform},
+                                 {gpu::SHADE_G_POSITION, image},
+                                 {gpu::SHADE_G_NORMAL, image},
+                                 {gpu::SHADE_G_ALBEDO, image},
+                                 {gpu::SHADE_SHADOW_MAPS, sampled},
+                                 {gpu::SHADE_LIGHTS, buffer},
+                                 {gpu::SHADE_SHADOW_VIEWS, buffer},
+                                 {gpu::SHADE_MATERIALS, buffer},
+                                 {gpu::SHADE_LINEAR, buffer},
+                                 {gpu::SHADE_LPV, uniform},
+                                 {gpu::SHADE_ACCUMULATED_R, texels},
+                                 {gpu::SHADE_ACCUMULATED_G, texels},
+                                 {gpu::SHADE_ACCUMULATED_B, texels},
+                                 {gpu::SHADE_DISPLAY, buffer}});
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
 }
 
@@ -39,17 +52,18 @@ void ShadePass::record(VkCommandBuffer cmd, const GpuScene& scene, const FrameTa
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const vkx::Pipeline& pipeline = variant(in);
   vkx::DescriptorWriter writer(pipeline.descriptor_set());
-  bind_indirect_light(writer, 9, in.indirect)
-      .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.direct.frame.handle())
-      .image(1, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.position.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(3, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.albedo.view(), VK_IMAGE_LAYOUT_GENERAL)
-      .image(4, sampled, in.direct.atlas.depth.view(), read, shadow_sampler_.handle())
-      .buffer(5, storage, in.direct.lights.handle())
-      .buffer(6, storage, in.direct.shadow_views.handle())
-      .buffer(7, storage, scene.materials.handle())
-      .buffer(8, storage, targets.linear.handle())
-      .buffer(13, storage, targets.display.handle())
+  bind_indirect_light(writer, gpu::SHADE_LPV, in.indirect)
+      .buffer(gpu::SHADE_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, in.direct.frame.handle())
+      .image(gpu::SHADE_G_POSITION, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.position.view(),
+             VK_IMAGE_LAYOUT_GENERAL)
+      .image(gpu::SHADE_G_NORMAL, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.normal.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(gpu::SHADE_G_ALBEDO, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, targets.camera.albedo.view(), VK_IMAGE_LAYOUT_GENERAL)
+      .image(gpu::SHADE_SHADOW_MAPS, sampled, in.direct.atlas.depth.view(), read, shadow_sampler_.handle())
+      .buffer(gpu::SHADE_LIGHTS, storage, in.direct.lights.handle())
+      .buffer(gpu::SHADE_SHADOW_VIEWS, storage, in.direct.shadow_views.handle())
+      .buffer(gpu::SHADE_MATERIALS, storage, scene.materials.handle())
+      .buffer(gpu::SHADE_LINEAR, storage, targets.linear.handle())
+      .buffer(gpu::SHADE_DISPLAY, storage, targets.display.handle())
       .apply(device_.handle());
 
   pipeline.bind(cmd);

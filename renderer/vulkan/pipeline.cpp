@@ -254,10 +254,10 @@ void DescriptorWriter::apply(VkDevice device) {
   vkUpdateDescriptorSets(device, static_cast<std::uint32_t>(writes.size()), writes.data(), 0, nullptr);
 }
 
-PipelineLayoutDesc compute_layout(std::initializer_list<VkDescriptorType> types, std::uint32_t push_constant_bytes) {
+PipelineLayoutDesc compute_layout(std::initializer_list<std::pair<std::uint32_t, VkDescriptorType>> bindings,
+                                  std::uint32_t push_constant_bytes) {
   PipelineLayoutDesc desc;
-  std::uint32_t index = 0;
-  for (VkDescriptorType type : types) desc.bindings.push_back(binding(index++, type, VK_SHADER_STAGE_COMPUTE_BIT));
+  for (const auto& [index, type] : bindings) desc.bindings.push_back(binding(index, type, VK_SHADER_STAGE_COMPUTE_BIT));
   desc.push_constant_bytes = push_constant_bytes;
   desc.push_constant_stages = push_constant_bytes ? VK_SHADER_STAGE_COMPUTE_BIT : 0;
   return desc;

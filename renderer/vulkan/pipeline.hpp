@@ -116,9 +116,10 @@ class DescriptorWriter {
   std::vector<Kind> kinds_;
 };
 
-// The layout of a compute pipeline: binding i has descriptor type types[i]; push constants
-// of `push_constant_bytes` (0: none).
-PipelineLayoutDesc compute_layout(std::initializer_list<VkDescriptorType> types,
+// The layout of a compute pipeline: each binding number with its descriptor type (the
+// numbers a pass's interface header names, shaders/shared/*_interface.h); push constants of
+// `push_constant_bytes` (0: none).
+PipelineLayoutDesc compute_layout(std::initializer_list<std::pair<std::uint32_t, VkDescriptorType>> bindings,
                                   std::uint32_t push_constant_bytes = 0);
 
 // Work groups of `size` invocations that cover `n` items.
