@@ -7,6 +7,7 @@
 // the lighting in about a third of the time the compute shading takes, and the frame writes
 // one 4-byte target instead of the G-buffer's 32 bytes a pixel and reads none of it back.
 #extension GL_GOOGLE_include_directive : require
+#include "shared/camera_raster_interface.h"
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_grid.glsl"
@@ -17,17 +18,17 @@ layout(constant_id = 3) const uint LIGHT_COUNT = SHADE_LIGHTS_FROM_FRAME;
 layout(constant_id = 4) const uint TONE_CURVE = TONEMAP_NONE;
 layout(constant_id = 5) const uint CASCADES = 0u;  // of indirect light; 0: none
 
-layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
-layout(set = 0, binding = 1) uniform sampler2DArrayShadow shadow_maps;
+layout(std140, set = 0, binding = CAMERA_FRAME) uniform Frame { GpuFrame frame; };
+layout(set = 0, binding = FORWARD_SHADOW_MAPS) uniform sampler2DArrayShadow shadow_maps;
 // Uniform buffers, not storage buffers: lavapipe loads a fragment shader's storage buffer lane
 // by lane even at an address all lanes share, a uniform buffer once (the pass 5.8 -> 5.1 ms
 // at 512^2). The buffers are sized for the most lights and views a frame may have.
-layout(std140, set = 0, binding = 2) uniform Lights { GpuLight lights[SHADE_MAX_LIGHTS]; };
-layout(std140, set = 0, binding = 3) uniform ShadowViews { mat4 shadow_view_proj[SHADE_MAX_SHADOW_VIEWS]; };
-layout(std140, set = 0, binding = 4) uniform Lpv { GpuLpv lpv; };
-layout(set = 0, binding = 5, rgba32f) uniform readonly imageBuffer accumulated_r;
-layout(set = 0, binding = 6, rgba32f) uniform readonly imageBuffer accumulated_g;
-layout(set = 0, binding = 7, rgba32f) uniform readonly imageBuffer accumulated_b;
+layout(std140, set = 0, binding = FORWARD_LIGHTS) uniform Lights { GpuLight lights[SHADE_MAX_LIGHTS]; };
+layout(std140, set = 0, binding = FORWARD_SHADOW_VIEWS) uniform ShadowViews { mat4 shadow_view_proj[SHADE_MAX_SHADOW_VIEWS]; };
+layout(std140, set = 0, binding = FORWARD_LPV) uniform Lpv { GpuLpv lpv; };
+layout(set = 0, binding = FORWARD_ACCUMULATED_R, rgba32f) uniform readonly imageBuffer accumulated_r;
+layout(set = 0, binding = FORWARD_ACCUMULATED_G, rgba32f) uniform readonly imageBuffer accumulated_g;
+layout(set = 0, binding = FORWARD_ACCUMULATED_B, rgba32f) uniform readonly imageBuffer accumulated_b;
 #include "shared/direct_light.glsl"
 #include "shared/lpv_irradiance.glsl"
 #include "shared/display_encode.glsl"

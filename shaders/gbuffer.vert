@@ -1,13 +1,14 @@
 #version 450
 // G-buffer: world-space position, normal and material of the closest surface per pixel.
 #extension GL_GOOGLE_include_directive : require
+#include "shared/camera_raster_interface.h"
 #include "shared/gpu_types.h"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 
-layout(std140, set = 0, binding = 0) uniform Frame { GpuFrame frame; };
+layout(std140, set = 0, binding = CAMERA_FRAME) uniform Frame { GpuFrame frame; };
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;

@@ -4,6 +4,7 @@
 #include "renderer/vulkan/rendering.hpp"
 #include "shaders/forward.frag.h"
 #include "shaders/gbuffer.vert.h"
+#include "shaders/shared/camera_raster_interface.h"
 
 #include <array>
 
@@ -14,14 +15,14 @@ static_assert(gpu::SHADE_MAX_LIGHTS == api::limits::max_lights, "the forward pas
 ForwardPass::ForwardPass(const vkx::Device& device, const TextureSetLayout& textures) : device_(device) {
   const VkShaderStageFlags fragment = VK_SHADER_STAGE_FRAGMENT_BIT;
   layout_.bindings = {
-      vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | fragment),
-      vkx::binding(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),  // shadow maps
-      vkx::binding(2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),          // lights
-      vkx::binding(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),          // shadow views
-      vkx::binding(4, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),          // LPV
-      vkx::binding(5, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),    // accumulated SH: red,
-      vkx::binding(6, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),    // green
-      vkx::binding(7, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment)};   // and blue
+      vkx::binding(gpu::CAMERA_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | fragment),
+      vkx::binding(gpu::FORWARD_SHADOW_MAPS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, fragment),
+      vkx::binding(gpu::FORWARD_LIGHTS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),
+      vkx::binding(gpu::FORWARD_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),
+      vkx::binding(gpu::FORWARD_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),
+      vkx::binding(gpu::FORWARD_ACCUMULATED_R, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),
+      vkx::binding(gpu::FORWARD_ACCUMULATED_G, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),
+      vkx::binding(gpu::FORWARD_ACCUMULATED_B, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment)};
   layout_.draw_sets = {textures.handle()};
   layout_.push_constant_bytes = sizeof(gpu::GpuDrawMaterial);
   layout_.push_constant_stages = fragment;
@@ -58,12 +59,12 @@ void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
   };
   for (MaterialVariant variant : scene.variants_in_use) {  // before any is bound
     vkx::DescriptorWriter writer(pipeline_for(variant).descriptor_set());
-    bind_indirect_light(writer, 4, indirect)
-        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.frame.handle())
-        .image(1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, direct.atlas.depth.view(),
+    bind_indirect_light(writer, gpu::FORWARD_LPV, indirect)
+        .buffer(gpu::CAMERA_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.frame.handle())
+        .image(gpu::FORWARD_SHADOW_MAPS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, direct.atlas.depth.view(),
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, shadow_sampler_.handle())
-        .buffer(2, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.lights.handle())
-        .buffer(3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.shadow_views.handle())
+        .buffer(gpu::FORWARD_LIGHTS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.lights.handle())
+        .buffer(gpu::FORWARD_SHADOW_VIEWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, direct.shadow_views.handle())
         .apply(device_.handle());
   }
   const std::array<const vkx::Image*, 1> colors{&targets.display_target};

@@ -3,6 +3,7 @@
 #include "renderer/vulkan/rendering.hpp"
 #include "shaders/gbuffer.frag.h"
 #include "shaders/gbuffer.vert.h"
+#include "shaders/shared/camera_raster_interface.h"
 
 #include <array>
 
@@ -12,7 +13,7 @@ namespace {
 
 vkx::PipelineLayoutDesc gbuffer_layout(const TextureSetLayout& textures) {
   vkx::PipelineLayoutDesc layout;
-  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)};
+  layout.bindings = {vkx::binding(gpu::CAMERA_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT)};
   layout.draw_sets = {textures.handle()};
   layout.push_constant_bytes = sizeof(gpu::GpuDrawMaterial);
   layout.push_constant_stages = VK_SHADER_STAGE_FRAGMENT_BIT;
@@ -45,7 +46,7 @@ void GBufferPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
                          const GBuffer& target, const vkx::Buffer& frame) const {
   for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
     vkx::DescriptorWriter(pipelines_.get(variant).descriptor_set())
-        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.handle())
+        .buffer(gpu::CAMERA_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frame.handle())
         .apply(device_.handle());
   const std::array<const vkx::Image*, 3> colors{&target.position, &target.normal, &target.albedo};
   vkx::prepare_attachments(cmd, colors, &target.depth);
