@@ -1,10 +1,11 @@
 #include "server/server_options.hpp"
 
+#include "core/command_line.hpp"
+
 #include "server/access.hpp"
 
 #include <algorithm>
 #include <charconv>
-#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -132,10 +133,15 @@ const std::vector<Setting>& settings() {
   return table;
 }
 
-const Setting* find_setting(std::string_view flag) {
-  for (const Setting& s : settings())
-    if (s.flag == flag) return &s;
-  return nullptr;
+// The settings as the command-line walk finds them (core/command_line.hpp), in the same
+// order: a found option's index in this table is its setting's.
+const std::vector<core::OptionSpec<ServerOptions>>& option_specs() {
+  static const std::vector<core::OptionSpec<ServerOptions>> specs = [] {
+    std::vector<core::OptionSpec<ServerOptions>> s;
+    for (const Setting& setting : settings()) s.push_back({setting.flag, "", setting.takes_value, {}});
+    return s;
+  }();
+  return specs;
 }
 
 }  // namespace
@@ -219,27 +225,23 @@ ServerOptions parse_server_options(int argc, const char* const* argv, const Envi
     const std::string name = s.environment_name();
     if (const char* value = environment(name.c_str())) s.apply(options, name, value);
   }
-  for (int i = 1; i < argc; ++i) {
-    std::string_view arg = argv[i];
-    if (arg == "-h" || arg == "--help") {
+  std::vector<core::CommandLineItem<ServerOptions>> items;
+  try {
+    items = core::walk_command_line(argc, argv, option_specs());
+  } catch (const core::CommandLineError& e) {
+    throw OptionsError(e.what());
+  }
+  for (const auto& item : items) {
+    using Kind = core::CommandLineItem<ServerOptions>::Kind;
+    if (item.kind == Kind::help) {
       options.help = true;
-      continue;
-    }
-    // Both "--port 80" and "--port=80".
-    std::optional<std::string_view> inline_value;
-    if (const auto eq = arg.find('='); arg.starts_with("--") && eq != std::string_view::npos) {
-      inline_value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-    }
-    const Setting* setting = find_setting(arg);
-    if (!setting) throw OptionsError("unknown option " + std::string(argv[i]));
-    if (!setting->takes_value) {
-      setting->apply(options, arg, inline_value.value_or("1"));
-    } else if (inline_value) {
-      setting->apply(options, arg, *inline_value);
+    } else if (item.kind == Kind::word) {
+      throw OptionsError("unexpected argument " + item.value + ": lpv-server takes options only");
     } else {
-      if (i + 1 >= argc) throw OptionsError("option " + std::string(arg) + " needs a value");
-      setting->apply(options, arg, argv[++i]);
+      const Setting& setting = settings()[std::size_t(item.option - option_specs().data())];
+      // A switch given alone is on; "--insecure=0" says otherwise.
+      const bool bare_switch = !setting.takes_value && item.value.empty();
+      setting.apply(options, item.name, bare_switch ? std::string_view("1") : std::string_view(item.value));
     }
   }
   if (!options.help && options.token.empty() && !options.insecure && !is_loopback_host(options.host))

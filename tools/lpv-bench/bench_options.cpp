@@ -1,5 +1,7 @@
 #include "bench_options.hpp"
 
+#include "core/command_line.hpp"
+
 #include <charconv>
 #include <functional>
 #include <sstream>
@@ -180,6 +182,17 @@ const std::vector<Flag>& flags() {
   return table;
 }
 
+// The flags as the command-line walk finds them (core/command_line.hpp), in the same order:
+// a found option's index in this table is its flag's.
+const std::vector<core::OptionSpec<Options>>& option_specs() {
+  static const std::vector<core::OptionSpec<Options>> specs = [] {
+    std::vector<core::OptionSpec<Options>> s;
+    for (const Flag& f : flags()) s.push_back({f.name, f.alias, f.takes_value, {}});
+    return s;
+  }();
+  return specs;
+}
+
 Command command_named(const std::string& name) {
   for (const Command c : {Command::sweep, Command::diff, Command::run, Command::compare, Command::ab, Command::worker})
     if (name == name_of(c)) return c;
@@ -213,24 +226,24 @@ Options parse(int argc, char** argv) {
   std::optional<Command> command;
   // Options are checked against the command once it is known (it may come after them).
   std::vector<std::pair<const Flag*, std::string>> given;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help") {
+  std::vector<core::CommandLineItem<Options>> items;
+  try {
+    items = core::walk_command_line(argc, argv, option_specs());
+  } catch (const core::CommandLineError& e) {
+    throw UsageError(e.what());
+  }
+  for (const auto& item : items) {
+    using Kind = core::CommandLineItem<Options>::Kind;
+    if (item.kind == Kind::help) {
       o.help = true;
       return o;
     }
-    if (arg.size() > 1 && arg[0] == '-') {
-      const Flag* flag = nullptr;
-      for (const Flag& f : flags())
-        if (arg == f.name || (!f.alias.empty() && arg == f.alias)) flag = &f;
-      if (!flag) throw UsageError("unknown option '" + arg + "'");
-      if (flag->takes_value && i + 1 >= argc) throw UsageError("option " + arg + " needs a value");
-      given.emplace_back(flag, flag->takes_value ? argv[++i] : "");
-    } else if (!command) {
-      command = command_named(arg);
-    } else {
-      o.inputs.push_back(arg);
-    }
+    if (item.kind == Kind::option)
+      given.emplace_back(&flags()[std::size_t(item.option - option_specs().data())], item.value);
+    else if (!command)
+      command = command_named(item.value);
+    else
+      o.inputs.push_back(item.value);
   }
   if (!command) throw UsageError("missing the command (sweep, diff, run, compare, ab or worker)");
   o.command = *command;

@@ -1,8 +1,11 @@
 #include "cli_options.hpp"
 
+#include "core/command_line.hpp"
+
 #include <cctype>
 #include <charconv>
 #include <string_view>
+#include <vector>
 
 namespace cli {
 
@@ -54,54 +57,59 @@ bool names_scene_file(const std::string& value) {
   return ends_with(".gltf") || ends_with(".glb") || value.find('/') != std::string::npos;
 }
 
+namespace {
+
+using S = std::string_view;
+
+const std::vector<core::OptionSpec<Options>>& option_table() {
+  static const std::vector<core::OptionSpec<Options>> table = {
+      {"--output", "-o", true, [](Options& o, S, S v) { o.output_file = std::string(v); }},
+      {"--stats", "", true, [](Options& o, S, S v) { o.stats_file = std::string(v); }},
+      {"--scene", "", true,
+       [](Options& o, S, S v) {
+         if (o.scene || o.scene_file) throw UsageError("--scene given more than once");
+         if (names_scene_file(std::string(v)))
+           o.scene_file = std::string(v);
+         else
+           o.scene = std::string(v);
+       }},
+      {"--device", "", true, [](Options& o, S, S v) { o.device = std::string(v); }},
+      {"--propagate-column", "", true,
+       [](Options& o, S, S v) {
+         unsigned n = 0;
+         const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
+         if (ec != std::errc() || end != v.data() + v.size() || n < 1 || n > 64)
+           throw UsageError("--propagate-column takes a whole number from 1 to 64, not '" + std::string(v) + "'");
+         o.propagate_column = n;
+       }},
+      {"--validation", "", false, [](Options& o, S, S) { o.validation = true; }},
+      {"--list-devices", "", false, [](Options& o, S, S) { o.list_devices = true; }},
+      {"--list-scenes", "", false, [](Options& o, S, S) { o.list_scenes = true; }},
+      {"--quiet", "-q", false, [](Options& o, S, S) { o.quiet = true; }},
+  };
+  return table;
+}
+
+}  // namespace
+
 Options parse(int argc, char** argv) {
   Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    // The next argument, unless it is missing or another option ("-o -q" forgot the file;
-    // "-" alone is a value: standard input or output).
-    auto value = [&](std::string_view name) -> std::string {
-      const bool missing = i + 1 >= argc || (argv[i + 1][0] == '-' && argv[i + 1][1] != '\0');
-      if (missing) throw UsageError("option " + std::string(name) + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "-h" || arg == "--help") {
+  std::vector<core::CommandLineItem<Options>> items;
+  try {
+    items = core::walk_command_line(argc, argv, option_table());
+  } catch (const core::CommandLineError& e) {
+    throw UsageError(e.what());
+  }
+  for (const auto& item : items) {
+    using Kind = core::CommandLineItem<Options>::Kind;
+    if (item.kind == Kind::help) {
       o.help = true;
-    } else if (arg == "-o" || arg == "--output") {
-      o.output_file = value(arg);
-    } else if (arg == "--stats") {
-      o.stats_file = value(arg);
-    } else if (arg == "--scene") {
-      if (o.scene || o.scene_file) throw UsageError("--scene given more than once");
-      std::string v = value(arg);
-      if (names_scene_file(v)) {
-        o.scene_file = std::move(v);
-      } else {
-        o.scene = std::move(v);
-      }
-    } else if (arg == "--device") {
-      o.device = value(arg);
-    } else if (arg == "--propagate-column") {
-      const std::string v = value(arg);
-      unsigned n = 0;
-      const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-      if (ec != std::errc() || end != v.data() + v.size() || n < 1 || n > 64)
-        throw UsageError("--propagate-column takes a whole number from 1 to 64, not '" + v + "'");
-      o.propagate_column = n;
-    } else if (arg == "--validation") {
-      o.validation = true;
-    } else if (arg == "--list-devices") {
-      o.list_devices = true;
-    } else if (arg == "--list-scenes") {
-      o.list_scenes = true;
-    } else if (arg == "-q" || arg == "--quiet") {
-      o.quiet = true;
-    } else if (arg.size() > 1 && arg[0] == '-') {
-      throw UsageError("unknown option " + std::string(arg));
+    } else if (item.kind == Kind::option) {
+      item.option->set(o, item.name, item.value);
     } else if (o.request_file) {
-      throw UsageError("more than one request file given: " + *o.request_file + " and " + std::string(arg));
+      throw UsageError("more than one request file given: " + *o.request_file + " and " + item.value);
     } else {
-      o.request_file = std::string(arg);
+      o.request_file = item.value;
     }
   }
   return o;
