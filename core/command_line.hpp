@@ -21,7 +21,8 @@ struct OptionSpec {
   std::function<void(Options&, std::string_view name, std::string_view value)> set;
 };
 
-// A usage error of the command line itself: an unknown option, or one without its value.
+// A usage error of the command line itself, an unknown option or one without its value, when
+// the program names no error type of its own.
 class CommandLineError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -37,8 +38,9 @@ struct CommandLineItem {
 
 // The items of argv[1..argc), in order. An option's value is the next argument, unless that
 // is missing or is another option ("-o -q" forgot the file; "-" alone is a value: standard
-// input or output); a switch takes a value only as "--name=value".
-template <class Options>
+// input or output); a switch takes a value only as "--name=value". Errors are thrown as
+// `Error`, made from their message (the program's usage error).
+template <class Error = CommandLineError, class Options>
 std::vector<CommandLineItem<Options>> walk_command_line(int argc, const char* const* argv,
                                                        const std::vector<OptionSpec<Options>>& options) {
   using Item = CommandLineItem<Options>;
@@ -58,13 +60,13 @@ std::vector<CommandLineItem<Options>> walk_command_line(int argc, const char* co
     const OptionSpec<Options>* spec = nullptr;
     for (const OptionSpec<Options>& o : options)
       if (name == o.name || (!o.alias.empty() && name == o.alias)) spec = &o;
-    if (!spec) throw CommandLineError("unknown option " + std::string(name));
+    if (!spec) throw Error("unknown option " + std::string(name));
     std::string value;
     if (equals != std::string_view::npos) {
       value = arg.substr(equals + 1);
     } else if (spec->takes_value) {
       const bool missing = i + 1 >= argc || (argv[i + 1][0] == '-' && argv[i + 1][1] != '\0');
-      if (missing) throw CommandLineError("option " + std::string(name) + " needs a value");
+      if (missing) throw Error("option " + std::string(name) + " needs a value");
       value = argv[++i];
     }
     items.push_back({Item::Kind::option, spec, std::string(name), std::move(value)});

@@ -225,13 +225,7 @@ ServerOptions parse_server_options(int argc, const char* const* argv, const Envi
     const std::string name = s.environment_name();
     if (const char* value = environment(name.c_str())) s.apply(options, name, value);
   }
-  std::vector<core::CommandLineItem<ServerOptions>> items;
-  try {
-    items = core::walk_command_line(argc, argv, option_specs());
-  } catch (const core::CommandLineError& e) {
-    throw OptionsError(e.what());
-  }
-  for (const auto& item : items) {
+  for (const auto& item : core::walk_command_line<OptionsError>(argc, argv, option_specs())) {
     using Kind = core::CommandLineItem<ServerOptions>::Kind;
     if (item.kind == Kind::help) {
       options.help = true;

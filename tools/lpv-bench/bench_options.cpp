@@ -226,13 +226,7 @@ Options parse(int argc, char** argv) {
   std::optional<Command> command;
   // Options are checked against the command once it is known (it may come after them).
   std::vector<std::pair<const Flag*, std::string>> given;
-  std::vector<core::CommandLineItem<Options>> items;
-  try {
-    items = core::walk_command_line(argc, argv, option_specs());
-  } catch (const core::CommandLineError& e) {
-    throw UsageError(e.what());
-  }
-  for (const auto& item : items) {
+  for (const auto& item : core::walk_command_line<UsageError>(argc, argv, option_specs())) {
     using Kind = core::CommandLineItem<Options>::Kind;
     if (item.kind == Kind::help) {
       o.help = true;

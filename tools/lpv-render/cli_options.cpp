@@ -94,13 +94,7 @@ const std::vector<core::OptionSpec<Options>>& option_table() {
 
 Options parse(int argc, char** argv) {
   Options o;
-  std::vector<core::CommandLineItem<Options>> items;
-  try {
-    items = core::walk_command_line(argc, argv, option_table());
-  } catch (const core::CommandLineError& e) {
-    throw UsageError(e.what());
-  }
-  for (const auto& item : items) {
+  for (const auto& item : core::walk_command_line<UsageError>(argc, argv, option_table())) {
     using Kind = core::CommandLineItem<Options>::Kind;
     if (item.kind == Kind::help) {
       o.help = true;
