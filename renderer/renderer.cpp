@@ -19,6 +19,7 @@
 #include "renderer/passes/shadow_pass.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene_cache.hpp"
+#include "renderer/vulkan/command_buffer.hpp"
 #include "renderer/vulkan/vk_check.hpp"
 
 #include <chrono>
@@ -112,21 +113,11 @@ struct Renderer::Impl {
         propagate(device, options.propagate_column),
         shade(device),
         timer(device),
+        commands(device),
         scene_source(std::move(options.scenes)),
         progress(std::move(options.progress)),
         scenes(options.scene_cache_bytes),
-        test_slowdown(options.test_slowdown) {
-    VkCommandPoolCreateInfo pool_ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pool_ci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pool_ci.queueFamilyIndex = device.queue_family();
-    VK_CHECK(vkCreateCommandPool(device.handle(), &pool_ci, nullptr, &pool));
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = pool;
-    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    alloc.commandBufferCount = 1;
-    VK_CHECK(vkAllocateCommandBuffers(device.handle(), &alloc, &commands));
-  }
-  ~Impl() { vkDestroyCommandPool(device.handle(), pool, nullptr); }
+        test_slowdown(options.test_slowdown) {}
 
   const vkx::Device& device;
   TextureSetLayout texture_layout;
@@ -139,8 +130,7 @@ struct Renderer::Impl {
   LpvPropagatePass propagate;
   ShadePass shade;
   PassTimer timer;
-  VkCommandPool pool = VK_NULL_HANDLE;
-  VkCommandBuffer commands = VK_NULL_HANDLE;
+  vkx::ReusableCommandBuffer commands;
 
   SceneSource scene_source;
   std::function<void(const RenderProgress&)> progress;
@@ -447,7 +437,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
         record_pass(p, c, {done + 1, n}, context);
         frame_record_ms += ms_since(record_start);
         const auto submit_start = Clock::now();
-        device.submit_and_wait(commands);
+        device.submit_and_wait(commands.handle());
         const double waited = ms_since(submit_start);
         frame_wait_ms += waited;
         pass_gpu_ms += timer.device_ms(waited);
@@ -645,11 +635,7 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv, bool with_geometry
 
 // Records one pass (for the grid passes: one cascade of it), bracketed by the pass timer.
 void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, const Frame& frame) {
-  VK_CHECK(vkResetCommandBuffer(commands, 0));
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  VK_CHECK(vkBeginCommandBuffer(commands, &begin));
-  VkCommandBuffer cmd = commands;
+  const VkCommandBuffer cmd = commands.begin();
   const api::Lpv& lpv = frame.request.lpv;
   timer.begin(cmd);
   // The camera's raster pass (G-buffer or forward) is the first to bind the shadow atlas: it
