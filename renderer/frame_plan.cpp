@@ -120,21 +120,22 @@ glm::vec3 seen_centre(const scene::Scene& scene, const std::vector<bool>& seen) 
   return draws_bounds(scene, [&](std::size_t d) { return d < seen.size() && seen[d]; }).center();
 }
 
-void plan_shadow_resolution(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
-                            const std::vector<api::Light>& lights, const std::vector<LightView>& views,
-                            const CameraSetup& camera, float fov_y_deg, std::uint64_t budget_texels) {
-  if (request.shadows.resolution) return;
+std::uint32_t plan_shadow_resolution(FramePlan& plan, const api::RenderRequest& request, const scene::Scene& scene,
+                                     const std::vector<api::Light>& lights, const std::vector<LightView>& views,
+                                     const CameraSetup& camera, float fov_y_deg, std::uint64_t budget_texels) {
+  if (request.shadows.resolution) return *request.shadows.resolution;
   ShadowSight sight;
   sight.receiver = seen_centre(scene, plan.draw_seen);
   sight.eye = camera.position;
   sight.pixel_per_metre = 2.0f * std::tan(0.5f * glm::radians(fov_y_deg)) / float(request.output.height);
   sight.budget_texels = std::min(budget_texels, kShadowTexelBudget);
-  request.shadows.resolution = shadow_resolution_for(views, plan.light_shadowed, lights, sight);
+  const std::uint32_t resolution = shadow_resolution_for(views, plan.light_shadowed, lights, sight);
   // The decisions say what differs from the documented default, the least resolution.
-  if (plan.run[kShadow] && *request.shadows.resolution > kMinShadowResolution)
-    plan.decisions.push_back("shadow maps " + std::to_string(*request.shadows.resolution) + " texels per side, not " +
+  if (plan.run[kShadow] && resolution > kMinShadowResolution)
+    plan.decisions.push_back("shadow maps " + std::to_string(resolution) + " texels per side, not " +
                              std::to_string(kMinShadowResolution) +
                              ": a texel at most half a pixel wide where the camera looks");
+  return resolution;
 }
 
 namespace {
@@ -294,9 +295,19 @@ void plan_shading(FramePlan& plan, api::View view, bool display_only) {
   plan.reason[kReadback] = "the forward pass copies its image to the host itself";
 }
 
-LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
-                 const std::vector<api::Light>& lights, const std::vector<LightView>& views, const FitLpv& fit) {
-  LpvPlan lpv{scene.bounds, {}, {}};
+LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene::Scene& scene,
+                 const LpvFrameInputs& frame) {
+  LpvPlan lpv{scene.bounds, request.lpv, {}, {}};
+  const std::vector<api::Light>& lights = frame.lights;
+  const std::vector<LightView>& views = frame.views;
+  // The cascades placed over the grid's bounds with the settings as they stand.
+  auto fit = [&] {
+    LpvSetup setup = setup_lpv(lpv.settings, scene.bounds, lpv.grid_bounds, lights, views, frame.emitted_flux,
+                               frame.camera, frame.fov_y_deg, frame.image_height);
+    // Without a geometry volume this frame (no occluders), propagation does not read one.
+    if (!plan.run[kGeometryVolume]) setup.occlusion = setup.bounces = false;
+    return setup;
+  };
   // The grid covers only what the camera sees and the lights reach (unless placed by hand).
   if (api::plan_applies(request, api::PlanRule::grid) && plan.run[kInject] && !request.lpv.origin && !request.lpv.extent) {
     lpv.grid_bounds = lpv_region(scene, plan.draw_seen, lights, plan.light_drawn);
@@ -306,7 +317,7 @@ LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scen
       plan.decisions.push_back("grid fitted to the part of the scene the camera sees and the lights reach (" +
                                std::to_string(fitted) + " of " + std::to_string(whole) + " m across)");
   }
-  lpv.setup = fit(lpv.grid_bounds, request.lpv);
+  lpv.setup = fit();
 
   if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm]) {
     const std::uint32_t rsm = rsm_resolution_needed(views, lights, lpv.grid_bounds, lpv.setup.cascades[0].cell_size,
@@ -314,9 +325,9 @@ LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scen
     if (rsm < request.lpv.rsm_resolution) {
       plan.decisions.push_back("rsm " + std::to_string(rsm) + " of " + std::to_string(request.lpv.rsm_resolution) +
                                " texels per side: four texels a cell on the farthest surface the lights see");
-      request.lpv.rsm_resolution = rsm;
-      request.lpv.vpl_downsample = std::min(request.lpv.vpl_downsample, rsm);
-      lpv.setup = fit(lpv.grid_bounds, request.lpv);
+      lpv.settings.rsm_resolution = rsm;
+      lpv.settings.vpl_downsample = std::min(lpv.settings.vpl_downsample, rsm);
+      lpv.setup = fit();
     }
   }
 

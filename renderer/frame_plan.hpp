@@ -12,7 +12,6 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,18 +57,30 @@ struct PlanInputs {
 
 FramePlan plan_frame(const PlanInputs& in);
 
+// What setup_lpv places the cascades from, besides the grid's bounds and the LPV settings:
+// the frame's lights and their views, the emissive surfaces' flux and the camera.
+struct LpvFrameInputs {
+  const std::vector<api::Light>& lights;
+  const std::vector<LightView>& views;
+  double emitted_flux = 0.0;
+  const CameraSetup& camera;
+  float fov_y_deg = 0.0f;
+  std::uint32_t image_height = 0;
+};
+
 // The LPV part of a frame, once the lights' views are known: the region the grid covers,
-// the RSM resolution, the cascades and each one's propagation steps. Under "auto" it may
-// lower request.lpv's rsm_resolution (and vpl_downsample) and adds its decisions to `plan`.
-// `fit(grid_bounds, lpv)` places the cascades (setup_lpv with the frame's other inputs).
+// the LPV settings the frame runs with, the cascades and each one's propagation steps.
+// Under "auto" the settings may have a lower rsm_resolution (and vpl_downsample) than the
+// request's; the decisions go to `plan`. A frame without a geometry volume propagates
+// without occlusion.
 struct LpvPlan {
   scene::Bounds grid_bounds;
+  api::Lpv settings;
   LpvSetup setup;
   std::vector<std::uint32_t> iterations;  // per cascade
 };
-using FitLpv = std::function<LpvSetup(const scene::Bounds& grid_bounds, const api::Lpv& lpv)>;
-LpvPlan plan_lpv(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
-                 const std::vector<api::Light>& lights, const std::vector<LightView>& views, const FitLpv& fit);
+LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene::Scene& scene,
+                 const LpvFrameInputs& frame);
 
 // Why a light cannot light anything in `bounds` (empty when it may): beyond its range, or
 // its cone pointing away from them.
@@ -130,13 +141,13 @@ std::uint32_t shadow_resolution_for(const std::vector<LightView>& views, const s
 // The centre of the draws the camera may see (their bounds' union), or of the scene.
 glm::vec3 seen_centre(const scene::Scene& scene, const std::vector<bool>& seen);
 
-// Sets request.shadows.resolution where the request leaves it out (in both plan modes: it is
-// the default's value, not a pass skipped) by shadow_resolution_for of the frame's light
-// `views` within `budget_texels` (the device's) and kShadowTexelBudget, and says so in `plan`
-// when it is over the least.
-void plan_shadow_resolution(FramePlan& plan, api::RenderRequest& request, const scene::Scene& scene,
-                            const std::vector<api::Light>& lights, const std::vector<LightView>& views,
-                            const CameraSetup& camera, float fov_y_deg, std::uint64_t budget_texels);
+// The shadow maps' resolution: the request's, or where it leaves it out (in both plan modes:
+// it is the default's value, not a pass skipped) shadow_resolution_for of the frame's light
+// `views` within `budget_texels` (the device's) and kShadowTexelBudget, said in `plan` when
+// it is over the least.
+std::uint32_t plan_shadow_resolution(FramePlan& plan, const api::RenderRequest& request, const scene::Scene& scene,
+                                     const std::vector<api::Light>& lights, const std::vector<LightView>& views,
+                                     const CameraSetup& camera, float fov_y_deg, std::uint64_t budget_texels);
 
 // The part of the scene the grid should cover: the draws the camera may see and the draws a
 // drawn light may reach (by their bounds), since light flows from the lit ones to the seen

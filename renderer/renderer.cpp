@@ -343,20 +343,15 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   FramePlan plan =
       plan_frame({request, lights, scene, gpu.emitter_count, camera.view_proj});
   std::vector<LightView> views = light_views(lights, scene.bounds, plan.light_drawn);
-  plan_shadow_resolution(plan, request, scene, lights, views, camera, camera_request.fov_y_deg,
-                         kShadowAtlasBudgetBytes / 4);
+  request.shadows.resolution = plan_shadow_resolution(plan, request, scene, lights, views, camera,
+                                                      camera_request.fov_y_deg, kShadowAtlasBudgetBytes / 4);
   double plan_ms = ms_since(plan_start);
   const LightSetup light_setup = setup_lights(lights, std::move(views), request.shadows, plan.light_shadowed);
   plan_start = Clock::now();
   const LpvPlan lpv_plan = plan_lpv(
-      plan, request, scene, lights, light_setup.views,
-      [&](const scene::Bounds& grid_bounds, const api::Lpv& lpv) {
-        LpvSetup setup = setup_lpv(lpv, scene.bounds, grid_bounds, lights, light_setup.views, gpu.emitted_flux, camera,
-                                   camera_request.fov_y_deg, out.height);
-        // Without a geometry volume this frame (no occluders), propagation does not read one.
-        if (!plan.run[kGeometryVolume]) setup.occlusion = setup.bounces = false;
-        return setup;
-      });
+      plan, request, scene,
+      {lights, light_setup.views, gpu.emitted_flux, camera, camera_request.fov_y_deg, out.height});
+  request.lpv = lpv_plan.settings;
   plan_shading(plan, request.output.view, readback == kReadbackDisplay);
   if (plan.run[kGeometryVolume]) {  // why it runs: what it is made of
     plan.reason[kGeometryVolume] = describe_occluders(geometry_sources(request.lpv, plan.run[kRsm]), gpu.blocker_count);
