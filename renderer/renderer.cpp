@@ -4,6 +4,7 @@
 #include "api/request_error.hpp"
 #include "renderer/frame_plan.hpp"
 #include "renderer/frame_setup.hpp"
+#include "renderer/frame_resources.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_scene.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
@@ -37,12 +38,6 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Shadow maps and RSMs live in host memory on lavapipe, and so do the grids: bound them so a
-// request cannot exhaust it.
-constexpr std::uint64_t kShadowAtlasBudgetBytes = 1ull << 30;
-constexpr std::uint64_t kRsmBudgetBytes = 1ull << 30;
-constexpr std::uint64_t kLpvBudgetBytes = 2ull << 30;
-
 // Propagation steps per submission when the plan may stop early: between chunks the flux of
 // the last step is read back, so the stop comes at most this many steps late.
 constexpr std::uint32_t kConvergenceChunk = 4;
@@ -66,8 +61,6 @@ void busy_wait_ms(double ms) {
   while (Clock::now() < until) {
   }
 }
-
-std::string mib(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
 // An RGBA image of the output's size from a mapped readback buffer.
 template <typename Image>
@@ -137,11 +130,7 @@ struct Renderer::Impl {
   std::function<bool()> stop_check;
   SceneCache scenes;
   double test_slowdown;
-  std::optional<FrameTargets> targets;
-  std::optional<ShadowAtlas> atlas;
-  std::optional<RsmMaps> rsm_maps;
-  std::optional<LpvVolumes> volumes;  // the shading binds them even when no LPV ran
-  vkx::Buffer frame_uniforms, light_buffer, shadow_view_buffer, lpv_uniforms, rsm_view_buffer;
+  FrameResources resources;
 
   // What the passes of one frame read, fixed before the first is recorded.
   struct Frame {
@@ -160,7 +149,6 @@ struct Renderer::Impl {
   // device, the warnings. A dry run returns them as they are.
   api::RenderStats plan_stats(const scene::Scene& scene, const api::RenderRequest& request, const FramePlan& plan,
                               double plan_ms) const;
-  void allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights);
   // Steps first .. first + count - 1 of propagation (1-based); other passes ignore them.
   struct Steps {
     std::uint32_t first = 1;
@@ -171,16 +159,16 @@ struct Renderer::Impl {
   // read them: no kinds and count 0, so one shading pipeline serves every light setup.
   DirectLightInputs direct_light(const Frame& frame) const {
     const bool lit = needs_direct_light(frame.request.output.view);
-    return {frame_uniforms,
-            light_buffer,
-            shadow_view_buffer,
-            *atlas,
+    return {resources.frame_uniforms,
+            resources.light_buffer,
+            resources.shadow_view_buffer,
+            *resources.atlas,
             lit ? light_kinds(frame.lights.lights, frame.gpu.emissive) : 0u,
             lit ? std::uint32_t(frame.lights.lights.size()) : 0u};
   }
   // What the forward pass and the shading read of the LPV: its cascades when it ran, else none.
   IndirectLightInputs indirect_light(const Frame& frame) const {
-    return {lpv_uniforms, *volumes, frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u};
+    return {resources.lpv_uniforms, *resources.volumes, frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u};
   }
   api::LpvStats lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran, std::uint32_t emitters,
                           const std::vector<std::uint32_t>& iterations_run) const;
@@ -266,71 +254,6 @@ void Renderer::set_stop_check(std::function<bool()> stop) { impl_->stop_check = 
 
 SceneCacheStats Renderer::scene_cache() const { return {impl_->scenes.size(), impl_->scenes.bytes()}; }
 
-// Frame targets, shadow maps, RSMs and grids of the sizes the plan needs: checked against
-// their budgets first, kept when the sizes did not change, freed before reallocating.
-void Renderer::Impl::allocate(const FramePlan& plan, const api::RenderRequest& request, const LightSetup& lights) {
-  const api::Output& out = request.output;
-  const std::uint32_t shadow_layers = std::max<std::uint32_t>(1, std::uint32_t(lights.shadow_views.size()));
-  const std::uint32_t shadow_res = plan.run[kShadow] ? request.shadows.resolution.value() : 1;
-  const std::uint64_t atlas_bytes = std::uint64_t(shadow_res) * shadow_res * shadow_layers * 4;
-  if (atlas_bytes > kShadowAtlasBudgetBytes)
-    throw api::DoesNotFit("shadows.resolution", api::counted(shadow_layers, "shadow map") + " of " +
-                                                      std::to_string(shadow_res) + "^2 need " + mib(atlas_bytes) +
-                                                      ", over the budget of " + mib(kShadowAtlasBudgetBytes) +
-                                                      ": lower the resolution");
-  const bool lpv = plan.run[kInject];
-  // Without a light to draw them the RSMs are not read, but the passes still bind a set.
-  const std::uint32_t rsm_layers = std::max<std::uint32_t>(1, std::uint32_t(lights.views.size()));
-  const std::uint64_t rsm_bytes =
-      std::uint64_t(request.lpv.rsm_resolution) * request.lpv.rsm_resolution * rsm_layers * RsmMaps::kBytesPerTexel;
-  if (lpv && rsm_bytes > kRsmBudgetBytes)
-    throw api::DoesNotFit("lpv.rsm", api::counted(rsm_layers, "reflective shadow map") + " of " +
-                                           std::to_string(request.lpv.rsm_resolution) + "^2 need " + mib(rsm_bytes) +
-                                           ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
-  const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
-                            std::to_string(request.lpv.grid.z) + " cells";
-  const std::uint32_t geometry_slots = geometry_sources(request.lpv).slots();
-  const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades, geometry_slots);
-  if (lpv && lpv_bytes > kLpvBudgetBytes)
-    throw api::DoesNotFit("lpv.grid", api::counted(request.lpv.cascades, "cascade") + " of " + cells + " need " +
-                                            mib(lpv_bytes) + ", over the budget of " + mib(kLpvBudgetBytes) +
-                                            ": use fewer cells");
-  const std::uint64_t buffer_bytes =
-      LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades, geometry_slots);
-  const std::uint64_t buffer_range = device.info().limits.maxStorageBufferRange;
-  if (lpv && buffer_bytes > buffer_range)
-    throw api::DoesNotFit("lpv.grid", cells + " need a storage buffer of " + mib(buffer_bytes) +
-                                            "; this device binds at most " + mib(buffer_range) + ": use fewer cells");
-  const std::uint64_t texels = buffer_bytes / vkx::TexelBuffer::kTexelBytes;
-  const std::uint64_t texel_limit = device.info().limits.maxTexelBufferElements;
-  if (lpv && texels > texel_limit)
-    throw api::DoesNotFit("lpv.grid", cells + " need a texel buffer of " + std::to_string(texels) +
-                                            " texels; this device binds at most " + std::to_string(texel_limit) +
-                                            ": use fewer cells");
-  if (!targets || targets->width != out.width || targets->height != out.height) {
-    targets.reset();
-    targets.emplace(device, out.width, out.height, surfel_stride(out.height));
-  }
-  if (!atlas || atlas->resolution != shadow_res || atlas->layers != shadow_layers) {
-    atlas.reset();
-    atlas.emplace(device, shadow_res, shadow_layers);
-  }
-  if (!lpv) {
-    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1, 1);  // something for the shading to bind
-    return;  // RSMs and grids of earlier requests stay for the next that needs them
-  }
-  if (!rsm_maps || rsm_maps->resolution != request.lpv.rsm_resolution || rsm_maps->layers != rsm_layers) {
-    rsm_maps.reset();
-    rsm_maps.emplace(device, request.lpv.rsm_resolution, rsm_layers);
-  }
-  if (!volumes || volumes->dims != request.lpv.grid || volumes->cascades != request.lpv.cascades ||
-      volumes->geometry_slots < geometry_slots) {
-    volumes.reset();
-    volumes.emplace(device, request.lpv.grid, request.lpv.cascades, geometry_slots);
-  }
-  volumes->set_iterations(device, request.lpv.iterations);
-}
-
 RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& gpu, const api::RenderRequest& asked,
                                     unsigned readback, double load_ms, double upload_ms) {
   const auto setup_start = Clock::now();
@@ -364,7 +287,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     planned.stats = plan_stats(scene, request, plan, plan_ms);
     return planned;
   }
-  allocate(plan, request, light_setup);
+  resources.fit(device, plan, request, light_setup);
 
   gpu::GpuFrame frame{};
   frame.view_proj = camera.view_proj;
@@ -376,21 +299,21 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   const auto light_bytes = light_setup.lights.size() * sizeof(gpu::GpuLight);
   const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);
   const auto rsm_view_bytes = lpv_setup.rsm_views.size() * sizeof(gpu::GpuRsmView);
-  ensure_upload_capacity(device, frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  ensure_upload_capacity(device, resources.frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   // Uniform buffers of the forward and RSM passes too, sized for the most a frame may have.
   const VkBufferUsageFlags both = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
-  ensure_upload_capacity(device, light_buffer, std::max(light_bytes, gpu::SHADE_MAX_LIGHTS * sizeof(gpu::GpuLight)), both);
-  ensure_upload_capacity(device, shadow_view_buffer, std::max(view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(glm::mat4)),
+  ensure_upload_capacity(device, resources.light_buffer, std::max(light_bytes, gpu::SHADE_MAX_LIGHTS * sizeof(gpu::GpuLight)), both);
+  ensure_upload_capacity(device, resources.shadow_view_buffer, std::max(view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(glm::mat4)),
                          both);
-  ensure_upload_capacity(device, lpv_uniforms, sizeof(lpv_setup.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  ensure_upload_capacity(device, rsm_view_buffer,
+  ensure_upload_capacity(device, resources.lpv_uniforms, sizeof(lpv_setup.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  ensure_upload_capacity(device, resources.rsm_view_buffer,
                          std::max(rsm_view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::GpuRsmView)),
                          VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  frame_uniforms.write(&frame, sizeof(frame));
-  lpv_uniforms.write(&lpv_setup.gpu, sizeof(lpv_setup.gpu));  // read only by frames with indirect light
-  if (light_bytes) light_buffer.write(light_setup.lights.data(), light_bytes);
-  if (view_bytes) shadow_view_buffer.write(light_setup.shadow_views.data(), view_bytes);
-  if (rsm_view_bytes) rsm_view_buffer.write(lpv_setup.rsm_views.data(), rsm_view_bytes);
+  resources.frame_uniforms.write(&frame, sizeof(frame));
+  resources.lpv_uniforms.write(&lpv_setup.gpu, sizeof(lpv_setup.gpu));  // read only by frames with indirect light
+  if (light_bytes) resources.light_buffer.write(light_setup.lights.data(), light_bytes);
+  if (view_bytes) resources.shadow_view_buffer.write(light_setup.shadow_views.data(), view_bytes);
+  if (rsm_view_bytes) resources.rsm_view_buffer.write(lpv_setup.rsm_views.data(), rsm_view_bytes);
   const double setup_ms = ms_since(setup_start);
 
   const Frame context{plan, gpu, request, light_setup, lpv_setup, readback, gpu.camera_order(camera.position)};
@@ -454,8 +377,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     total_gpu_ms.push_back(frame_gpu_ms);
 
     const auto readback_start = Clock::now();
-    if (readback & kReadbackDisplay) copy_to_host(targets->display_readback, out, result.display);
-    if (readback & kReadbackLinear) copy_to_host(targets->linear_readback, out, result.linear);
+    if (readback & kReadbackDisplay) copy_to_host(resources.targets->display_readback, out, result.display);
+    if (readback & kReadbackLinear) copy_to_host(resources.targets->linear_readback, out, result.linear);
     readback_ms.push_back(ms_since(readback_start));
     if (test_slowdown > 1.0) busy_wait_ms(ms_since(frame_start) * (test_slowdown - 1.0));
     wall_ms.push_back(ms_since(frame_start));
@@ -517,9 +440,9 @@ api::RenderStats Renderer::Impl::plan_stats(const scene::Scene& scene, const api
 // measured over the last chunk.
 bool Renderer::Impl::converged(std::uint32_t cascade, std::uint32_t step, std::uint32_t steps,
                                float convergence) const {
-  volumes->flux_stats.invalidate();
+  resources.volumes->flux_stats.invalidate();
   auto flux = [&](std::uint32_t k) {
-    const glm::dvec3 f = volumes->flux_at(volumes->grid_flux_record(cascade, k), 1.0);
+    const glm::dvec3 f = resources.volumes->flux_at(resources.volumes->grid_flux_record(cascade, k), 1.0);
     return std::max({f.x, f.y, f.z});
   };
   double accumulated = 0.0;
@@ -536,13 +459,13 @@ bool Renderer::Impl::converged(std::uint32_t cascade, std::uint32_t step, std::u
 // The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats.
 api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
                                         std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run) const {
-  volumes->flux_stats.invalidate();
+  resources.volumes->flux_stats.invalidate();
   const double watts_per_unit = 1.0 / double(lpv.gpu.scales.x);
   auto rgb = [](glm::dvec3 v) { return api::Rgb{v.x, v.y, v.z}; };
   api::LpvStats stats;
   const std::uint64_t side = vpls_per_view_side(settings);
   stats.vpl_count = (rsm_ran ? side * side * lpv.rsm_views.size() : 0) + emitters;
-  stats.vpl_flux = rgb(volumes->flux_at(volumes->vpl_flux_record(0), watts_per_unit));
+  stats.vpl_flux = rgb(resources.volumes->flux_at(resources.volumes->vpl_flux_record(0), watts_per_unit));
   stats.intensity = lpv.gpu.scales.z;
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
     const CascadePlacement& p = lpv.cascades[c];
@@ -550,10 +473,10 @@ api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup
     cs.origin = {p.origin.x, p.origin.y, p.origin.z};
     cs.cell_size = p.cell_size;
     cs.grid = {p.dims.x, p.dims.y, p.dims.z};
-    cs.injected_flux = rgb(volumes->flux_at(volumes->grid_flux_record(c, 0), watts_per_unit));
+    cs.injected_flux = rgb(resources.volumes->flux_at(resources.volumes->grid_flux_record(c, 0), watts_per_unit));
     cs.iterations = iterations_run[c];
     for (std::uint32_t k = 1; k <= iterations_run[c]; ++k)
-      cs.propagated_flux.push_back(rgb(volumes->flux_at(volumes->grid_flux_record(c, k), watts_per_unit)));
+      cs.propagated_flux.push_back(rgb(resources.volumes->flux_at(resources.volumes->grid_flux_record(c, k), watts_per_unit)));
     stats.cascades.push_back(std::move(cs));
   }
   return stats;
@@ -563,8 +486,8 @@ api::LpvStats Renderer::Impl::lpv_stats(const api::Lpv& settings, const LpvSetup
 // for checks.
 LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv, bool with_geometry_volume) const {
   LpvSnapshot snapshot;
-  snapshot.rsm_resolution = rsm_maps->resolution;
-  snapshot.rsm_layers = rsm_maps->layers;
+  snapshot.rsm_resolution = resources.rsm_maps->resolution;
+  snapshot.rsm_layers = resources.rsm_maps->layers;
   // Runs the copy of `texels` texels that record_copy records into a readback buffer, and
   // returns them.
   auto read_back = [&](std::size_t texels, const auto& record_copy) {
@@ -582,9 +505,9 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv, bool with_geometry
     const vkx::Image* image;
     std::vector<glm::vec4>* into;
   };
-  for (const RsmCopy& copy : {RsmCopy{&rsm_maps->position, &snapshot.rsm_position},
-                              RsmCopy{&rsm_maps->normal, &snapshot.rsm_normal},
-                              RsmCopy{&rsm_maps->flux, &snapshot.rsm_flux}}) {
+  for (const RsmCopy& copy : {RsmCopy{&resources.rsm_maps->position, &snapshot.rsm_position},
+                              RsmCopy{&resources.rsm_maps->normal, &snapshot.rsm_normal},
+                              RsmCopy{&resources.rsm_maps->flux, &snapshot.rsm_flux}}) {
     const vkx::Image& image = *copy.image;
     const vkx::ImageDesc& d = image.desc();
     *copy.into = read_back(std::size_t(d.width) * d.height * d.layers, [&](VkCommandBuffer cmd, VkBuffer host) {
@@ -608,11 +531,11 @@ LpvSnapshot Renderer::Impl::lpv_snapshot(const LpvSetup& lpv, bool with_geometry
     });
   };
   std::vector<glm::vec4> channels[3];
-  for (int c = 0; c < 3; ++c) channels[c] = read_back_volume(volumes->accumulated[c], volumes->accumulated[c].texels());
+  for (int c = 0; c < 3; ++c) channels[c] = read_back_volume(resources.volumes->accumulated[c], resources.volumes->accumulated[c].texels());
   if (with_geometry_volume) {  // the blocking SH, then the spreads: 3 texels a cell each (lpv_face_texel)
-    const glm::uvec3 d = volumes->dims;
+    const glm::uvec3 d = resources.volumes->dims;
     const std::size_t face_count = 3 * std::size_t(d.x) * d.y * d.z;
-    std::vector<glm::vec4> texels = read_back_volume(volumes->faces, 2 * face_count);
+    std::vector<glm::vec4> texels = read_back_volume(resources.volumes->faces, 2 * face_count);
     snapshot.face_spreads.assign(texels.begin() + std::ptrdiff_t(face_count), texels.end());
     texels.resize(face_count);
     snapshot.faces = std::move(texels);
@@ -633,47 +556,47 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
   const VkCommandBuffer cmd = commands.begin();
   const api::Lpv& lpv = frame.request.lpv;
   timer.begin(cmd);
-  // The camera's raster pass (G-buffer or forward) is the first to bind the shadow atlas: it
+  // The camera's raster pass (G-buffer or forward) is the first to bind the shadow resources.atlas: it
   // needs its layout even when no map was drawn (no light samples it then).
-  if ((pass == kGBuffer || pass == kForward) && !frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *atlas);
+  if ((pass == kGBuffer || pass == kForward) && !frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *resources.atlas);
   switch (pass) {
     case kShadow:
-      shadow.record(cmd, frame.gpu, *atlas, frame.lights.shadow_views);
+      shadow.record(cmd, frame.gpu, *resources.atlas, frame.lights.shadow_views);
       break;
     case kRsm:
-      rsm.record(cmd, frame.gpu, *rsm_maps, rsm_view_buffer, light_buffer);
+      rsm.record(cmd, frame.gpu, *resources.rsm_maps, resources.rsm_view_buffer, resources.light_buffer);
       break;
     case kGBuffer:
-      gbuffer.record(cmd, frame.gpu, frame.draw_order, targets->camera, frame_uniforms);
+      gbuffer.record(cmd, frame.gpu, frame.draw_order, resources.targets->camera, resources.frame_uniforms);
       break;
     case kInject:
-      if (cascade == 0 && !frame.plan.run[kRsm]) RsmPass::record_skipped(cmd, *rsm_maps);
-      inject.record(cmd, cascade, lpv_uniforms, frame.plan.run[kRsm] ? &*rsm_maps : nullptr, vpls_per_view_side(lpv),
-                    frame.gpu, *volumes, lpv.injection);
+      if (cascade == 0 && !frame.plan.run[kRsm]) RsmPass::record_skipped(cmd, *resources.rsm_maps);
+      inject.record(cmd, cascade, resources.lpv_uniforms, frame.plan.run[kRsm] ? &*resources.rsm_maps : nullptr, vpls_per_view_side(lpv),
+                    frame.gpu, *resources.volumes, lpv.injection);
       break;
     case kGeometryVolume: {
       if (cascade == 0) {  // the camera's surfels, drawn once for every cascade (timed with the first)
         if (lpv.occlusion_from_camera)
-          gbuffer.record(cmd, frame.gpu, frame.draw_order, targets->surfels, frame_uniforms);
+          gbuffer.record(cmd, frame.gpu, frame.draw_order, resources.targets->surfels, resources.frame_uniforms);
         else
-          GBufferPass::record_unused(cmd, targets->surfels);
+          GBufferPass::record_unused(cmd, resources.targets->surfels);
       }
       GeometrySources sources = geometry_sources(lpv, frame.plan.run[kRsm]);
       sources.rsm_stride = frame.lpv.gpu.sizes.w;
       sources.bounces = frame.lpv.bounces;
-      geometry.record(cmd, cascade, lpv_uniforms, *rsm_maps, targets->surfels, frame.gpu, sources, *volumes);
+      geometry.record(cmd, cascade, resources.lpv_uniforms, *resources.rsm_maps, resources.targets->surfels, frame.gpu, sources, *resources.volumes);
       break;
     }
     case kPropagate:
-      propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.occlusion, frame.lpv.bounces, lpv_uniforms,
-                       *volumes);
+      propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.occlusion, frame.lpv.bounces, resources.lpv_uniforms,
+                       *resources.volumes);
       break;
     case kForward:
-      forward.record(cmd, frame.gpu, frame.draw_order, *targets, direct_light(frame), indirect_light(frame),
+      forward.record(cmd, frame.gpu, frame.draw_order, *resources.targets, direct_light(frame), indirect_light(frame),
                      frame.request.output.tonemap);
       break;
     case kShade:
-      shade.record(cmd, frame.gpu, *targets,
+      shade.record(cmd, frame.gpu, *resources.targets,
                    {direct_light(frame), indirect_light(frame), gpu_view(frame.request.output.view),
                     (frame.readback & kReadbackLinear ? gpu::SHADE_OUTPUT_LINEAR : 0u) |
                         (frame.readback & kReadbackDisplay ? gpu::SHADE_OUTPUT_DISPLAY : 0u),
@@ -684,8 +607,8 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
         const VkBufferCopy region{0, 0, from.size()};
         vkCmdCopyBuffer(cmd, from.handle(), to.handle(), 1, &region);
       };
-      if (frame.readback & kReadbackDisplay) copy(targets->display, targets->display_readback);
-      if (frame.readback & kReadbackLinear) copy(targets->linear, targets->linear_readback);
+      if (frame.readback & kReadbackDisplay) copy(resources.targets->display, resources.targets->display_readback);
+      if (frame.readback & kReadbackLinear) copy(resources.targets->linear, resources.targets->linear_readback);
       vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                           VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                           VK_ACCESS_HOST_READ_BIT);

@@ -1,0 +1,82 @@
+#include "renderer/frame_resources.hpp"
+
+#include "api/counted.hpp"
+#include "api/request_error.hpp"
+#include "renderer/lpv/lpv_setup.hpp"
+#include "renderer/passes/geometry_volume_pass.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace renderer {
+namespace {
+
+std::string mib(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
+
+}  // namespace
+
+void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const api::RenderRequest& request,
+                         const LightSetup& lights) {
+  const api::Output& out = request.output;
+  const std::uint32_t shadow_layers = std::max<std::uint32_t>(1, std::uint32_t(lights.shadow_views.size()));
+  const std::uint32_t shadow_res = plan.run[kShadow] ? request.shadows.resolution.value() : 1;
+  const std::uint64_t atlas_bytes = std::uint64_t(shadow_res) * shadow_res * shadow_layers * 4;
+  if (atlas_bytes > kShadowAtlasBudgetBytes)
+    throw api::DoesNotFit("shadows.resolution", api::counted(shadow_layers, "shadow map") + " of " +
+                                                      std::to_string(shadow_res) + "^2 need " + mib(atlas_bytes) +
+                                                      ", over the budget of " + mib(kShadowAtlasBudgetBytes) +
+                                                      ": lower the resolution");
+  const bool lpv = plan.run[kInject];
+  // Without a light to draw them the RSMs are not read, but the passes still bind a set.
+  const std::uint32_t rsm_layers = std::max<std::uint32_t>(1, std::uint32_t(lights.views.size()));
+  const std::uint64_t rsm_bytes =
+      std::uint64_t(request.lpv.rsm_resolution) * request.lpv.rsm_resolution * rsm_layers * RsmMaps::kBytesPerTexel;
+  if (lpv && rsm_bytes > kRsmBudgetBytes)
+    throw api::DoesNotFit("lpv.rsm", api::counted(rsm_layers, "reflective shadow map") + " of " +
+                                           std::to_string(request.lpv.rsm_resolution) + "^2 need " + mib(rsm_bytes) +
+                                           ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
+  const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
+                            std::to_string(request.lpv.grid.z) + " cells";
+  const std::uint32_t geometry_slots = geometry_sources(request.lpv).slots();
+  const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades, geometry_slots);
+  if (lpv && lpv_bytes > kLpvBudgetBytes)
+    throw api::DoesNotFit("lpv.grid", api::counted(request.lpv.cascades, "cascade") + " of " + cells + " need " +
+                                            mib(lpv_bytes) + ", over the budget of " + mib(kLpvBudgetBytes) +
+                                            ": use fewer cells");
+  const std::uint64_t buffer_bytes =
+      LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades, geometry_slots);
+  const std::uint64_t buffer_range = device.info().limits.maxStorageBufferRange;
+  if (lpv && buffer_bytes > buffer_range)
+    throw api::DoesNotFit("lpv.grid", cells + " need a storage buffer of " + mib(buffer_bytes) +
+                                            "; this device binds at most " + mib(buffer_range) + ": use fewer cells");
+  const std::uint64_t texels = buffer_bytes / vkx::TexelBuffer::kTexelBytes;
+  const std::uint64_t texel_limit = device.info().limits.maxTexelBufferElements;
+  if (lpv && texels > texel_limit)
+    throw api::DoesNotFit("lpv.grid", cells + " need a texel buffer of " + std::to_string(texels) +
+                                            " texels; this device binds at most " + std::to_string(texel_limit) +
+                                            ": use fewer cells");
+  if (!targets || targets->width != out.width || targets->height != out.height) {
+    targets.reset();
+    targets.emplace(device, out.width, out.height, surfel_stride(out.height));
+  }
+  if (!atlas || atlas->resolution != shadow_res || atlas->layers != shadow_layers) {
+    atlas.reset();
+    atlas.emplace(device, shadow_res, shadow_layers);
+  }
+  if (!lpv) {
+    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1, 1);  // something for the shading to bind
+    return;  // RSMs and grids of earlier requests stay for the next that needs them
+  }
+  if (!rsm_maps || rsm_maps->resolution != request.lpv.rsm_resolution || rsm_maps->layers != rsm_layers) {
+    rsm_maps.reset();
+    rsm_maps.emplace(device, request.lpv.rsm_resolution, rsm_layers);
+  }
+  if (!volumes || volumes->dims != request.lpv.grid || volumes->cascades != request.lpv.cascades ||
+      volumes->geometry_slots < geometry_slots) {
+    volumes.reset();
+    volumes.emplace(device, request.lpv.grid, request.lpv.cascades, geometry_slots);
+  }
+  volumes->set_iterations(device, request.lpv.iterations);
+}
+
+}  // namespace renderer
