@@ -13,6 +13,11 @@ namespace {
 
 std::string mib(std::uint64_t bytes) { return std::to_string(bytes >> 20) + " MiB"; }
 
+void ensure_capacity(const vkx::Device& device, vkx::Buffer& buffer, VkDeviceSize bytes, VkBufferUsageFlags usage) {
+  bytes = std::max<VkDeviceSize>(bytes, 256);  // never zero-sized, even with no lights
+  if (!buffer || buffer.size() < bytes) buffer = vkx::Buffer(device, bytes, usage, vkx::MemoryUse::upload);
+}
+
 }  // namespace
 
 void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const api::RenderRequest& request,
@@ -77,6 +82,26 @@ void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const
     volumes.emplace(device, request.lpv.grid, request.lpv.cascades, geometry_slots);
   }
   volumes->set_iterations(device, request.lpv.iterations);
+}
+
+void FrameResources::upload(const vkx::Device& device, const gpu::GpuFrame& frame, const LightSetup& lights,
+                            const LpvSetup& lpv) {
+  const auto light_bytes = lights.lights.size() * sizeof(gpu::GpuLight);
+  const auto view_bytes = lights.shadow_views.size() * sizeof(glm::mat4);
+  const auto rsm_view_bytes = lpv.rsm_views.size() * sizeof(gpu::GpuRsmView);
+  ensure_capacity(device, frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  // Uniform buffers of the forward and RSM passes too, sized for the most a frame may have.
+  const VkBufferUsageFlags both = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
+  ensure_capacity(device, light_buffer, std::max(light_bytes, gpu::SHADE_MAX_LIGHTS * sizeof(gpu::GpuLight)), both);
+  ensure_capacity(device, shadow_view_buffer, std::max(view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(glm::mat4)), both);
+  ensure_capacity(device, lpv_uniforms, sizeof(lpv.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  ensure_capacity(device, rsm_view_buffer, std::max(rsm_view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::GpuRsmView)),
+                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  frame_uniforms.write(&frame, sizeof(frame));
+  lpv_uniforms.write(&lpv.gpu, sizeof(lpv.gpu));  // read only by frames with indirect light
+  if (light_bytes) light_buffer.write(lights.lights.data(), light_bytes);
+  if (view_bytes) shadow_view_buffer.write(lights.shadow_views.data(), view_bytes);
+  if (rsm_view_bytes) rsm_view_buffer.write(lpv.rsm_views.data(), rsm_view_bytes);
 }
 
 }  // namespace renderer

@@ -8,6 +8,8 @@
 #include "renderer/frame_plan.hpp"
 #include "renderer/frame_setup.hpp"
 #include "renderer/frame_targets.hpp"
+#include "renderer/gpu_types.hpp"
+#include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/passes/rsm_pass.hpp"
 #include "renderer/passes/shadow_pass.hpp"
@@ -36,6 +38,10 @@ struct FrameResources {
   // device's limits.
   void fit(const vkx::Device& device, const FramePlan& plan, const api::RenderRequest& request,
            const LightSetup& lights);
+  // The frame's uniforms, lights, shadow views and LPV parameters, into buffers grown when
+  // they are too small (the forward and RSM passes' uniform buffers sized for the most a
+  // frame may have).
+  void upload(const vkx::Device& device, const gpu::GpuFrame& frame, const LightSetup& lights, const LpvSetup& lpv);
 };
 
 }  // namespace renderer

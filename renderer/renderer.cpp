@@ -3,6 +3,7 @@
 #include "api/counted.hpp"
 #include "api/request_error.hpp"
 #include "renderer/frame_plan.hpp"
+#include "renderer/frame_schedule.hpp"
 #include "renderer/frame_setup.hpp"
 #include "renderer/frame_resources.hpp"
 #include "renderer/frame_targets.hpp"
@@ -76,12 +77,6 @@ std::vector<api::PassStats> pass_list(const FramePlan& plan, bool dry_run) {
   for (std::uint32_t p = 0; p < kPassCount; ++p)
     passes.push_back({kPassNames[p], plan.run[p], plan.run[p] && !dry_run, plan.reason[p], {}, {}});
   return passes;
-}
-
-void ensure_upload_capacity(const vkx::Device& device, vkx::Buffer& buffer, VkDeviceSize bytes,
-                            VkBufferUsageFlags usage) {
-  bytes = std::max<VkDeviceSize>(bytes, 256);  // never zero-sized, even with no lights
-  if (!buffer || buffer.size() < bytes) buffer = vkx::Buffer(device, bytes, usage, vkx::MemoryUse::upload);
 }
 
 }  // namespace
@@ -289,48 +284,19 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   frame.depth_range = glm::vec4(camera.near, camera.far, 0.0f, 0.0f);
   frame.exposure = glm::vec4(std::exp2(out.exposure), 0.0f, 0.0f, 0.0f);
   frame.size_view = glm::uvec4(out.width, out.height, 0u, std::uint32_t(light_setup.lights.size()));
-  const auto light_bytes = light_setup.lights.size() * sizeof(gpu::GpuLight);
-  const auto view_bytes = light_setup.shadow_views.size() * sizeof(glm::mat4);
-  const auto rsm_view_bytes = lpv_setup.rsm_views.size() * sizeof(gpu::GpuRsmView);
-  ensure_upload_capacity(device, resources.frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  // Uniform buffers of the forward and RSM passes too, sized for the most a frame may have.
-  const VkBufferUsageFlags both = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
-  ensure_upload_capacity(device, resources.light_buffer, std::max(light_bytes, gpu::SHADE_MAX_LIGHTS * sizeof(gpu::GpuLight)), both);
-  ensure_upload_capacity(device, resources.shadow_view_buffer, std::max(view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(glm::mat4)),
-                         both);
-  ensure_upload_capacity(device, resources.lpv_uniforms, sizeof(lpv_setup.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  ensure_upload_capacity(device, resources.rsm_view_buffer,
-                         std::max(rsm_view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::GpuRsmView)),
-                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-  resources.frame_uniforms.write(&frame, sizeof(frame));
-  resources.lpv_uniforms.write(&lpv_setup.gpu, sizeof(lpv_setup.gpu));  // read only by frames with indirect light
-  if (light_bytes) resources.light_buffer.write(light_setup.lights.data(), light_bytes);
-  if (view_bytes) resources.shadow_view_buffer.write(light_setup.shadow_views.data(), view_bytes);
-  if (rsm_view_bytes) resources.rsm_view_buffer.write(lpv_setup.rsm_views.data(), rsm_view_bytes);
+  resources.upload(device, frame, light_setup, lpv_setup);
   const double setup_ms = ms_since(setup_start);
 
   const Frame context{plan, gpu, request, light_setup, lpv_setup, readback, gpu.camera_order(camera.position)};
   const auto cascades = std::uint32_t(lpv_setup.cascades.size());
-  // The passes in submission order. The cascades share their working grids, so each runs
-  // all its grid passes before the next starts. The forward pass shades with the grids.
-  std::vector<std::pair<Pass, std::uint32_t>> schedule;
-  for (Pass p : {kShadow, kRsm, kGBuffer})
-    if (plan.run[p]) schedule.emplace_back(p, 0);
-  for (std::uint32_t c = 0; c < cascades; ++c)
-    for (Pass p : {kInject, kGeometryVolume, kPropagate})
-      if (plan.run[p]) schedule.emplace_back(p, c);
-  for (Pass p : {kForward, kShade, kReadback})
-    if (plan.run[p]) schedule.emplace_back(p, 0);
+  const std::vector<ScheduledPass> schedule = pass_schedule(plan, cascades);
   RenderResult result;
-  std::vector<double> record_ms, wait_ms, readback_ms, wall_ms, total_gpu_ms;
-  std::vector<std::vector<double>> pass_ms(kPassCount);
-  std::vector<std::vector<std::vector<double>>> cascade_ms(kPassCount, std::vector<std::vector<double>>(cascades));
+  FrameTimings timings(cascades);
   std::vector<std::uint32_t> iterations_run(iterations.size(), 0);
   std::size_t passes_done = 0;  // for progress reports
   for (std::uint32_t f = 0; f < request.repeat; ++f) {
     const auto frame_start = Clock::now();
-    double frame_record_ms = 0.0, frame_wait_ms = 0.0, frame_gpu_ms = 0.0;
-    std::vector<double> frame_pass_ms(kPassCount, 0.0);
+    FrameTime frame_time;
     for (const auto& [p, c] : schedule) {
       // Propagation that may stop early runs in chunks, the flux of each chunk's last step
       // read in between; every other pass is one submission.
@@ -346,35 +312,30 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
         const std::uint32_t n = std::min(chunk, steps - done);
         const auto record_start = Clock::now();
         record_pass(p, c, {done + 1, n}, context);
-        frame_record_ms += ms_since(record_start);
+        frame_time.record_ms += ms_since(record_start);
         const auto submit_start = Clock::now();
         device.submit_and_wait(commands.handle());
         const double waited = ms_since(submit_start);
-        frame_wait_ms += waited;
+        frame_time.wait_ms += waited;
         pass_gpu_ms += timer.device_ms(waited);
         done += n;
-        if (p == kPropagate && done < steps && plan.convergence > 0.0f && propagation_converged(*resources.volumes, c, done, steps, plan.convergence))
+        if (p == kPropagate && done < steps && plan.convergence > 0.0f &&
+            propagation_converged(*resources.volumes, c, done, steps, plan.convergence))
           break;
       }
       if (p == kPropagate) iterations_run[c] = done;
-      if (is_grid_pass(p)) cascade_ms[p][c].push_back(pass_gpu_ms);
-      frame_pass_ms[p] += pass_gpu_ms;
-      frame_gpu_ms += pass_gpu_ms;
+      if (is_grid_pass(p)) timings.add_cascade(p, c, pass_gpu_ms);
+      frame_time.pass_ms[p] += pass_gpu_ms;
+      frame_time.gpu_ms += pass_gpu_ms;
       if (progress)
         progress({f + 1, request.repeat, kPassNames[p], double(++passes_done) / double(schedule.size() * request.repeat)});
     }
-    for (std::uint32_t p = 0; p < kPassCount; ++p)
-      if (plan.run[p]) pass_ms[p].push_back(frame_pass_ms[p]);
-    record_ms.push_back(frame_record_ms);
-    wait_ms.push_back(frame_wait_ms);
-    total_gpu_ms.push_back(frame_gpu_ms);
-
     const auto readback_start = Clock::now();
     if (readback & kReadbackDisplay) copy_to_host(resources.targets->display_readback, out, result.display);
     if (readback & kReadbackLinear) copy_to_host(resources.targets->linear_readback, out, result.linear);
-    readback_ms.push_back(ms_since(readback_start));
+    const double readback_ms = ms_since(readback_start);
     if (test_slowdown > 1.0) busy_wait_ms(ms_since(frame_start) * (test_slowdown - 1.0));
-    wall_ms.push_back(ms_since(frame_start));
+    timings.add_frame(plan, frame_time, readback_ms, ms_since(frame_start));
   }
 
   for (std::uint32_t c = 0; c < iterations.size() && plan.run[kPropagate]; ++c)
@@ -385,22 +346,14 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   api::RenderStats& stats = result.stats;
   stats = plan_stats(scene, request, plan, plan_ms);
   stats.frames = request.repeat;
-  for (std::uint32_t p = 0; p < kPassCount; ++p) {
-    api::PassStats& ps = stats.passes[p];
-    if (ps.ran) ps.gpu_ms = api::TimeSummary::of(pass_ms[p]);
-    if (ps.ran && is_grid_pass(p))
-      for (const auto& samples : cascade_ms[p]) ps.cascade_gpu_ms.push_back(api::TimeSummary::of(samples));
-  }
-  stats.gpu_ms = api::TimeSummary::of(total_gpu_ms);
+  timings.summarize(stats);
   stats.cpu_ms["scene_load"] = api::TimeSummary::of({load_ms});
   stats.cpu_ms["scene_upload"] = api::TimeSummary::of({upload_ms});
   stats.cpu_ms["setup"] = api::TimeSummary::of({setup_ms});
-  stats.cpu_ms["record"] = api::TimeSummary::of(record_ms);
-  stats.cpu_ms["submit_wait"] = api::TimeSummary::of(wait_ms);
-  stats.cpu_ms["readback"] = api::TimeSummary::of(readback_ms);
-  stats.wall_ms = api::TimeSummary::of(wall_ms);
-  if (plan.run[kInject]) stats.lpv = lpv_stats(*resources.volumes, request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count, iterations_run);
-  if (plan.run[kInject] && (readback & kReadbackLpv)) result.lpv = lpv_snapshot(device, *resources.rsm_maps, *resources.volumes, lpv_setup, plan.run[kGeometryVolume]);
+  if (plan.run[kInject])
+    stats.lpv = lpv_stats(*resources.volumes, request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count, iterations_run);
+  if (plan.run[kInject] && (readback & kReadbackLpv))
+    result.lpv = lpv_snapshot(device, *resources.rsm_maps, *resources.volumes, lpv_setup, plan.run[kGeometryVolume]);
   return result;
 }
 
