@@ -31,6 +31,13 @@ struct Light {
 };
 
 // A partial change of one of the scene's own lights, by index.
+// Whether a spot's cone half-angles are valid: 0 <= inner < outer <= a right angle, in the
+// unit of `right_angle` (the request's degrees, glTF's radians); false for NaN.
+template <class T>
+constexpr bool spot_cones_valid(T inner, T outer, T right_angle) {
+  return inner >= T(0) && inner < outer && outer <= right_angle;
+}
+
 struct LightEdit {
   std::size_t index = 0;
   std::optional<LightType> type;

@@ -37,7 +37,7 @@ std::pair<float, float> depth_range_around(glm::vec3 from, const scene::Bounds& 
 
 void check_cones(const api::Light& light, const std::string& field) {
   if (light.type != api::LightType::spot) return;
-  if (!(light.inner_cone_deg >= 0.0f && light.inner_cone_deg < light.outer_cone_deg && light.outer_cone_deg <= 90.0f))
+  if (!api::spot_cones_valid(light.inner_cone_deg, light.outer_cone_deg, 90.0f))
     throw api::DoesNotFit(field, "spot cones must satisfy 0 <= inner_cone_deg < outer_cone_deg <= 90, got " +
                                        std::to_string(light.inner_cone_deg) + " and " +
                                        std::to_string(light.outer_cone_deg));

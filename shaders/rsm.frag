@@ -5,6 +5,7 @@
 // measures projected area, so no cosine of the surface enters.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
+#include "shared/rsm_interface.h"
 #include "shared/lights.glsl"
 #include "shared/albedo_code.h"
 
@@ -15,8 +16,8 @@ layout(location = 2) in vec2 in_uv;
 // Uniform buffers and the draw's material as push constants, not storage buffers: lavapipe
 // loads a fragment shader's storage buffer lane by lane even at an address all lanes share
 // (as in forward.frag). The buffers are sized for the most views and lights a frame may have.
-layout(std140, set = 0, binding = 0) uniform Views { GpuRsmView views[SHADE_MAX_SHADOW_VIEWS]; };
-layout(std140, set = 0, binding = 1) uniform Lights { GpuLight lights[SHADE_MAX_LIGHTS]; };
+layout(std140, set = 0, binding = RSM_VIEWS) uniform Views { GpuRsmView views[SHADE_MAX_SHADOW_VIEWS]; };
+layout(std140, set = 0, binding = RSM_LIGHTS) uniform Lights { GpuLight lights[SHADE_MAX_LIGHTS]; };
 layout(set = 1, binding = 0) uniform sampler2D base_color_texture;  // read when TEXTURED
 layout(constant_id = 0) const bool TEXTURED = false;
 layout(push_constant) uniform Draw { GpuDrawMaterial material; uint view; } draw;

@@ -2,12 +2,13 @@
 // Reflective shadow maps: the scene from one light view (see rsm.frag).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
+#include "shared/rsm_interface.h"
 
 layout(location = 0) in vec3 in_position;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 
-layout(std140, set = 0, binding = 0) uniform Views { GpuRsmView views[SHADE_MAX_SHADOW_VIEWS]; };
+layout(std140, set = 0, binding = RSM_VIEWS) uniform Views { GpuRsmView views[SHADE_MAX_SHADOW_VIEWS]; };
 layout(push_constant) uniform Draw { GpuDrawMaterial material; uint view; } draw;
 
 layout(location = 0) out vec3 out_world;

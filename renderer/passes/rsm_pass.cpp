@@ -3,6 +3,7 @@
 #include "renderer/vulkan/rendering.hpp"
 #include "shaders/rsm.frag.h"
 #include "shaders/rsm.vert.h"
+#include "shaders/shared/rsm_interface.h"
 
 #include <array>
 #include <cstddef>
@@ -20,8 +21,8 @@ static_assert(offsetof(DrawConstants, view) == sizeof(gpu::GpuDrawMaterial), "as
 vkx::PipelineLayoutDesc rsm_layout(const TextureSetLayout& textures) {
   const VkShaderStageFlags vs_fs = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   vkx::PipelineLayoutDesc layout;
-  layout.bindings = {vkx::binding(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vs_fs),
-                     vkx::binding(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
+  layout.bindings = {vkx::binding(gpu::RSM_VIEWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vs_fs),
+                     vkx::binding(gpu::RSM_LIGHTS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT)};
   layout.draw_sets = {textures.handle()};
   layout.push_constant_bytes = sizeof(DrawConstants);
   layout.push_constant_stages = vs_fs;
@@ -54,8 +55,8 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
                      const vkx::Buffer& lights) const {
   for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
     vkx::DescriptorWriter(pipelines_.get(rsm_variant(variant)).descriptor_set())
-        .buffer(0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, views.handle())
-        .buffer(1, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, lights.handle())
+        .buffer(gpu::RSM_VIEWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, views.handle())
+        .buffer(gpu::RSM_LIGHTS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, lights.handle())
         .apply(device_.handle());
   const std::array<const vkx::Image*, 3> colors{&maps.position, &maps.normal, &maps.flux};
   vkx::prepare_attachments(cmd, colors, &maps.depth);

@@ -238,8 +238,8 @@ void add_light(gltf::Conversion& c, int index, const glm::dmat4& world) {
   light.range = float(gl.range);
   if (light.type == api::LightType::spot) {
     const double inner = gl.spot.innerConeAngle, outer = gl.spot.outerConeAngle;
-    if (!std::isfinite(inner) || !std::isfinite(outer) || inner < 0.0 || !(inner < outer) ||
-        outer > 3.14159265358979323846 / 2.0 + 1e-9)
+    if (!std::isfinite(inner) || !std::isfinite(outer) ||
+        !api::spot_cones_valid(inner, outer, 3.14159265358979323846 / 2.0 + 1e-9))
       invalid(what + ": spot cone angles need 0 <= innerConeAngle < outerConeAngle <= pi/2");
     light.inner_cone_deg = degrees(inner);
     light.outer_cone_deg = std::min(degrees(outer), 90.0f);
