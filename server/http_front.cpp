@@ -26,8 +26,12 @@ constexpr int kTickMs = 100;
 // A refused connection is read and dropped for this long after its answer, so that the
 // client reads the answer rather than a reset (closing a socket with unread bytes resets it).
 constexpr auto kLinger = std::chrono::milliseconds(1000);
-// Refused connections lingering at once; past this they are closed at once.
-constexpr std::size_t kMaxLingering = 1024;
+// Refused connections lingering at once; past this they are closed at once. With
+// --max-connections (512) they keep the front's descriptors under the usual limit of 1024.
+constexpr std::size_t kMaxLingering = 256;
+// Bytes read from one connection per wake-up: a client that sends without pause (a flood
+// lingering after its 431) cannot keep the front from the others and from its deadlines.
+constexpr std::size_t kMaxReadPerWake = 256 * 1024;
 
 const char* reason_phrase(int status) {
   switch (status) {
@@ -100,7 +104,10 @@ class FrontLoop {
     return fds;
   }
 
-  void stop_accepting() { epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, listening_fd_, nullptr); }
+  void stop_accepting() {
+    stopped_accepting_ = true;
+    if (!accept_paused_) epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, listening_fd_, nullptr);
+  }
 
   // Accepts every pending connection, refusing those past the caps.
   void accept_all() {
@@ -109,7 +116,12 @@ class FrontLoop {
       socklen_t length = sizeof address;
       const int fd = accept4(listening_fd_, reinterpret_cast<sockaddr*>(&address), &length,
                              SOCK_NONBLOCK | SOCK_CLOEXEC);
-      if (fd < 0) return;  // EAGAIN: none left (or a connection reset before its accept)
+      if (fd < 0) {
+        // Out of descriptors or memory: the pending connections stay in the kernel's queue,
+        // and the front stops watching for them until its next tick instead of spinning.
+        if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) pause_accepting();
+        return;  // else EAGAIN: none left (or a connection reset before its accept)
+      }
       const int on = 1;
       setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);  // the headers and body go out apart
       const std::string client = peer_address(address);
@@ -139,13 +151,14 @@ class FrontLoop {
     if (found == waiting_.end()) return;
     Waiting& w = found->second;
     char chunk[16384];
-    while (true) {
+    for (std::size_t taken = 0; taken < kMaxReadPerWake;) {
       const ssize_t n = recv(fd, chunk, sizeof chunk, 0);
       if (n == 0 || (n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) {
         close(fd, "");  // the client left
         return;
       }
       if (n < 0) break;
+      taken += std::size_t(n);
       if (w.lingering) continue;
       if (w.idle) {  // the first byte of a kept-alive connection's next request
         w.idle = false;
@@ -156,8 +169,13 @@ class FrontLoop {
     }
   }
 
-  // Refuses what ran past its deadline, and closes what lingered long enough.
+  // Refuses what ran past its deadline, and closes what lingered long enough; watches the
+  // listening socket again after a pause.
   void expire() {
+    if (accept_paused_ && !stopped_accepting_) {
+      accept_paused_ = false;
+      watch(listening_fd_);
+    }
     const auto now = Clock::now();
     std::vector<int> late;
     for (const auto& [fd, w] : waiting_)
@@ -204,6 +222,11 @@ class FrontLoop {
   std::size_t lingering() const { return lingering_; }
 
  private:
+  void pause_accepting() {
+    accept_paused_ = true;
+    epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, listening_fd_, nullptr);
+  }
+
   void watch(int fd) {
     epoll_event event{};
     event.events = EPOLLIN;
@@ -321,6 +344,8 @@ class FrontLoop {
   std::unordered_map<std::string, std::size_t> per_client_;  // admitted and not closed
   std::size_t open_ = 0;                                     // admitted and not closed
   std::size_t lingering_ = 0;
+  bool accept_paused_ = false;      // out of descriptors: not watching the listening socket
+  bool stopped_accepting_ = false;  // stop(): not watching it for good
 };
 
 }  // namespace
