@@ -1,7 +1,9 @@
 // One walk over a command line for every program's options (lpv-render, lpv-bench, lpv-server):
 // "-h" or "--help", options by name or alias, "--name value" or "--name=value", and the
 // words that are no option, with the same rules and errors everywhere. What an option means
-// is its program's: each has a table of OptionSpec and applies the walk's items in order.
+// is its program's: the walk takes the program's own table, whose entries have a `name`, an
+// `alias` ("" for none) and `takes_value` (OptionSpec is one such entry, with a setter), and
+// the program applies the items in order.
 #pragma once
 
 #include <functional>
@@ -28,10 +30,10 @@ class CommandLineError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-template <class Options>
+template <class Option>
 struct CommandLineItem {
   enum class Kind { help, option, word } kind = Kind::word;
-  const OptionSpec<Options>* option = nullptr;  // Kind::option
+  const Option* option = nullptr;  // Kind::option: its entry in the program's table
   std::string name;                             // the option as written, without "=value"
   std::string value;                            // the option's value, or the word
 };
@@ -40,10 +42,10 @@ struct CommandLineItem {
 // is missing or is another option ("-o -q" forgot the file; "-" alone is a value: standard
 // input or output); a switch takes a value only as "--name=value". Errors are thrown as
 // `Error`, made from their message (the program's usage error).
-template <class Error = CommandLineError, class Options>
-std::vector<CommandLineItem<Options>> walk_command_line(int argc, const char* const* argv,
-                                                       const std::vector<OptionSpec<Options>>& options) {
-  using Item = CommandLineItem<Options>;
+template <class Error = CommandLineError, class Option>
+std::vector<CommandLineItem<Option>> walk_command_line(int argc, const char* const* argv,
+                                                      const std::vector<Option>& options) {
+  using Item = CommandLineItem<Option>;
   std::vector<Item> items;
   for (int i = 1; i < argc; ++i) {
     std::string_view arg = argv[i];
@@ -57,8 +59,8 @@ std::vector<CommandLineItem<Options>> walk_command_line(int argc, const char* co
     }
     const auto equals = arg.starts_with("--") ? arg.find('=') : std::string_view::npos;
     const std::string_view name = arg.substr(0, equals);
-    const OptionSpec<Options>* spec = nullptr;
-    for (const OptionSpec<Options>& o : options)
+    const Option* spec = nullptr;
+    for (const Option& o : options)
       if (name == o.name || (!o.alias.empty() && name == o.alias)) spec = &o;
     if (!spec) throw Error("unknown option " + std::string(name));
     std::string value;

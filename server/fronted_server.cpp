@@ -1,5 +1,7 @@
 #include "server/fronted_server.hpp"
 
+#include "server/http_errors.hpp"
+
 #include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>

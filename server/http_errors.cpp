@@ -23,15 +23,43 @@ std::string builtin_scene_names() {
 
 }  // namespace
 
-void send_error(httplib::Response& response, const HttpError& error) {
+namespace {
+
+// The JSON body of every error answer.
+std::string error_body(const HttpError& error) {
   const nlohmann::json body = {
       {"error", {{"code", error.code}, {"message", error.message}, {"field", error.field}}}};
-  response.status = error.status;
   // Messages may quote what a client sent (a path), which need not be UTF-8.
-  response.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n",
-                       "application/json");
-  // Every 503 is worth retrying: a render takes tens of milliseconds, so a second is ample.
-  if (error.status == 503 && !response.has_header("Retry-After")) response.set_header("Retry-After", "1");
+  return body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+// Every 503 is worth retrying: a render takes tens of milliseconds, so a second is ample.
+constexpr const char* kRetryAfter503 = "1";
+
+const char* reason_phrase(int status) {
+  switch (status) {
+    case 408: return "Request Timeout";
+    case 431: return "Request Header Fields Too Large";
+    case 503: return "Service Unavailable";
+    default: return "Error";
+  }
+}
+
+}  // namespace
+
+void send_error(httplib::Response& response, const HttpError& error) {
+  response.status = error.status;
+  response.set_content(error_body(error), "application/json");
+  if (error.status == 503 && !response.has_header("Retry-After")) response.set_header("Retry-After", kRetryAfter503);
+}
+
+std::string raw_error_response(const HttpError& error) {
+  const std::string body = error_body(error);
+  std::string head = "HTTP/1.1 " + std::to_string(error.status) + " " + reason_phrase(error.status) +
+                     "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(body.size()) +
+                     "\r\nConnection: close\r\n";
+  if (error.status == 503) head += std::string("Retry-After: ") + kRetryAfter503 + "\r\n";
+  return head + "\r\n" + body;
 }
 
 HttpError parse_error(const api::RequestError& error) {

@@ -22,6 +22,9 @@ struct HttpError {
 
 // Sets status, the JSON body and its content type.
 void send_error(httplib::Response& response, const HttpError& error);
+// The same answer as raw HTTP/1.1 with "Connection: close", for what answers without httplib
+// (the front, server/http_front, and its streams): the statuses it gives have their reasons.
+std::string raw_error_response(const HttpError& error);
 
 // The request did not parse or did not validate against the schema: 400.
 HttpError parse_error(const api::RequestError& error);

@@ -1,6 +1,6 @@
 #include "server/http_front.hpp"
 
-#include <nlohmann/json.hpp>
+#include "server/http_errors.hpp"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -33,15 +33,6 @@ constexpr std::size_t kMaxLingering = 256;
 // lingering after its 431) cannot keep the front from the others and from its deadlines.
 constexpr std::size_t kMaxReadPerWake = 256 * 1024;
 
-const char* reason_phrase(int status) {
-  switch (status) {
-    case 408: return "Request Timeout";
-    case 431: return "Request Header Fields Too Large";
-    case 503: return "Service Unavailable";
-    default: return "Error";
-  }
-}
-
 std::string peer_address(const sockaddr_storage& address) {
   char text[INET6_ADDRSTRLEN] = "";
   if (address.ss_family == AF_INET)
@@ -53,19 +44,6 @@ std::string peer_address(const sockaddr_storage& address) {
 
 std::string milliseconds(std::chrono::milliseconds ms) { return std::to_string(ms.count()) + " ms"; }
 
-}  // namespace
-
-std::string raw_error_response(const HttpError& error) {
-  const nlohmann::json body = {{"error", {{"code", error.code}, {"message", error.message}, {"field", error.field}}}};
-  const std::string text = body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-  std::string head = "HTTP/1.1 " + std::to_string(error.status) + " " + reason_phrase(error.status) +
-                     "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(text.size()) +
-                     "\r\nConnection: close\r\n";
-  if (error.status == 503) head += "Retry-After: 1\r\n";
-  return head + "\r\n" + text;
-}
-
-namespace {
 
 // A connection the front reads a head from, or (lingering) drains after refusing it.
 struct Waiting {

@@ -12,7 +12,6 @@
 #pragma once
 
 #include "server/connection_limits.hpp"
-#include "server/http_errors.hpp"
 
 #include <atomic>
 #include <condition_variable>
@@ -80,8 +79,5 @@ class HttpFront {
   bool threads_stop_ = false;
   std::vector<std::thread> threads_;
 };
-
-// The raw HTTP/1.1 answer for an error the front gives itself, with "Connection: close".
-std::string raw_error_response(const HttpError& error);
 
 }  // namespace server

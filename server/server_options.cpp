@@ -46,14 +46,15 @@ void add_allowed_hosts(ServerOptions& o, std::string_view source, std::string_vi
 
 // One setting: its flag, its environment variable, and how a value is stored.
 struct Setting {
-  std::string_view flag;  // "--port"
+  std::string_view name;  // "--port"
   bool takes_value = true;
   std::function<void(ServerOptions&, std::string_view source, std::string_view value)> apply;
+  std::string_view alias;  // always "": no short names (core::walk_command_line reads it)
 
   std::string environment_name() const {
-    std::string name = "LPV_SERVER_";
-    for (char c : flag.substr(2)) name += c == '-' ? '_' : char(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
-    return name;
+    std::string variable = "LPV_SERVER_";
+    for (char c : name.substr(2)) variable += c == '-' ? '_' : char(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+    return variable;
   }
 };
 
@@ -131,17 +132,6 @@ const std::vector<Setting>& settings() {
        }},
   };
   return table;
-}
-
-// The settings as the command-line walk finds them (core/command_line.hpp), in the same
-// order: a found option's index in this table is its setting's.
-const std::vector<core::OptionSpec<ServerOptions>>& option_specs() {
-  static const std::vector<core::OptionSpec<ServerOptions>> specs = [] {
-    std::vector<core::OptionSpec<ServerOptions>> s;
-    for (const Setting& setting : settings()) s.push_back({setting.flag, "", setting.takes_value, {}});
-    return s;
-  }();
-  return specs;
 }
 
 }  // namespace
@@ -225,14 +215,14 @@ ServerOptions parse_server_options(int argc, const char* const* argv, const Envi
     const std::string name = s.environment_name();
     if (const char* value = environment(name.c_str())) s.apply(options, name, value);
   }
-  for (const auto& item : core::walk_command_line<OptionsError>(argc, argv, option_specs())) {
-    using Kind = core::CommandLineItem<ServerOptions>::Kind;
+  for (const auto& item : core::walk_command_line<OptionsError>(argc, argv, settings())) {
+    using Kind = core::CommandLineItem<Setting>::Kind;
     if (item.kind == Kind::help) {
       options.help = true;
     } else if (item.kind == Kind::word) {
       throw OptionsError("unexpected argument " + item.value + ": lpv-server takes options only");
     } else {
-      const Setting& setting = settings()[std::size_t(item.option - option_specs().data())];
+      const Setting& setting = *item.option;
       // A switch given alone is on; "--insecure=0" says otherwise.
       const bool bare_switch = !setting.takes_value && item.value.empty();
       setting.apply(options, item.name, bare_switch ? std::string_view("1") : std::string_view(item.value));

@@ -13,7 +13,7 @@ struct Options {
   bool quiet = false;
 };
 
-using Item = core::CommandLineItem<Options>;
+using Item = core::CommandLineItem<core::OptionSpec<Options>>;
 
 const std::vector<core::OptionSpec<Options>> kOptions = {
     {"--output", "-o", true, [](Options& o, std::string_view, std::string_view v) { o.output = std::string(v); }},

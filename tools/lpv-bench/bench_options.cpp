@@ -141,7 +141,7 @@ struct Flag {
   std::string_view name;
   std::string_view alias;
   unsigned commands;
-  std::function<void(Options&, const std::string& value)> set;  // empty: a switch, see below
+  std::function<void(Options&, const std::string& value)> set;  // a switch gets ""
   bool takes_value = true;
 };
 
@@ -182,17 +182,6 @@ const std::vector<Flag>& flags() {
   return table;
 }
 
-// The flags as the command-line walk finds them (core/command_line.hpp), in the same order:
-// a found option's index in this table is its flag's.
-const std::vector<core::OptionSpec<Options>>& option_specs() {
-  static const std::vector<core::OptionSpec<Options>> specs = [] {
-    std::vector<core::OptionSpec<Options>> s;
-    for (const Flag& f : flags()) s.push_back({f.name, f.alias, f.takes_value, {}});
-    return s;
-  }();
-  return specs;
-}
-
 Command command_named(const std::string& name) {
   for (const Command c : {Command::sweep, Command::diff, Command::run, Command::compare, Command::ab, Command::worker})
     if (name == name_of(c)) return c;
@@ -226,14 +215,14 @@ Options parse(int argc, char** argv) {
   std::optional<Command> command;
   // Options are checked against the command once it is known (it may come after them).
   std::vector<std::pair<const Flag*, std::string>> given;
-  for (const auto& item : core::walk_command_line<UsageError>(argc, argv, option_specs())) {
-    using Kind = core::CommandLineItem<Options>::Kind;
+  for (const auto& item : core::walk_command_line<UsageError>(argc, argv, flags())) {
+    using Kind = core::CommandLineItem<Flag>::Kind;
     if (item.kind == Kind::help) {
       o.help = true;
       return o;
     }
     if (item.kind == Kind::option)
-      given.emplace_back(&flags()[std::size_t(item.option - option_specs().data())], item.value);
+      given.emplace_back(item.option, item.value);
     else if (!command)
       command = command_named(item.value);
     else

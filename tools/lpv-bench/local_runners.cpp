@@ -31,9 +31,15 @@ RoundTrips::RoundTrips(const Options& options, const api::BenchSuite& suite) {
   runner = std::make_unique<HttpCaseRunner>(server->url());
 }
 
+namespace {
+
+api::BenchDevice device_of(const renderer::DeviceReport& report) { return {report.name, report.driver}; }
+
+}  // namespace
+
 LocalRunners::LocalRunners(const Options& options, const api::BenchSuite& suite)
     : round_trips_(options, suite),
       lab_(options),
-      renders_(lab_.renderer, {lab_.device.report().name, lab_.device.report().driver}, true) {}
+      renders_(lab_.renderer, device_of(lab_.device.report()), true) {}
 
 }  // namespace bench

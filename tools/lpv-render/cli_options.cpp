@@ -95,7 +95,7 @@ const std::vector<core::OptionSpec<Options>>& option_table() {
 Options parse(int argc, char** argv) {
   Options o;
   for (const auto& item : core::walk_command_line<UsageError>(argc, argv, option_table())) {
-    using Kind = core::CommandLineItem<Options>::Kind;
+    using Kind = core::CommandLineItem<core::OptionSpec<Options>>::Kind;
     if (item.kind == Kind::help) {
       o.help = true;
     } else if (item.kind == Kind::option) {
