@@ -214,7 +214,16 @@ TEST(SlowClients, AHeaderFloodIsAnswered431AndHeldInNoMemory) {
 }
 
 TEST(SlowClients, ConnectionsPastTheCapsAreAnswered503) {
-  ServerProcess server({"--max-connections", "6", "--max-connections-per-client", "4"});
+  // One serving thread, so that connections are handed back to the front in the order they
+  // were served: the readiness check's connection, answered before it, is then let go (and
+  // no longer counted) by the time the front closes a request of ours that asked to close.
+  // Without this, a loaded machine let the readiness connection count while the caps were
+  // filled and leave just before the seventh, which was then admitted.
+  ServerProcess server({"--threads", "1", "--max-connections", "6", "--max-connections-per-client", "4"});
+  const int settle = connect_to(server.port(), "127.0.0.1");
+  ASSERT_TRUE(send_all(settle, "GET /healthz HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n"));
+  ASSERT_EQ(status_and_code(answer(settle, 5.0)).first, 200);  // read until the server closed it
+  close(settle);
   std::vector<int> held;
   for (int i = 0; i < 4; ++i) held.push_back(connect_to(server.port(), "127.0.0.1"));
   const int fifth = connect_to(server.port(), "127.0.0.1");
