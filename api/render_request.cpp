@@ -83,6 +83,7 @@ std::string to_string(Transfer t) {
   switch (t) {
     case Transfer::cosine: return "cosine";
     case Transfer::sharpened: return "sharpened";
+    case Transfer::gather: return "gather";
   }
   throw std::invalid_argument("api::to_string: invalid Transfer");
 }

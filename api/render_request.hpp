@@ -74,11 +74,13 @@ enum class PlanRule { lights, shadows, surfaces, grid, rsm, cascades, iterations
 // them (continuous as they move: no flicker), or into the one cell they land in (the paper's
 // way: cheaper, but a light or camera moved by a hair can make the indirect light jump).
 enum class Injection { trilinear, nearest };
-// How propagation re-emits the light that enters a cell through its faces (docs/lpv.md, "The
-// transfer"): as cosine lobes along the faces' normals (the paper's), or with the lobes'
-// directional terms sharpened so that the light above a lit plane propagates unchanged
-// (no self-illumination, light travels straight).
-enum class Transfer { cosine, sharpened };
+// How the injected light gets to the cells the shading reads (docs/lpv.md, "The transfer"):
+// propagated cell by cell, re-emitted as cosine lobes along the faces' normals (the paper's),
+// or with the lobes' directional terms sharpened so that the light above a lit plane
+// propagates unchanged (no self-illumination, light travels straight); or gathered by every
+// cell from every injected cell along the straight line between them (no propagation,
+// no range limit; its cost grows with the square of the cells: docs/lpv.md, "The gather").
+enum class Transfer { cosine, sharpened, gather };
 // How much of the light crossing a cell face its blockers (the geometry volume) stop
 // (docs/lpv.md, "Blocking"): their projected area across the light's direction, from
 // either side, as an opaque surface blocks; or the paper's one-sided 2-band SH lobe, which

@@ -263,7 +263,7 @@ FramePlan plan_frame(const PlanInputs& in) {
     lpv_reason = "no light reaches the scene and no surface is emissive";
   else if (!vpls)
     lpv_reason = "every albedo is 0: nothing reflects light, and no surface is emissive";
-  for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.reason[p] = lpv_reason;
+  for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate, kGather}) plan.reason[p] = lpv_reason;
   // Black surfaces still block light: their RSM stays when it is a source of occluders.
   const bool rsm_occludes = request.lpv.occlusion && request.lpv.occlusion_from_rsm;
   if (lpv_reason.empty()) {
@@ -275,9 +275,15 @@ FramePlan plan_frame(const PlanInputs& in) {
       plan.reason[kGeometryVolume] = "occlusion disabled";
     else if (!request.lpv.occlusion_from_camera && !request.lpv.occlusion_from_scene && !any_drawn)
       plan.reason[kGeometryVolume] = "no occluders: occlusion_sources is only \"rsm\" and no light draws an RSM";
-    if (request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
+    // One of the two transfers carries the injected light to the cells the shading reads.
+    if (request.lpv.transfer == api::Transfer::gather)
+      plan.reason[kPropagate] = "lpv.transfer is \"gather\": every cell gathers the injected light itself";
+    else if (request.lpv.iterations == 0)
+      plan.reason[kPropagate] = "0 iterations";
+    if (request.lpv.transfer != api::Transfer::gather)
+      plan.reason[kGather] = "lpv.transfer \"" + api::to_string(request.lpv.transfer) + "\" propagates the light";
   }
-  for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate}) plan.run[p] = plan.reason[p].empty();
+  for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate, kGather}) plan.run[p] = plan.reason[p].empty();
   plan.convergence = api::plan_applies(request, api::PlanRule::convergence) ? request.lpv.convergence : 0.0f;
   return plan;
 }

@@ -25,14 +25,17 @@ enum Pass : std::uint32_t {
   kInject,
   kGeometryVolume,
   kPropagate,
+  kGather,
   kForward,
   kShade,
   kReadback,
   kPassCount
 };
 inline constexpr std::array<const char*, kPassCount> kPassNames = {
-    "shadow", "rsm", "gbuffer", "inject", "geometry_volume", "propagate", "forward", "shade", "readback"};
-inline bool is_grid_pass(std::uint32_t p) { return p == kInject || p == kGeometryVolume || p == kPropagate; }
+    "shadow", "rsm", "gbuffer", "inject", "geometry_volume", "propagate", "gather", "forward", "shade", "readback"};
+inline bool is_grid_pass(std::uint32_t p) {
+  return p == kInject || p == kGeometryVolume || p == kPropagate || p == kGather;
+}
 
 bool needs_direct_light(api::View v);
 bool needs_indirect_light(api::View v);

@@ -42,14 +42,22 @@ void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const
                                            ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
   const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
                             std::to_string(request.lpv.grid.z) + " cells";
+  const std::uint64_t cells_per_cascade = std::uint64_t(request.lpv.grid.x) * request.lpv.grid.y * request.lpv.grid.z;
+  if (lpv && request.lpv.transfer == api::Transfer::gather && cells_per_cascade > kGatherMaxCells)
+    throw api::DoesNotFit("lpv.grid", "the gather transfer sums the light of every cell at every cell, " + cells +
+                                          " would take " + std::to_string(cells_per_cascade * cells_per_cascade) +
+                                          " pairs a cascade; it takes at most " + std::to_string(kGatherMaxCells) +
+                                          " cells (24^3): use fewer cells, or another transfer");
   const std::uint32_t geometry_slots = geometry_sources(request.lpv).slots();
-  const std::uint64_t lpv_bytes = LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades, geometry_slots);
+  const std::uint32_t accumulated_texels = accumulated_texels_per_cell(request.lpv.transfer);
+  const std::uint64_t lpv_bytes =
+      LpvVolumes::bytes(request.lpv.grid, request.lpv.cascades, geometry_slots, accumulated_texels);
   if (lpv && lpv_bytes > kLpvBudgetBytes)
     throw api::DoesNotFit("lpv.grid", api::counted(request.lpv.cascades, "cascade") + " of " + cells + " need " +
                                             mib(lpv_bytes) + ", over the budget of " + mib(kLpvBudgetBytes) +
                                             ": use fewer cells");
   const std::uint64_t buffer_bytes =
-      LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades, geometry_slots);
+      LpvVolumes::largest_buffer_bytes(request.lpv.grid, request.lpv.cascades, geometry_slots, accumulated_texels);
   const std::uint64_t buffer_range = device.info().limits.maxStorageBufferRange;
   if (lpv && buffer_bytes > buffer_range)
     throw api::DoesNotFit("lpv.grid", cells + " need a storage buffer of " + mib(buffer_bytes) +
@@ -69,7 +77,7 @@ void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const
     atlas.emplace(device, shadow_res, shadow_layers);
   }
   if (!lpv) {
-    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1, 1);  // something for the shading to bind
+    if (!volumes) volumes.emplace(device, glm::uvec3(1), 1, 1, 1);  // something for the shading to bind
     return;  // RSMs and grids of earlier requests stay for the next that needs them
   }
   if (!rsm_maps || rsm_maps->resolution != request.lpv.rsm_resolution || rsm_maps->layers != rsm_layers) {
@@ -77,9 +85,9 @@ void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const
     rsm_maps.emplace(device, request.lpv.rsm_resolution, rsm_layers);
   }
   if (!volumes || volumes->dims != request.lpv.grid || volumes->cascades != request.lpv.cascades ||
-      volumes->geometry_slots < geometry_slots) {
+      volumes->geometry_slots < geometry_slots || volumes->accumulated_texels != accumulated_texels) {
     volumes.reset();
-    volumes.emplace(device, request.lpv.grid, request.lpv.cascades, geometry_slots);
+    volumes.emplace(device, request.lpv.grid, request.lpv.cascades, geometry_slots, accumulated_texels);
   }
   volumes->set_iterations(device, request.lpv.iterations);
 }

@@ -3,6 +3,7 @@
 
 #include "shaders/shared/geometry_volume_interface.h"
 #include "shaders/shared/gpu_types.h"
+#include "shaders/shared/lpv_gather_interface.h"
 #include "shaders/shared/lpv_inject_interface.h"
 #include "shaders/shared/lpv_propagate_interface.h"
 
@@ -19,6 +20,7 @@ static_assert(sizeof(GpuRsmView) == 96);
 static_assert(sizeof(mat4) == 64);
 // Push constants: plain 32-bit words, laid out alike by C++ and GLSL.
 static_assert(sizeof(LpvPropagatePush) == 12);
+static_assert(sizeof(LpvGatherPush) == 12);
 static_assert(sizeof(LpvInjectPush) == 8);
 static_assert(sizeof(LpvInjectEmittersPush) == 12);
 static_assert(sizeof(GeometryInjectPush) == 20);

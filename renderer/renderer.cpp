@@ -16,6 +16,7 @@
 #include "renderer/passes/gbuffer_pass.hpp"
 #include "renderer/passes/geometry_volume_pass.hpp"
 #include "renderer/passes/lpv_inject_pass.hpp"
+#include "renderer/passes/lpv_gather_pass.hpp"
 #include "renderer/passes/lpv_propagate_pass.hpp"
 #include "renderer/passes/rsm_pass.hpp"
 #include "renderer/passes/shade_pass.hpp"
@@ -96,6 +97,7 @@ struct Renderer::Impl {
         inject(device),
         geometry(device),
         propagate(device, options.propagate_column),
+        gather(device),
         shade(device),
         timer(device),
         commands(device),
@@ -113,6 +115,7 @@ struct Renderer::Impl {
   LpvInjectPass inject;
   GeometryVolumePass geometry;
   LpvPropagatePass propagate;
+  LpvGatherPass gather;
   ShadePass shade;
   PassTimer timer;
   vkx::ReusableCommandBuffer commands;
@@ -141,7 +144,8 @@ struct Renderer::Impl {
   // device, the warnings. A dry run returns them as they are.
   api::RenderStats plan_stats(const scene::Scene& scene, const api::RenderRequest& request, const FramePlan& plan,
                               double plan_ms) const;
-  // Steps first .. first + count - 1 of propagation (1-based); other passes ignore them.
+  // Steps first .. first + count - 1 of propagation (1-based), or slabs first - 1 ..
+  // first + count - 2 of the gather; other passes ignore them.
   struct Steps {
     std::uint32_t first = 1;
     std::uint32_t count = 0;
@@ -160,7 +164,9 @@ struct Renderer::Impl {
   }
   // What the forward pass and the shading read of the LPV: its cascades when it ran, else none.
   IndirectLightInputs indirect_light(const Frame& frame) const {
-    return {resources.lpv_uniforms, *resources.volumes, frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u};
+    const bool lpv = frame.plan.run[kInject];
+    return {resources.lpv_uniforms, *resources.volumes, lpv ? std::uint32_t(frame.lpv.cascades.size()) : 0u,
+            lpv && frame.request.lpv.transfer == api::Transfer::gather};
   }
   // The named scene, made resident (loaded, uploaded and warmed up) if it is not; the times
   // are 0 when it was.
@@ -299,12 +305,13 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
     FrameTime frame_time;
     for (const auto& [p, c] : schedule) {
       // Propagation that may stop early runs in chunks, the flux of each chunk's last step
-      // read in between; every other pass is one submission.
+      // read in between; the gather, one slab of cells at a time when it may be stopped;
+      // every other pass is one submission.
       // A stop check is asked between chunks too. The chunks' results are the same bits as one
       // submission's: the same dispatches in the same order.
-      const std::uint32_t steps = p == kPropagate ? iterations[c] : 1;
-      const bool chunked = p == kPropagate && (plan.convergence > 0.0f || stop_check);
-      const std::uint32_t chunk = chunked ? kConvergenceChunk : steps;
+      const std::uint32_t steps = p == kPropagate ? iterations[c] : p == kGather ? LpvGatherPass::slabs(*resources.volumes) : 1;
+      const bool chunked = (p == kPropagate && (plan.convergence > 0.0f || stop_check)) || (p == kGather && stop_check);
+      const std::uint32_t chunk = !chunked ? steps : p == kGather ? 1 : kConvergenceChunk;
       double pass_gpu_ms = 0.0;
       std::uint32_t done = 0;
       while (done < steps) {
@@ -419,6 +426,10 @@ void Renderer::Impl::record_pass(Pass pass, std::uint32_t cascade, Steps steps, 
     case kPropagate:
       propagate.record(cmd, cascade, steps.first, steps.count, frame.lpv.occlusion, frame.lpv.bounces, resources.lpv_uniforms,
                        *resources.volumes);
+      break;
+    case kGather:
+      gather.record(cmd, cascade, steps.first - 1, steps.count, frame.lpv.occlusion, resources.lpv_uniforms,
+                    *resources.volumes);
       break;
     case kForward:
       forward.record(cmd, frame.gpu, frame.draw_order, *resources.targets, direct_light(frame), indirect_light(frame),

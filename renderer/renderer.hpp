@@ -38,7 +38,9 @@ struct LpvSnapshot {
     glm::vec3 origin{0.0f};
     float cell_size = 0.0f;
     glm::uvec3 dims{0};
-    std::vector<glm::vec4> accumulated;  // 3 per cell (R, G, B SH), x-fastest cell order
+    // Per cell, x-fastest: the R, G, B SH; for the gather transfer, the R, G, B irradiance
+    // cubes, two texels each (LpvVolumes::accumulated).
+    std::vector<glm::vec4> accumulated;
   };
   std::vector<Cascade> cascades;
   std::uint32_t rsm_resolution = 0;

@@ -50,16 +50,14 @@ layout(std430, set = 0, binding = SHADE_DISPLAY) writeonly buffer Display { uint
 #include "shared/display_encode.glsl"
 #include "shared/lpv_irradiance.glsl"
 
-// The grid itself: mean intensity per unit face area (W/(m^2 sr)) of the nearest cell of the
-// finest cascade holding p, so cells show as blocks.
+// The grid itself: the mean radiance (W/(m^2 sr)) of the nearest cell of the finest cascade
+// holding p, so cells show as blocks.
 vec3 lpv_cell_view(vec3 p) {
   for (uint c = 0u; c < CASCADES; ++c) {
     GpuLpvCascade g = lpv.cascades[c];
     vec3 q = lpv_grid_position(g, p);
     if (lpv_inside_distance(g, q) < 0.0) continue;
-    int cell = lpv_accumulated_texel(ivec3(min(uvec3(q), g.dims.xyz - 1u)), c, g.dims.xyz);
-    vec3 dc = vec3(imageLoad(accumulated_r, cell).x, imageLoad(accumulated_g, cell).x, imageLoad(accumulated_b, cell).x);
-    return max(dc, vec3(0.0)) * SH_C0 / (g.origin.w * g.origin.w);
+    return cell_mean_radiance(c, ivec3(min(uvec3(q), g.dims.xyz - 1u)));
   }
   return vec3(0.0);
 }

@@ -111,8 +111,10 @@ LpvSnapshot lpv_snapshot(const vkx::Device& device, const RsmMaps& rsm_maps, con
     const CascadePlacement& p = lpv.cascades[c];
     LpvSnapshot::Cascade cascade{p.origin, p.cell_size, p.dims, {}};
     const std::size_t cells = std::size_t(p.dims.x) * p.dims.y * p.dims.z;
+    const std::size_t texels = volumes.accumulated_texels;
     for (std::size_t i = 0; i < cells; ++i)
-      for (int k = 0; k < 3; ++k) cascade.accumulated.push_back(channels[k][c * cells + i]);
+      for (int k = 0; k < 3; ++k)
+        for (std::size_t t = 0; t < texels; ++t) cascade.accumulated.push_back(channels[k][(c * cells + i) * texels + t]);
     snapshot.cascades.push_back(std::move(cascade));
   }
   return snapshot;

@@ -75,6 +75,9 @@ std::vector<CascadePlacement> place_cascades(const api::Lpv& lpv, const scene::B
 
 TransferFactors transfer_factors(api::Transfer transfer) {
   if (transfer == api::Transfer::sharpened) return {gpu::LPV_SHARPENED_TRANSFER, gpu::LPV_SHARPENED_INJECTION};
+  // The gather propagates nothing; its VPLs go in as the sharpened transfer's, so that a cell's
+  // own light reads as that transfer's does (lpv_gather_own_cell).
+  if (transfer == api::Transfer::gather) return {1.0f, gpu::LPV_SHARPENED_INJECTION};
   return {};
 }
 

@@ -13,7 +13,7 @@ constexpr VkDeviceSize kInjectedBytesPerCell = 12 * 8;
 constexpr VkDeviceSize kCornerSumBytesPerSlot = gpu::LPV_GV_WORDS * 8;
 constexpr VkDeviceSize kGridTexelsPerCell = 2 * 3;  // two grids of three channels
 constexpr VkDeviceSize kGridBytesPerCell = kGridTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
-constexpr VkDeviceSize kAccumulatedBytesPerCell = 3 * vkx::TexelBuffer::kTexelBytes;
+constexpr VkDeviceSize kAccumulatedBytesPerTexel = 3 * vkx::TexelBuffer::kTexelBytes;  // a texel per channel
 constexpr VkDeviceSize kCornerTexels = gpu::LPV_GV_CORNER_TEXELS;
 constexpr VkDeviceSize kCornerBytes = kCornerTexels * vkx::TexelBuffer::kTexelBytes;
 constexpr VkDeviceSize kFaceTexelsPerCell = 6;  // lpv_grid.glsl: the SH and spread of 3 faces
@@ -42,28 +42,32 @@ RsmMaps::RsmMaps(const vkx::Device& device, std::uint32_t res, std::uint32_t n)
       depth(device, {kDepthFormat, res, res, n, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
                      true}) {}
 
-std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots) {
+std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
+                                std::uint32_t accumulated_texels) {
   const std::uint64_t cells = cell_count(dims);
   return cells * (kInjectedBytesPerCell + kGridBytesPerCell + kFaceBytesPerCell + kFaceAlbedoBytesPerCell +
-                  kAccumulatedBytesPerCell * cascades) +
+                  kAccumulatedBytesPerTexel * accumulated_texels * cascades) +
          cell_count(dims + 1u) * (kCornerBytes + geometry_slots * kCornerSumBytesPerSlot);
 }
 
-std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots) {
-  const std::uint64_t per_cell =
-      std::max({kInjectedBytesPerCell, kGridBytesPerCell, kFaceBytesPerCell, cascades * vkx::TexelBuffer::kTexelBytes});
+std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
+                                               std::uint32_t accumulated_texels) {
+  const std::uint64_t per_cell = std::max({kInjectedBytesPerCell, kGridBytesPerCell, kFaceBytesPerCell,
+                                           accumulated_texels * cascades * vkx::TexelBuffer::kTexelBytes});
   return std::max(cell_count(dims) * per_cell, cell_count(dims + 1u) * geometry_slots * kCornerSumBytesPerSlot);
 }
 
-LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c, std::uint32_t slots)
+LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c, std::uint32_t slots,
+                       std::uint32_t texels)
     : dims(d),
       cascades(c),
       geometry_slots(slots),
+      accumulated_texels(texels),
       injected(device, cell_count(d) * kInjectedBytesPerCell / vkx::TexelBuffer::kTexelBytes, kSums),
       corner_sums(device, cell_count(d + 1u) * slots * kCornerSumBytesPerSlot / vkx::TexelBuffer::kTexelBytes, kSums),
       grids(device, cell_count(d) * kGridTexelsPerCell),
-      accumulated{vkx::TexelBuffer(device, cell_count(d) * c), vkx::TexelBuffer(device, cell_count(d) * c),
-                  vkx::TexelBuffer(device, cell_count(d) * c)},
+      accumulated{vkx::TexelBuffer(device, cell_count(d) * c * texels), vkx::TexelBuffer(device, cell_count(d) * c * texels),
+                  vkx::TexelBuffer(device, cell_count(d) * c * texels)},
       corners(device, cell_count(d + 1u) * kCornerTexels),
       faces(device, cell_count(d) * kFaceTexelsPerCell),
       face_albedo(device, cell_count(d) * kFaceAlbedoTexelsPerCell) {

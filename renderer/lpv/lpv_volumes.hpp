@@ -35,8 +35,11 @@ struct RsmMaps {
 // 20 times slower), and stores a texel to a storage buffer in one loop, where an image store
 // takes four. Cells and corners are in x-fastest order (lpv_grid.glsl).
 struct LpvVolumes {
-  // `geometry_slots`: the geometry volume's sources a frame may use (GeometrySources::slots).
-  LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots);
+  // `geometry_slots`: the geometry volume's sources a frame may use (GeometrySources::slots);
+  // `accumulated_texels`: texels a cell and channel of the light the shading reads (1: SH, 2:
+  // the gather's irradiance cube; accumulated_texels_per_cell in lpv_setup.hpp).
+  LpvVolumes(const vkx::Device& device, glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
+             std::uint32_t accumulated_texels);
 
   // Sizes the flux statistics for `iterations` per cascade. Only that small buffer depends on
   // the iteration count, so a sweep over iterations keeps the grids; it is reallocated only
@@ -48,12 +51,14 @@ struct LpvVolumes {
   VkDeviceSize corner_sum_bytes(std::uint32_t slots, bool bounces) const;
 
   // Device memory the volumes of these sizes take.
-  static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots);
+  static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
+                             std::uint32_t accumulated_texels);
   // The largest buffer of the volumes, all texel buffers: it must fit the device's
   // maxStorageBufferRange (128 MiB on lavapipe: up to 110^3 cells with one source of the
   // geometry volume, 76^3 with all three, whose corner sums are then the largest) and, in
   // texels of vkx::TexelBuffer::kTexelBytes, its maxTexelBufferElements.
-  static std::uint64_t largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots);
+  static std::uint64_t largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
+                                            std::uint32_t accumulated_texels);
 
   // Records of flux_stats (gpu::LPV_FLUX_SLOTS): the VPL flux of a cascade, and its grid's
   // flux after iteration k (k = 0: as injected).
@@ -68,6 +73,7 @@ struct LpvVolumes {
   glm::uvec3 dims;
   std::uint32_t cascades;
   std::uint32_t geometry_slots;
+  std::uint32_t accumulated_texels;
   std::uint32_t iterations = 0;    // of the current frame (set_iterations)
   std::uint32_t records_per_cascade = 0;  // in flux_stats: iterations + 2
   // The scattering passes' 64-bit fixed-point sums, added with atomics and read back as RGBA32UI
@@ -82,7 +88,8 @@ struct LpvVolumes {
   // (lpv_sender_form).
   vkx::TexelBuffer grids;
   // The light the shading reads (and filters itself), one buffer per colour channel:
-  // texel cascade * cells + cell.
+  // texel accumulated_texels * (cascade * cells + cell) + k. Propagation accumulates SH (one
+  // texel), the gather an irradiance cube (two: +x, -x, +y, -y, then +z, -z; lpv_gather.h).
   vkx::TexelBuffer accumulated[3];
   // Geometry volume per cell corner, the strongest source: texel 3 corner + k (corners in
   // x-fastest order on the (dims + 1)^3 lattice), k = 0 blocking SH, k = 1 the spread of its

@@ -30,16 +30,20 @@ ForwardPass::ForwardPass(const vkx::Device& device, const TextureSetLayout& text
 }
 
 const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const DirectLightInputs& direct,
-                                           std::uint32_t cascades, std::uint32_t curve) const {
-  // Bits 0-1: the material variant; 2-3: the tone curve; 4-6: the cascades (at most 4); above:
-  // the lights (11 bits).
-  const std::uint32_t key = (direct_light_key(direct) << 7) | (cascades << 4) | (curve << 2) | variant.index();
+                                           const IndirectLightInputs& indirect, std::uint32_t curve) const {
+  // Bits 0-1: the material variant; 2-3: the tone curve; 4-6: the cascades (at most 4); 7: the
+  // irradiance cube; above: the lights (11 bits).
+  const std::uint32_t cascades = indirect.cascades;
+  const std::uint32_t cube = indirect.cube ? 1u : 0u;
+  const std::uint32_t key =
+      (direct_light_key(direct) << 8) | (cube << 7) | (cascades << 4) | (curve << 2) | variant.index();
   return pipelines_.get(key, [&] {
     vkx::GraphicsPipelineDesc g;
     g.vertex_spirv = spirv_gbuffer_vert;
     g.fragment_spirv = spirv_forward_frag;
     g.fragment_specialization = {variant.double_sided, variant.textured, direct.light_kinds,
-                                 specialised_light_count(direct), curve, cascades, device_.info().uniform_branches};
+                                 specialised_light_count(direct), curve, cascades, device_.info().uniform_branches,
+                                 cube};
     g.vertex_input = scene_vertex_input();
     g.color_formats = {FrameTargets::kDisplayFormat};
     g.depth_format = GBuffer::kDepthFormat;
@@ -55,7 +59,7 @@ void ForwardPass::record(VkCommandBuffer cmd, const GpuScene& scene, std::span<c
                          const IndirectLightInputs& indirect, api::Tonemap tone_curve) const {
   const std::uint32_t curve = gpu_tone_curve(tone_curve);
   auto pipeline_for = [&](MaterialVariant variant) -> const vkx::Pipeline& {
-    return pipeline(variant, direct, indirect.cascades, curve);
+    return pipeline(variant, direct, indirect, curve);
   };
   for (MaterialVariant variant : scene.variants_in_use) {  // before any is bound
     vkx::DescriptorWriter writer(pipeline_for(variant).descriptor_set());

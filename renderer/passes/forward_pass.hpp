@@ -28,8 +28,8 @@ class ForwardPass {
  private:
   // One pipeline per material variant, specialisation of the light code, cascade count and
   // tone curve, made on first use.
-  const vkx::Pipeline& pipeline(MaterialVariant variant, const DirectLightInputs& direct, std::uint32_t cascades,
-                                std::uint32_t curve) const;
+  const vkx::Pipeline& pipeline(MaterialVariant variant, const DirectLightInputs& direct,
+                                const IndirectLightInputs& indirect, std::uint32_t curve) const;
   const vkx::Device& device_;
   vkx::PipelineLayoutDesc layout_;
   vkx::PipelineVariants pipelines_;

@@ -1,6 +1,6 @@
 // What a pass that shades indirect light reads (shaders/shared/lpv_irradiance.glsl): the LPV's
-// parameters and the cascades' accumulated SH, and the cascade count the shader is
-// specialised on.
+// parameters and the cascades' accumulated light, and the cascade count and the form of that
+// light (SH or irradiance cube) the shader is specialised on.
 #pragma once
 
 #include "renderer/lpv/lpv_volumes.hpp"
@@ -15,6 +15,7 @@ struct IndirectLightInputs {
   const vkx::Buffer& lpv;     // gpu::GpuLpv
   const LpvVolumes& volumes;  // the cascades' accumulated SH (not read without indirect light)
   std::uint32_t cascades;     // of indirect light to shade (0: the LPV did not run)
+  bool cube = false;          // the accumulated light is the gather's irradiance cube, not SH
 };
 
 // Binds in.lpv at `first` and the accumulated red, green and blue SH at the next three

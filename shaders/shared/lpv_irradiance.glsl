@@ -5,7 +5,7 @@
 //                     cascade loop has a constant length and is unrolled),
 //   lpv (GpuLpv), accumulated_r, accumulated_g, accumulated_b (imageBuffer, rgba32f;
 //                     lpv_accumulated_texel's layout), and includes lpv_sh.h and lpv_grid.glsl;
-// and leaves specialization constant 6 to this file (UNIFORM_BRANCHES).
+// and leaves specialization constants 6 and 7 to this file (UNIFORM_BRANCHES, IRRADIANCE_CUBE).
 #ifndef LPV_IRRADIANCE_GLSL
 #define LPV_IRRADIANCE_GLSL
 
@@ -16,6 +16,9 @@
 // The device runs only the taken side of a branch every lane of a subgroup agrees on
 // (DeviceInfo::uniform_branches): the lookup below shares its cells between lanes only then.
 layout(constant_id = 6) const bool UNIFORM_BRANCHES = true;
+// The accumulated light is the gather's irradiance cube (lpv_gather.h): two texels a cell and
+// channel, the irradiance onto surfaces facing +x, -x, +y, -y, then +z, -z; else one, its SH.
+layout(constant_id = 7) const bool IRRADIANCE_CUBE = false;
 
 // Which of the 8 cells around a point corner k is: one step up along x, y, z for bits 0, 1, 2.
 bvec3 corner_step(uint k) { return bvec3(k & 1u, k & 2u, k & 4u); }
@@ -42,6 +45,47 @@ vec4 shared_corner(vec4 of_a, vec4 of_b, uint k, bool in_a) {
 vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
   return vec3(dot(sh_nonnegative_irradiance(red), lobe), dot(sh_nonnegative_irradiance(green), lobe),
               dot(sh_nonnegative_irradiance(blue), lobe));
+}
+
+// The gather's irradiance cubes of the 8 cells from `low` to `high` in cascade c onto a surface
+// with normal n, weighted: each cell's three axes the normal faces, blended by the squares of
+// its components (exact for a normal along an axis; the weights sum to 1).
+vec3 cube_irradiance(uint c, ivec3 low, ivec3 high, float weight[8], vec3 n) {
+  GpuLpvCascade g = lpv.cascades[c];
+  vec3 n2 = n * n;
+  vec3 e = vec3(0.0);
+  for (uint corner = 0u; corner < 8u; ++corner) {
+    int cell = 2 * lpv_accumulated_texel(mix(low, high, corner_step(corner)), c, g.dims.xyz);
+    vec4 r_xy = imageLoad(accumulated_r, cell), g_xy = imageLoad(accumulated_g, cell), b_xy = imageLoad(accumulated_b, cell);
+    vec4 r_z = imageLoad(accumulated_r, cell + 1), g_z = imageLoad(accumulated_g, cell + 1), b_z = imageLoad(accumulated_b, cell + 1);
+    vec3 along_x = n.x >= 0.0 ? vec3(r_xy.x, g_xy.x, b_xy.x) : vec3(r_xy.y, g_xy.y, b_xy.y);
+    vec3 along_y = n.y >= 0.0 ? vec3(r_xy.z, g_xy.z, b_xy.z) : vec3(r_xy.w, g_xy.w, b_xy.w);
+    vec3 along_z = n.z >= 0.0 ? vec3(r_z.x, g_z.x, b_z.x) : vec3(r_z.y, g_z.y, b_z.y);
+    e += weight[corner] * (n2.x * along_x + n2.y * along_y + n2.z * along_z);
+  }
+  return e;
+}
+
+// The mean radiance (W/(m^2 sr)) a cell of cascade c holds: the intensity per unit face area of
+// its SH's constant term, or its irradiance cube's mean over pi (an isotropic radiance L gives
+// pi L on every axis).
+vec3 cell_mean_radiance(uint c, ivec3 cell) {
+  GpuLpvCascade g = lpv.cascades[c];
+  int texel = lpv_accumulated_texel(cell, c, g.dims.xyz);
+  vec3 mean;
+  if (IRRADIANCE_CUBE) {
+    vec4 r_xy = imageLoad(accumulated_r, 2 * texel), g_xy = imageLoad(accumulated_g, 2 * texel),
+         b_xy = imageLoad(accumulated_b, 2 * texel);
+    vec4 r_z = imageLoad(accumulated_r, 2 * texel + 1), g_z = imageLoad(accumulated_g, 2 * texel + 1),
+         b_z = imageLoad(accumulated_b, 2 * texel + 1);
+    vec4 ones = vec4(1.0);
+    mean = vec3(dot(r_xy, ones) + r_z.x + r_z.y, dot(g_xy, ones) + g_z.x + g_z.y, dot(b_xy, ones) + b_z.x + b_z.y) /
+           (6.0 * LPV_PI);
+  } else {
+    mean = SH_C0 * vec3(imageLoad(accumulated_r, texel).x, imageLoad(accumulated_g, texel).x,
+                        imageLoad(accumulated_b, texel).x);
+  }
+  return max(mean, vec3(0.0)) / (g.origin.w * g.origin.w);
 }
 
 // Irradiance (W/m^2) from the accumulated intensity of cascade c around q (cell units, half a
@@ -79,6 +123,7 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     weight[corner] = (w3.x * w3.y * w3.z) * in_front(mix(low, high, corner_step(corner)), surface, n);
     total += weight[corner];
   }
+  if (IRRADIANCE_CUBE) return max(cube_irradiance(c, low, high, weight, n), vec3(0.0)) / (max(total, 1e-6) * g.origin.w * g.origin.w);
   vec3 e = vec3(0.0);
   int key = lpv_accumulated_texel(low, c, g.dims.xyz);
   int key_a = key, key_b = key;

@@ -201,14 +201,14 @@ TEST(SurfelSampling, TexelCentresFallOnTheSampledPixels) {
 // (docs/lpv.md).
 TEST(LpvVolumes, LargestBufferIsTheCornerSumsAndBoundsTheGrid) {
   constexpr std::uint64_t kLavapipeRange = 128ull << 20;
-  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 1, 1), 111ull * 111 * 111 * 96);
-  EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 4, 1), kLavapipeRange);
-  EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(111), 1, 1), kLavapipeRange);
-  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(76), 1, 3), 77ull * 77 * 77 * 288);
-  EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(76), 1, 3), kLavapipeRange);
-  EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(77), 1, 3), kLavapipeRange);
+  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 1, 1, 1), 111ull * 111 * 111 * 96);
+  EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 4, 1, 1), kLavapipeRange);
+  EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(111), 1, 1, 1), kLavapipeRange);
+  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(76), 1, 3, 1), 77ull * 77 * 77 * 288);
+  EXPECT_LE(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(76), 1, 3, 1), kLavapipeRange);
+  EXPECT_GT(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(77), 1, 3, 1), kLavapipeRange);
   // In texels (maxTexelBufferElements): 6 texels of 16 bytes per corner.
-  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 1, 1) / vkx::TexelBuffer::kTexelBytes,
+  EXPECT_EQ(renderer::LpvVolumes::largest_buffer_bytes(glm::uvec3(110), 1, 1, 1) / vkx::TexelBuffer::kTexelBytes,
             111ull * 111 * 111 * 6);
 }
 

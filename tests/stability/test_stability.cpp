@@ -5,6 +5,7 @@
 #include "api/request_error.hpp"
 #include "gpu_test.hpp"
 #include "renderer/passes/geometry_volume_pass.hpp"
+#include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_builder.hpp"
@@ -65,7 +66,8 @@ TEST_P(Stability, FiniteDeterministicAndNoEnergyGain) {
   const scene::Scene scene = c.scene();
   auto& r = gpu_test::renderer();
   if (renderer::LpvVolumes::largest_buffer_bytes(c.request.lpv.grid, c.request.lpv.cascades,
-                                                 renderer::geometry_sources(c.request.lpv).slots()) >
+                                                 renderer::geometry_sources(c.request.lpv).slots(),
+                                                 renderer::accumulated_texels_per_cell(c.request.lpv.transfer)) >
       gpu_test::device().info().limits.maxStorageBufferRange) {
     // Beyond what the device binds: the documented error, not a crash or a silent clamp.
     try {

@@ -1,0 +1,105 @@
+#version 450
+// The gather transfer (lpv_gather.h, docs/lpv.md "The gather"): each cell of a slab of layers
+// sums the light of every injected cell of its cascade, each along the straight line between
+// the two, through the faces of the geometry volume it crosses, into its irradiance cube.
+// The sums run over the sources in one fixed order, so the result is deterministic.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/gpu_types.h"
+#include "shared/lpv_gather_interface.h"
+#include "shared/lpv_sh.h"
+#include "shared/lpv_gather.h"
+#include "shared/lpv_grid.glsl"
+#include "shared/lpv_fixed_point.glsl"
+#include "shared/texel_store.glsl"
+
+layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GROUP) in;
+
+layout(std140, set = 0, binding = GATHER_LPV) uniform Lpv { GpuLpv lpv; };
+layout(set = 0, binding = GATHER_INJECTED, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
+layout(set = 0, binding = GATHER_FACES, rgba32f) uniform readonly imageBuffer faces;          // lpv_face_texel
+layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_R) writeonly buffer AccumulatedR { u64vec2 accumulated_r[]; };
+layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_G) writeonly buffer AccumulatedG { u64vec2 accumulated_g[]; };
+layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_B) writeonly buffer AccumulatedB { u64vec2 accumulated_b[]; };
+layout(push_constant) uniform Push { LpvGatherPush push; };
+
+// The geometry volume blocks the light (a frame with occlusion).
+layout(constant_id = 0) const bool OCCLUDED = true;
+
+// The fraction of light along w that gets from cell `from` to cell `to`: the faces the line
+// between their centres crosses, in the order it crosses them (a 3D DDA; where it passes
+// through an edge or a corner, x before y before z).
+float transmitted(ivec3 from, ivec3 to, vec3 w, uvec3 dims) {
+  ivec3 d = to - from;
+  ivec3 step = ivec3(sign(vec3(d)));
+  vec3 span = abs(vec3(d));
+  vec3 delta = vec3(span.x > 0.0 ? 1.0 / span.x : 2.0, span.y > 0.0 ? 1.0 / span.y : 2.0, span.z > 0.0 ? 1.0 / span.z : 2.0);
+  vec3 t = 0.5 * delta;  // the next crossing along each axis, 0 at from, 1 at to
+  float length_cells = length(vec3(d));
+  int crossings = int(span.x + span.y + span.z);
+  ivec3 cell = from;
+  float through = 1.0;
+  for (int i = 0; i < crossings && through > 0.0; ++i) {
+    int axis = t.x <= t.y && t.x <= t.z ? 0 : (t.y <= t.z ? 1 : 2);
+    ivec3 next = cell;
+    next[axis] += step[axis];
+    ivec3 owner = step[axis] > 0 ? cell : next;  // a face is stored with the cell below it
+    vec4 b = imageLoad(faces, lpv_face_texel(owner, axis, dims));
+    vec3 spread = imageLoad(faces, lpv_face_spread_texel(owner, axis, dims)).xyz;
+    through *= lpv_gather_transmitted(b, spread, w, lpv_gather_where(t[axis], length_cells));
+    cell = next;
+    t[axis] += delta[axis];
+  }
+  return max(through, 0.0);
+}
+
+void main() {
+  GpuLpvCascade g = lpv.cascades[push.cascade];
+  uvec3 dims = g.dims.xyz;
+  ivec3 cell = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, int(push.first_layer));
+  if (any(greaterThanEqual(cell, ivec3(dims))) || cell.z >= int(push.first_layer + push.layers)) return;
+  float one_per_unit = 1.0 / lpv.scales.x;
+  vec3 cube[6] = vec3[6](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+  for (int z = 0; z < int(dims.z); ++z)
+    for (int y = 0; y < int(dims.y); ++y)
+      for (int x = 0; x < int(dims.x); ++x) {
+        ivec3 source = ivec3(x, y, z);
+        int texel = 6 * int(lpv_cell_index(uvec3(source), dims));
+        // The constant terms first: most cells hold no light and are passed after one load.
+        uvec4 red_first = imageLoad(injected, texel);
+        if (red_first.x == 0u && red_first.y == 0u) {
+          uvec4 green_first = imageLoad(injected, texel + 2), blue_first = imageLoad(injected, texel + 4);
+          if (green_first.x == 0u && green_first.y == 0u && blue_first.x == 0u && blue_first.y == 0u) continue;
+        }
+        vec4 sh[3];
+        for (int c = 0; c < 3; ++c)
+          sh[c] = from_fixed(fixed_pair(imageLoad(injected, texel + 2 * c)), fixed_pair(imageLoad(injected, texel + 2 * c + 1)),
+                             one_per_unit);
+        if (source == cell) {
+          for (int a = 0; a < 6; ++a)
+            cube[a] += vec3(lpv_gather_own_cell(sh[0], a), lpv_gather_own_cell(sh[1], a), lpv_gather_own_cell(sh[2], a));
+          continue;
+        }
+        vec4 emitter = lpv_gather_emitter(sh[0] + sh[1] + sh[2], lpv.transfer.y);
+        vec3 d = vec3(cell - source);
+        float axes[6];
+        float any_light = 0.0;
+        for (int a = 0; a < 6; ++a) {
+          axes[a] = lpv_gather_axis(emitter, d, a);
+          any_light += axes[a];
+        }
+        if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line
+        float through = OCCLUDED ? transmitted(source, cell, normalize(d), dims) : 1.0;
+        if (!(through > 0.0)) continue;
+        // Each channel's flux / pi: 4 c0 s0 (lpv_sh.h: flux = 4 pi c0 s0).
+        vec3 flux_per_pi = (4.0 * SH_C0 * through) * vec3(sh[0].x, sh[1].x, sh[2].x);
+        for (int a = 0; a < 6; ++a) cube[a] += flux_per_pi * axes[a];
+      }
+  // Two texels a cell and channel: (+x, -x, +y, -y) and (+z, -z, 0, 0).
+  int first = 2 * lpv_accumulated_texel(cell, push.cascade, dims);
+  accumulated_r[first] = texel_bits(vec4(cube[0].r, cube[1].r, cube[2].r, cube[3].r));
+  accumulated_r[first + 1] = texel_bits(vec4(cube[4].r, cube[5].r, 0.0, 0.0));
+  accumulated_g[first] = texel_bits(vec4(cube[0].g, cube[1].g, cube[2].g, cube[3].g));
+  accumulated_g[first + 1] = texel_bits(vec4(cube[4].g, cube[5].g, 0.0, 0.0));
+  accumulated_b[first] = texel_bits(vec4(cube[0].b, cube[1].b, cube[2].b, cube[3].b));
+  accumulated_b[first + 1] = texel_bits(vec4(cube[4].b, cube[5].b, 0.0, 0.0));
+}

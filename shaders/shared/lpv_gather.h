@@ -1,0 +1,143 @@
+// The gather transfer (api::Transfer::gather, docs/lpv.md "The gather"): every cell of a
+// cascade gathers the light of every injected cell directly, along the straight line between
+// them, instead of receiving it one propagation step at a time. Shared by C++ (the CPU
+// reference of tests/lpv) and GLSL (lpv_gather.comp) so both use one set of formulas; the
+// conventions of lpv_sh.h, which must be included first (in the same precision).
+//
+// A cell's result is an irradiance cube: for each of the 6 axis directions a, the irradiance
+// onto a surface facing a (times s^2, the grid's units: lpv_sh.h), which the shading blends by
+// the squares of the normal's components (lpv_irradiance.glsl). Two-band SH cannot hold light
+// that arrives from one side: they give a surface facing it 3/4 of its irradiance and a
+// surface it grazes 1/4, so a ceiling lit from a patch of floor got 0.7 of its light and a
+// floor lit by far-off parts of itself got some. The cube is exact for surfaces along the axes.
+#if defined(__cplusplus) && defined(LPV_SH_DOUBLE)
+#ifndef LPV_GATHER_DOUBLE_H
+#define LPV_GATHER_DOUBLE_H
+#define LPV_GATHER_BODY
+#endif
+#elif !defined(LPV_GATHER_H)
+#define LPV_GATHER_H
+#define LPV_GATHER_BODY
+#endif
+
+#ifdef LPV_GATHER_BODY
+#undef LPV_GATHER_BODY
+
+#ifdef __cplusplus
+#ifdef LPV_SH_DOUBLE
+namespace gpu_double {
+#else
+namespace gpu {
+#endif
+using glm::min;
+#define LPV_FUNC inline
+#define LPV_CONST_F inline constexpr lpv_real
+#define LPV_CONST_I inline constexpr int
+#else
+#define lpv_real float
+#define LPV_FUNC
+#define LPV_CONST_F const float
+#define LPV_CONST_I const int
+#endif
+
+// A source cell stands for about a cell face of lit surface: its light at distance r falls
+// off as 1 / (r^2 + 1/pi) (cell units), the irradiance on the axis of a disc of that area,
+// which stays finite next to it where a point's 1/r^2 does not.
+LPV_CONST_F LPV_GATHER_SOURCE_AREA_TERM = 0.3183098862;  // 1 / pi
+
+// The 6 axis directions of the irradiance cube, in its order: +x, -x, +y, -y, +z, -z.
+LPV_FUNC vec3 lpv_cube_axis(int a) {
+  vec3 axis = vec3(0.0f);
+  axis[a / 2] = a % 2 == 0 ? lpv_real(1) : lpv_real(-1);
+  return axis;
+}
+
+// What an injected cell emits, from its injected SH summed over the channels: the mean normal
+// of its VPLs (xyz, unit or zero) and how coherent they are (w, |mean normal| in [0, 1]: 1 for
+// one surface, 0 for opposite faces that cancel). Injection adds a VPL of flux phi facing n as
+// phi / (4 pi) (1 + 2 f <n, w>) (f = `injection`, lpv.transfer.y), so the band-1 vector over
+// the constant term is 2 f times the flux-weighted mean normal.
+LPV_FUNC vec4 lpv_gather_emitter(vec4 summed_sh, lpv_real injection) {
+  const vec3 band1 = SH_C1 * vec3(-summed_sh.w, -summed_sh.y, summed_sh.z);
+  const lpv_real constant = SH_C0 * summed_sh.x;
+  if (!(constant > lpv_real(0))) return vec4(0.0f);
+  const vec3 m = band1 / (lpv_real(2) * injection * constant);
+  const lpv_real coherence = min(sqrt(dot(m, m)), lpv_real(1));
+  return coherence > lpv_real(0) ? vec4(normalize(m), coherence) : vec4(0.0f);
+}
+
+// The emitter's intensity towards unit w per unit of flux / pi: a cosine lobe about its normal
+// for its coherent part, isotropic (1/4: the same flux) for the rest. Nothing leaves a surface
+// backwards or along itself, which the two-band SH of a lobe (1/4 + 1/2 <n, w>) would send.
+LPV_FUNC lpv_real lpv_gather_lobe(vec4 emitter, vec3 w) {
+  const vec3 n = vec3(emitter.x, emitter.y, emitter.z);
+  return (lpv_real(1) - emitter.w) * lpv_real(0.25) + emitter.w * max(dot(n, w), lpv_real(0));
+}
+
+// The irradiance onto a surface facing cube axis a (times s^2), per unit of flux / pi of the
+// source, from a source at offset d (cell units) from the gathering cell's centre, unoccluded.
+// The surface is taken half a cell behind the cell's centre along a: the shading reads each
+// surface from the cells 0 to 1 cell in front of it (lpv_irradiance.glsl), so half a cell
+// is where the surfaces a cell lights lie on average. Measured at the centre, a floor missed
+// the light of the wall beside it from below the centre's height, the nearest and brightest.
+LPV_FUNC lpv_real lpv_gather_axis(vec4 emitter, vec3 d, int a) {
+  const vec3 axis = lpv_cube_axis(a);
+  const vec3 to_surface = d - lpv_real(0.5) * axis;
+  const lpv_real r2 = dot(to_surface, to_surface);
+  const vec3 w = to_surface / sqrt(r2);
+  return lpv_gather_lobe(emitter, w) * max(-dot(w, axis), lpv_real(0)) / (r2 + LPV_GATHER_SOURCE_AREA_TERM);
+}
+
+// Where a crossing lies on the line from a source to the gathering cell, for which blockers
+// stop light there (lpv_gather_transmitted).
+LPV_CONST_I LPV_GATHER_LEAVING = 0;  // within a cell of the source
+LPV_CONST_I LPV_GATHER_ONWARD = 1;   // further on
+LPV_CONST_I LPV_GATHER_NEAR_BOTH = 2;  // within a cell of both ends
+
+// The fraction of light along unit w that crosses a face whose blockers have the SH b (their
+// potentials times their cosine lobes) and the spread of their normals (lpv_sh.h, "Blocking").
+// The blockers of a cell face are known only to lie somewhere within a cell of it, so which side
+// of them the light is on decides: light meets a surface's front (<n, w> < 0) where it arrives
+// at it, and its back where it leaves it or where it runs into an object from behind its far
+// side. Onward, the open part stops only light meeting blockers from behind: the surfaces the
+// light arrives at pass it (it reached them; the cube reads it there), so a ceiling keeps the
+// light that crosses its own cell, while the far side of anything solid, or of a thin wall,
+// stops it. Leaving, the open part stops only light meeting blockers' fronts: the source's own
+// surface passes it (it leaves from it), a wall in front of it does not. The closed part
+// (spread beyond the first moment: both sides of a thin wall, a solid's faces) stops light
+// either way.
+LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, int where) {
+  const vec3 m = vec3(-b.w, -b.y, b.z) / SH_COSINE_C1;  // sum p n (b = sum p cosine lobe(n))
+  const lpv_real u = dot(m, w);
+  const lpv_real closed = max(lpv_closed_blocking(spread, w) - abs(u), lpv_real(0));
+  const lpv_real open_part = where == LPV_GATHER_NEAR_BOTH ? lpv_real(0)
+                             : where == LPV_GATHER_LEAVING ? max(-u, lpv_real(0))
+                                                           : max(u, lpv_real(0));
+  return lpv_real(1) - clamp(open_part + closed, lpv_real(0), lpv_real(1));
+}
+
+// Which of those a crossing at parameter t (0 at the source, 1 at the gathering cell) of a
+// line `length` cells long is.
+LPV_FUNC int lpv_gather_where(lpv_real t, lpv_real length) {
+  const bool leaving = t * length < lpv_real(1);
+  const bool arriving = (lpv_real(1) - t) * length < lpv_real(1);
+  return leaving && arriving ? LPV_GATHER_NEAR_BOTH : leaving ? LPV_GATHER_LEAVING : LPV_GATHER_ONWARD;
+}
+
+// A cell's own injected light onto a surface facing cube axis a: its SH against the cosine
+// lobe, made nowhere negative first, as the propagated grids are read (lpv_irradiance.glsl).
+// Its VPLs lie within the cell, where no direction to them is defined.
+LPV_FUNC lpv_real lpv_gather_own_cell(vec4 sh, int a) {
+  return max(dot(sh_nonnegative_irradiance(sh), sh_cosine_lobe(-lpv_cube_axis(a))), lpv_real(0));
+}
+
+#ifdef __cplusplus
+}  // namespace gpu or gpu_double
+#else
+#undef lpv_real
+#endif
+#undef LPV_FUNC
+#undef LPV_CONST_F
+#undef LPV_CONST_I
+
+#endif  // LPV_GATHER_BODY
