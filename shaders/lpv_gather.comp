@@ -26,28 +26,27 @@ layout(push_constant) uniform Push { LpvGatherPush push; };
 layout(constant_id = 0) const bool OCCLUDED = true;
 
 // The fraction of light along w that gets from cell `from` to cell `to`: the faces the line
-// between their centres crosses, in the order it crosses them (a 3D DDA; where it passes
-// through an edge or a corner, x before y before z).
+// between their centres crosses, in the order it crosses them (lpv_gather_next_axis).
 float transmitted(ivec3 from, ivec3 to, vec3 w, uvec3 dims) {
   ivec3 d = to - from;
+  ivec3 span = abs(d);
   ivec3 step = ivec3(sign(vec3(d)));
-  vec3 span = abs(vec3(d));
-  vec3 delta = vec3(span.x > 0.0 ? 1.0 / span.x : 2.0, span.y > 0.0 ? 1.0 / span.y : 2.0, span.z > 0.0 ? 1.0 / span.z : 2.0);
-  vec3 t = 0.5 * delta;  // the next crossing along each axis, 0 at from, 1 at to
+  ivec3 next = ivec3(1);  // each axis's next crossing, t = next / (2 span)
   float length_cells = length(vec3(d));
-  int crossings = int(span.x + span.y + span.z);
+  int crossings = span.x + span.y + span.z;
   ivec3 cell = from;
   float through = 1.0;
   for (int i = 0; i < crossings && through > 0.0; ++i) {
-    int axis = t.x <= t.y && t.x <= t.z ? 0 : (t.y <= t.z ? 1 : 2);
-    ivec3 next = cell;
-    next[axis] += step[axis];
-    ivec3 owner = step[axis] > 0 ? cell : next;  // a face is stored with the cell below it
+    int axis = lpv_gather_next_axis(next, span);
+    ivec3 ahead = cell;
+    ahead[axis] += step[axis];
+    ivec3 owner = step[axis] > 0 ? cell : ahead;  // a face is stored with the cell below it
     vec4 b = imageLoad(faces, lpv_face_texel(owner, axis, dims));
     vec3 spread = imageLoad(faces, lpv_face_spread_texel(owner, axis, dims)).xyz;
-    through *= lpv_gather_transmitted(b, spread, w, lpv_gather_where(t[axis], length_cells));
-    cell = next;
-    t[axis] += delta[axis];
+    float t = float(next[axis]) / float(2 * span[axis]);
+    through *= lpv_gather_transmitted(b, spread, w, lpv_gather_where(t, length_cells));
+    cell = ahead;
+    next[axis] += 2;
   }
   return max(through, 0.0);
 }

@@ -29,6 +29,7 @@ namespace gpu_double {
 #else
 namespace gpu {
 #endif
+using glm::ivec3;
 using glm::min;
 #define LPV_FUNC inline
 #define LPV_CONST_F inline constexpr lpv_real
@@ -114,6 +115,23 @@ LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, int where)
                              : where == LPV_GATHER_LEAVING ? max(-u, lpv_real(0))
                                                            : max(u, lpv_real(0));
   return lpv_real(1) - clamp(open_part + closed, lpv_real(0), lpv_real(1));
+}
+
+// The line from a source cell's centre to the gathering cell's, d = (their offset), crosses
+// |d_k| faces across axis k, at the parameters t = n / (2 |d_k|) for n = 1, 3, 5, ... (0 at the
+// source, 1 at the gathering cell). Which comes first is decided in integers, so that a line
+// through an edge or a corner crosses its faces in the same order in float and in double:
+// x before y before z on a tie. `next` holds each axis's next n, `span` the |d_k|; an axis
+// that is never crossed (span 0) never comes first.
+LPV_FUNC bool lpv_gather_crosses_first(int next_a, int span_a, int next_b, int span_b) {
+  if (span_b == 0) return true;
+  if (span_a == 0) return false;
+  return next_a * span_b <= next_b * span_a;
+}
+LPV_FUNC int lpv_gather_next_axis(ivec3 next, ivec3 span) {
+  if (lpv_gather_crosses_first(next.x, span.x, next.y, span.y) && lpv_gather_crosses_first(next.x, span.x, next.z, span.z))
+    return 0;
+  return lpv_gather_crosses_first(next.y, span.y, next.z, span.z) ? 1 : 2;
 }
 
 // Which of those a crossing at parameter t (0 at the source, 1 at the gathering cell) of a

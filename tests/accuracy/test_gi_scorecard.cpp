@@ -61,13 +61,10 @@ void print(const accuracy::SceneScore& s) {
   std::fflush(stdout);
 }
 
-class GiScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
-
-TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) {
-  const Bounds& b = GetParam();
+// Scores `request` on the bounds' scene, prints it, writes its images where
+// LPV_SCORECARD_DUMP says, and checks it against the bounds.
+void score_within_bounds(const Bounds& b, api::RenderRequest request) {
   accuracy::Workbench bench(gpu_test::renderer());
-  const char* custom = std::getenv("LPV_SCORECARD_REQUEST");
-  api::RenderRequest request = custom ? api::parse_render_request(custom) : api::RenderRequest{};
   request.scene = b.scene;
   const accuracy::SceneScore s = accuracy::score_request(bench, request, settings());
   print_header();
@@ -93,6 +90,21 @@ TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) {
   }
 }
 
+class GiScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
+class GatherScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
+
+TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) {
+  const char* custom = std::getenv("LPV_SCORECARD_REQUEST");
+  score_within_bounds(GetParam(), custom ? api::parse_render_request(custom) : api::RenderRequest{});
+}
+
+// The gather transfer (docs/lpv.md, "The gather") at the default request otherwise.
+TEST_P(GatherScorecard, GatherStaysWithinItsBounds) {
+  api::RenderRequest request;
+  request.lpv.transfer = api::Transfer::gather;
+  score_within_bounds(GetParam(), request);
+}
+
 // clang-format off
 // Measured at 64x64, 1024 samples (docs/accuracy.md, "The scorecard"): gain, indirect ratio,
 // probe. Bounds: gain +0.06, indirect ratio +-0.15, probes as commented; the lone plane's
@@ -110,14 +122,29 @@ const Bounds kBounds[] = {
     {"gallery-court",      0.58,  0.60, 0.90,   9.0,     0.0,  0.0},   // 0.520 0.751
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.001
 };
+
+// The same for {"lpv": {"transfer": "gather"}}, with the same margins.
+const Bounds kGatherBounds[] = {
+    // scene               gain   indirect      ind/dir  probe
+    {"cornell-box",        0.23,  0.77, 1.07,   9.0,     0.85, 1.20},  // 0.171 0.921, ceiling 1.005
+    {"cornell-box-point",  0.23,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.173 0.901
+    {"sun-courtyard",      0.33,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.266 0.840
+    {"corridor",           0.31,  0.67, 0.97,   9.0,     0.0,  0.0},   // 0.247 0.821
+    {"thin-wall-room",     0.27,  0.76, 1.06,   9.0,     0.0,  0.05},  // 0.207 0.907, leak 0.030
+    {"open-court",         0.42,  0.76, 1.06,   9.0,     0.0,  0.0},   // 0.356 0.907
+    {"gallery-court",      0.60,  0.71, 1.01,   9.0,     0.0,  0.0},   // 0.535 0.857
+    {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
+};
 // clang-format on
 
-INSTANTIATE_TEST_SUITE_P(BuiltinScenes, GiScorecard, ::testing::ValuesIn(kBounds),
-                         [](const ::testing::TestParamInfo<Bounds>& info) {
-                           std::string name = info.param.scene;
-                           for (char& c : name)
-                             if (c == '-') c = '_';
-                           return name;
-                         });
+std::string scene_test_name(const ::testing::TestParamInfo<Bounds>& info) {
+  std::string name = info.param.scene;
+  for (char& c : name)
+    if (c == '-') c = '_';
+  return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(BuiltinScenes, GiScorecard, ::testing::ValuesIn(kBounds), scene_test_name);
+INSTANTIATE_TEST_SUITE_P(BuiltinScenes, GatherScorecard, ::testing::ValuesIn(kGatherBounds), scene_test_name);
 
 }  // namespace

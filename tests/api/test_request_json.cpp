@@ -261,6 +261,12 @@ TEST(ParseRequest, ReadsEveryField) {
   EXPECT_EQ(r.repeat, 10u);
 }
 
+TEST(RequestJson, TheGatherTransferReadsAndWritesBack) {
+  const api::RenderRequest r = api::parse_render_request(R"({"lpv": {"transfer": "gather"}})");
+  EXPECT_EQ(r.lpv.transfer, api::Transfer::gather);
+  EXPECT_EQ(api::parse_render_request(api::to_json(r).dump()).lpv.transfer, api::Transfer::gather);
+}
+
 TEST(ParseRequest, AcceptsValuesAtTheLimits) {
   const char* valid[] = {
       R"({"camera": {"fov_y_deg": 179.9}})",

@@ -1,6 +1,7 @@
 // The LPV passes on the device: flux conservation of injection for every light type, the
 // GPU grids against the CPU reference, no energy gain, determinism, and what the Cornell box
 // must show (indirect light where direct light does not reach, colour bleeding).
+#include "api/request_error.hpp"
 #include "gpu_test.hpp"
 #include "lpv_cpu_reference.hpp"
 #include "lpv_snapshot_grid.hpp"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <memory>
 
 namespace {
@@ -231,6 +233,93 @@ TEST_F(Lpv, OccludedPropagationMatchesTheDoublePrecisionReference) {
                 api::to_string(model).c_str(), blocked, d);
     EXPECT_GT(blocked, 0.05) << "the geometry volume blocks light";
     EXPECT_LT(d, kPropagatedGridTolerance);
+  }
+}
+
+// The gather (lpv.transfer "gather") against its double-precision reference, from the GPU's
+// own injected grid (the sharpened transfer's injection, which the gather shares, read at 0
+// iterations) and its own geometry volume. The lines between cells cross faces whose blocking
+// clamps at 0 and 1, and float and double may land on either side of a kink; what is left is
+// float rounding over sums of up to 1728 sources.
+TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
+  std::map<std::uint32_t, double> open_total;  // by grid width
+  for (const bool occlusion : {false, true}) {
+    for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(12, 9, 7)}) {
+      SCOPED_TRACE(std::string(occlusion ? "occlusion, " : "no occlusion, ") + std::to_string(dims.x) + "x" +
+                   std::to_string(dims.y) + "x" + std::to_string(dims.z));
+      api::RenderRequest request = small_grid_request(0);
+      request.lpv.grid = dims;
+      request.lpv.occlusion = occlusion;
+      const auto injected = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+      request.lpv.transfer = api::Transfer::gather;
+      const auto gathered = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+      lpv_ref::BasicFaceBlocking<glm::dvec4> faces;
+      if (occlusion) {
+        ASSERT_FALSE(gathered.lpv.faces.empty());
+        faces.sh.assign(gathered.lpv.faces.begin(), gathered.lpv.faces.end());
+        for (const glm::vec4& spread : gathered.lpv.face_spreads) faces.spread.push_back(glm::dvec3(spread));
+      }
+      const std::vector<double> exact = lpv_ref::gather(grid_of(injected.lpv.cascades.at(0)), faces,
+                                                        renderer::transfer_factors(api::Transfer::gather).injected);
+      const std::vector<glm::vec4>& texels = gathered.lpv.cascades.at(0).accumulated;  // 2 a cell and channel
+      ASSERT_EQ(texels.size() * 3, exact.size());
+      double diff = 0.0, scale = 0.0, lit = 0.0, total = 0.0;
+      for (std::size_t i = 0; i < exact.size(); ++i) {
+        total += exact[i];
+        const std::size_t texel = i / 6 * 2 + i % 6 / 4;  // (+x, -x, +y, -y), (+z, -z, 0, 0)
+        diff = std::max(diff, std::abs(double(texels[texel][int(i % 6 % 4)]) - exact[i]));
+        scale = std::max(scale, std::abs(exact[i]));
+        lit += exact[i] > 0.0;
+      }
+      std::printf("gather, %s: GPU (float) against double: %.2e of the largest value (%.0f of %zu values lit)\n",
+                  occlusion ? "occluded" : "open", diff / scale, lit, exact.size());
+      EXPECT_GT(lit, 0.5 * double(exact.size())) << "the gather lights most cells";
+      if (occlusion) {
+        EXPECT_LT(total, 0.95 * open_total[dims.x]) << "the geometry volume blocks some light";
+      } else {
+        open_total[dims.x] = total;
+      }
+      EXPECT_LT(diff / scale, 2e-5);
+    }
+  }
+}
+
+// The gather sums its sources in one fixed order: the same request gives the same bits.
+TEST_F(Lpv, GatherIsDeterministic) {
+  api::RenderRequest request = lpv_request("cornell-box");
+  request.lpv.transfer = api::Transfer::gather;
+  request.lpv.grid = glm::uvec3(12);
+  const auto first = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+  const auto second = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+  ASSERT_FALSE(first.lpv.cascades.at(0).accumulated.empty());
+  EXPECT_EQ(0, std::memcmp(first.lpv.cascades.at(0).accumulated.data(), second.lpv.cascades.at(0).accumulated.data(),
+                           first.lpv.cascades.at(0).accumulated.size() * sizeof(glm::vec4)));
+  EXPECT_EQ(first.linear.pixels, second.linear.pixels);
+}
+
+// Its cost grows with the square of the cells: past 24^3 a cascade it is refused, naming the
+// grid, before anything is allocated; the planner says which transfer ran and which did not.
+TEST_F(Lpv, GatherTakesAtMost24CubedCellsAndSaysSo) {
+  api::RenderRequest request = lpv_request("cornell-box");
+  request.lpv.transfer = api::Transfer::gather;
+  request.lpv.grid = glm::uvec3(25, 24, 24);
+  try {
+    gpu_test::renderer().render(request, renderer::kReadbackLinear);
+    ADD_FAILURE() << "a 25x24x24 gather was rendered";
+  } catch (const api::DoesNotFit& e) {
+    EXPECT_EQ(e.field(), "lpv.grid");
+    EXPECT_NE(std::string(e.what()).find("at most 13824 cells"), std::string::npos) << e.what();
+  }
+  request.lpv.grid = glm::uvec3(8);
+  const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear);
+  for (const api::PassStats& pass : result.stats.passes) {
+    if (pass.name == "gather") {
+      EXPECT_TRUE(pass.ran);
+    }
+    if (pass.name == "propagate") {
+      EXPECT_FALSE(pass.ran);
+      EXPECT_NE(pass.reason.find("gather"), std::string::npos) << pass.reason;
+    }
   }
 }
 
