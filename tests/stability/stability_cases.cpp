@@ -3,6 +3,7 @@
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -232,6 +233,30 @@ std::vector<Case> make_cases() {
   with_camera("camera-near-far", "near plane 1e-4 before the far plane", {0, 1, 3.4f}, {0, 1, 0}, 40, 3.0f, 3.0001f);
   with_camera("camera-fov-1", "fov 1 degree", {0, 1, 3.4f}, {0, 1, 0}, 1);
   with_camera("camera-fov-179", "fov 179 degrees", {0, 1, 3.4f}, {0, 1, 0}, 179);
+  // The gather transfer on the cases that push what it computes: lines through a light's own
+  // cell, edges and corners, extreme intensities and scales, nothing to gather, one cell, and
+  // its largest grid.
+  for (const char* name : {"degenerate-triangles", "empty-scene", "light-on-cell-centre", "light-on-cell-corner",
+                           "light-grazing", "light-1e-6", "light-1e6", "cornell-1mm", "cornell-10km", "flat-scene",
+                           "grid-1-cell", "black-everywhere", "white-closed-box"}) {
+    const auto found = std::find_if(c.begin(), c.end(), [&](const Case& k) { return k.name == name; });
+    Case gather = *found;
+    gather.name = std::string("gather-") + name;
+    gather.what += ", gathered";
+    gather.request.lpv.transfer = api::Transfer::gather;
+    if (gather.request.lpv.grid == glm::uvec3(32)) {  // placed_grid's 0.1 m lattice, 16^3 of it
+      gather.request.lpv.grid = glm::uvec3(16);
+      gather.request.lpv.origin = glm::vec3(-0.8f, 0.2f, -0.8f);
+      gather.request.lpv.extent = 1.6f;
+    }
+    c.push_back(std::move(gather));
+  }
+  {
+    api::RenderRequest r = small();
+    r.lpv.transfer = api::Transfer::gather;
+    r.lpv.grid = glm::uvec3(24);
+    c.push_back(with_request("gather-grid-24", "the gather's largest grid, 24^3 cells", r));
+  }
   return c;
 }
 
