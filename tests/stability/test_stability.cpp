@@ -151,19 +151,34 @@ scene::Scene scaled_cornell_off_axis(float s) {
   return scene;
 }
 
+// The views and transfers the invariants below hold: the direct light, and the indirect light
+// of the default (propagating) transfer and of the gather.
+struct ViewAndTransfer {
+  api::View view;
+  api::Transfer transfer;
+  std::string name() const {
+    return api::to_string(view) + (transfer == api::Transfer::gather ? "-gathered" : "");
+  }
+};
+const ViewAndTransfer kInvariantViews[] = {{api::View::direct, api::Transfer::sharpened},
+                                           {api::View::indirect, api::Transfer::sharpened},
+                                           {api::View::indirect, api::Transfer::gather}};
+
 TEST_F(Invariants, ScalingTheSceneAndThePointLightBySSquared) {
   auto& r = gpu_test::renderer();
-  for (api::View view : {api::View::direct, api::View::indirect}) {
+  for (const ViewAndTransfer& v : kInvariantViews) {
+    const api::View view = v.view;
     api::RenderRequest req = small_final();
     req.output.view = view;
+    req.lpv.transfer = v.transfer;
     const auto metre = r.render(scaled_cornell_off_axis(1.0f), req, renderer::kReadbackLinear);
-    gpu_test::save_artifact("scale-" + api::to_string(view) + "-1", metre.linear);
+    gpu_test::save_artifact("scale-" + v.name() + "-1", metre.linear);
     for (float s : {1e-3f, 1e4f}) {
       const auto scaled = r.render(scaled_cornell_off_axis(s), req, renderer::kReadbackLinear);
-      gpu_test::save_artifact("scale-" + api::to_string(view) + "-" + (s < 1.0f ? "1e-3" : "1e4"), scaled.linear);
+      gpu_test::save_artifact("scale-" + v.name() + "-" + (s < 1.0f ? "1e-3" : "1e4"), scaled.linear);
       const double d = relative_rmse(scaled.linear, metre.linear);
-      const std::string what = api::to_string(view) + " light, the Cornell box x " + std::to_string(s);
-      note("scale-invariance difference, " + api::to_string(view) + " (rel. RMSE)", d, what);
+      const std::string what = v.name() + " light, the Cornell box x " + std::to_string(s);
+      note("scale-invariance difference, " + v.name() + " (rel. RMSE)", d, what);
       std::printf("scale invariance, %s: relative RMSE %.4f\n", what.c_str(), d);
       EXPECT_TRUE(std::isfinite(d));
       EXPECT_LT(d, view == api::View::direct ? 1e-4 : 1e-3) << what;
@@ -188,14 +203,16 @@ api::RenderRequest with_light_moved(const scene::Scene& cornell, api::RenderRequ
 TEST_F(Invariants, ATinyMoveOfTheLightOrTheCamera) {
   const scene::Scene cornell = *scene::make_builtin_scene("cornell-box");
   auto& r = gpu_test::renderer();
-  for (api::View view : {api::View::direct, api::View::indirect}) {
+  for (const ViewAndTransfer& v : kInvariantViews) {
+    const api::View view = v.view;
     api::RenderRequest base = small_final();
     base.output.view = view;
     base.output.width = base.output.height = 64;
     base.plan = api::PlanMode::exact;
     base.lpv.rsm_resolution = 512;
+    base.lpv.transfer = v.transfer;
     const auto before = r.render(cornell, base, renderer::kReadbackLinear);
-    gpu_test::save_artifact("move-" + api::to_string(view) + "-before", before.linear);
+    gpu_test::save_artifact("move-" + v.name() + "-before", before.linear);
     const float step = 1e-4f * kCornellCell;
     api::RenderRequest moved_camera = base;
     moved_camera.camera = cornell.camera;
@@ -204,10 +221,10 @@ TEST_F(Invariants, ATinyMoveOfTheLightOrTheCamera) {
     for (const auto& [what, request] :
          {std::pair{"light", with_light_moved(cornell, base, 1e-4f)}, std::pair{"camera", moved_camera}}) {
       const auto after = r.render(cornell, request, renderer::kReadbackLinear);
-      gpu_test::save_artifact("move-" + api::to_string(view) + "-" + what, after.linear);
+      gpu_test::save_artifact("move-" + v.name() + "-" + what, after.linear);
       const double d = relative_rmse(after.linear, before.linear);
-      const std::string where = std::string(what) + " moved 1e-4 cell, " + api::to_string(view) + " light";
-      note("continuity jump, " + api::to_string(view) + " (rel. RMSE)", d, where);
+      const std::string where = std::string(what) + " moved 1e-4 cell, " + v.name() + " light";
+      note("continuity jump, " + v.name() + " (rel. RMSE)", d, where);
       std::printf("continuity, %s: relative RMSE %.5f\n", where.c_str(), d);
       EXPECT_TRUE(std::isfinite(d));
       // A camera moved by 1.3e-5 m shifts the image by about 1e-5 of a pixel.
