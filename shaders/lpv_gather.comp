@@ -1,8 +1,9 @@
 #version 450
 // The gather transfer (lpv_gather.h, docs/lpv.md "The gather"): each cell of a slab of layers
-// sums the light of every injected cell of its cascade, each along the straight line between
-// the two, through the faces of the geometry volume it crosses, into its irradiance cube.
-// The sums run over the sources in one fixed order, so the result is deterministic.
+// sums the light of every lit injected cell of its cascade (lpv_gather_sources.comp lists
+// them), each along the straight line between the two, through the faces of the geometry
+// volume it crosses, into its irradiance cube. The sums run over the sources in cell order,
+// so the result is deterministic.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_gather_interface.h"
@@ -17,6 +18,7 @@ layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GR
 layout(std140, set = 0, binding = GATHER_LPV) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = GATHER_INJECTED, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
 layout(set = 0, binding = GATHER_FACES, rgba32f) uniform readonly imageBuffer faces;          // lpv_face_texel
+layout(set = 0, binding = GATHER_SOURCES, rgba32f) uniform readonly imageBuffer sources;      // lpv_gather_sources.comp's
 layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_R) writeonly buffer AccumulatedR { u64vec2 accumulated_r[]; };
 layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_G) writeonly buffer AccumulatedG { u64vec2 accumulated_g[]; };
 layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_B) writeonly buffer AccumulatedB { u64vec2 accumulated_b[]; };
@@ -56,43 +58,37 @@ void main() {
   uvec3 dims = g.dims.xyz;
   ivec3 cell = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, int(push.first_layer));
   if (any(greaterThanEqual(cell, ivec3(dims))) || cell.z >= int(push.first_layer + push.layers)) return;
-  float one_per_unit = 1.0 / lpv.scales.x;
   vec3 cube[6] = vec3[6](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-  for (int z = 0; z < int(dims.z); ++z)
-    for (int y = 0; y < int(dims.y); ++y)
-      for (int x = 0; x < int(dims.x); ++x) {
-        ivec3 source = ivec3(x, y, z);
-        int texel = 6 * int(lpv_cell_index(uvec3(source), dims));
-        // The constant terms first: most cells hold no light and are passed after one load.
-        uvec4 red_first = imageLoad(injected, texel);
-        if (red_first.x == 0u && red_first.y == 0u) {
-          uvec4 green_first = imageLoad(injected, texel + 2), blue_first = imageLoad(injected, texel + 4);
-          if (green_first.x == 0u && green_first.y == 0u && blue_first.x == 0u && blue_first.y == 0u) continue;
-        }
-        vec4 sh[3];
-        for (int c = 0; c < 3; ++c)
-          sh[c] = from_fixed(fixed_pair(imageLoad(injected, texel + 2 * c)), fixed_pair(imageLoad(injected, texel + 2 * c + 1)),
-                             one_per_unit);
-        if (source == cell) {
-          for (int a = 0; a < 6; ++a)
-            cube[a] += vec3(lpv_gather_own_cell(sh[0], a), lpv_gather_own_cell(sh[1], a), lpv_gather_own_cell(sh[2], a));
-          continue;
-        }
-        vec4 emitter = lpv_gather_emitter(sh[0] + sh[1] + sh[2], lpv.transfer.y);
-        vec3 d = vec3(cell - source);
-        float axes[6];
-        float any_light = 0.0;
-        for (int a = 0; a < 6; ++a) {
-          axes[a] = lpv_gather_axis(emitter, d, a);
-          any_light += axes[a];
-        }
-        if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line
-        float through = OCCLUDED ? transmitted(source, cell, normalize(d), dims) : 1.0;
-        if (!(through > 0.0)) continue;
-        // Each channel's flux / pi: 4 c0 s0 (lpv_sh.h: flux = 4 pi c0 s0).
-        vec3 flux_per_pi = (4.0 * SH_C0 * through) * vec3(sh[0].x, sh[1].x, sh[2].x);
-        for (int a = 0; a < 6; ++a) cube[a] += flux_per_pi * axes[a];
-      }
+  int here = int(lpv_cell_index(uvec3(cell), dims));
+  int count = int(floatBitsToUint(imageLoad(sources, 0).x));
+  for (int i = 0; i < count; ++i) {
+    vec4 emitter = imageLoad(sources, 1 + 2 * i);
+    vec4 flux_and_cell = imageLoad(sources, 2 + 2 * i);
+    int index = int(flux_and_cell.w);
+    if (index == here) {
+      // Its own light, whose VPLs lie within the cell: read from its SH.
+      vec4 sh[3];
+      for (int c = 0; c < 3; ++c)
+        sh[c] = from_fixed(fixed_pair(imageLoad(injected, 6 * here + 2 * c)),
+                           fixed_pair(imageLoad(injected, 6 * here + 2 * c + 1)), 1.0 / lpv.scales.x);
+      for (int a = 0; a < 6; ++a)
+        cube[a] += vec3(lpv_gather_own_cell(sh[0], a), lpv_gather_own_cell(sh[1], a), lpv_gather_own_cell(sh[2], a));
+      continue;
+    }
+    ivec3 source = ivec3(index % int(dims.x), (index / int(dims.x)) % int(dims.y), index / int(dims.x * dims.y));
+    vec3 d = vec3(cell - source);
+    float axes[6];
+    float any_light = 0.0;
+    for (int a = 0; a < 6; ++a) {
+      axes[a] = lpv_gather_axis(emitter, d, a);
+      any_light += axes[a];
+    }
+    if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line
+    float through = OCCLUDED ? transmitted(source, cell, normalize(d), dims) : 1.0;
+    if (!(through > 0.0)) continue;
+    vec3 flux_per_pi = through * flux_and_cell.xyz;
+    for (int a = 0; a < 6; ++a) cube[a] += flux_per_pi * axes[a];
+  }
   // Two texels a cell and channel: (+x, -x, +y, -y) and (+z, -z, 0, 0).
   int first = 2 * lpv_accumulated_texel(cell, push.cascade, dims);
   accumulated_r[first] = texel_bits(vec4(cube[0].r, cube[1].r, cube[2].r, cube[3].r));

@@ -3,20 +3,35 @@
 #include "renderer/gpu_types.hpp"
 #include "shaders/shared/lpv_gather_interface.h"
 #include "shaders/lpv_gather.comp.h"
+#include "shaders/lpv_gather_sources.comp.h"
 
 #include <array>
 
 namespace renderer {
 
-LpvGatherPass::LpvGatherPass(const vkx::Device& device) : device_(device) {
-  const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
-  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  layout_ = vkx::compute_layout({{gpu::GATHER_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                                 {gpu::GATHER_INJECTED, texels},
-                                 {gpu::GATHER_FACES, texels},
-                                 {gpu::GATHER_ACCUMULATED_STORE_R, storage},
-                                 {gpu::GATHER_ACCUMULATED_STORE_G, storage},
-                                 {gpu::GATHER_ACCUMULATED_STORE_B, storage}},
+namespace {
+
+const VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
+const VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+const VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+
+}  // namespace
+
+LpvGatherPass::LpvGatherPass(const vkx::Device& device)
+    : device_(device),
+      sources_(device,
+               vkx::compute_layout({{gpu::GATHER_SOURCES_LPV, kUniform},
+                                    {gpu::GATHER_SOURCES_INJECTED, kTexels},
+                                    {gpu::GATHER_SOURCES_STORE, kStorage}},
+                                   sizeof(gpu::LpvGatherPush)),
+               spirv_lpv_gather_sources_comp) {
+  layout_ = vkx::compute_layout({{gpu::GATHER_LPV, kUniform},
+                                 {gpu::GATHER_INJECTED, kTexels},
+                                 {gpu::GATHER_FACES, kTexels},
+                                 {gpu::GATHER_ACCUMULATED_STORE_R, kStorage},
+                                 {gpu::GATHER_ACCUMULATED_STORE_G, kStorage},
+                                 {gpu::GATHER_ACCUMULATED_STORE_B, kStorage},
+                                 {gpu::GATHER_SOURCES, kTexels}},
                                 sizeof(gpu::LpvGatherPush));
 }
 
@@ -29,21 +44,31 @@ const vkx::Pipeline& LpvGatherPass::variant(bool occlusion, const vkx::Buffer& p
     const std::array<std::uint32_t, 1> constants{occlusion ? 1u : 0u};
     return vkx::Pipeline(device_, layout_, spirv_lpv_gather_comp, constants);
   });
-  const VkDescriptorType texels = VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER;
-  const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   vkx::DescriptorWriter(p.descriptor_set())
-      .buffer(gpu::GATHER_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
-      .texel_buffer(gpu::GATHER_INJECTED, texels, volumes.injected.view())
-      .texel_buffer(gpu::GATHER_FACES, texels, volumes.faces.view())
-      .buffer(gpu::GATHER_ACCUMULATED_STORE_R, storage, volumes.accumulated[0].buffer().handle())
-      .buffer(gpu::GATHER_ACCUMULATED_STORE_G, storage, volumes.accumulated[1].buffer().handle())
-      .buffer(gpu::GATHER_ACCUMULATED_STORE_B, storage, volumes.accumulated[2].buffer().handle())
+      .buffer(gpu::GATHER_LPV, kUniform, params.handle())
+      .texel_buffer(gpu::GATHER_INJECTED, kTexels, volumes.injected.view())
+      .texel_buffer(gpu::GATHER_FACES, kTexels, volumes.faces.view())
+      .buffer(gpu::GATHER_ACCUMULATED_STORE_R, kStorage, volumes.accumulated[0].buffer().handle())
+      .buffer(gpu::GATHER_ACCUMULATED_STORE_G, kStorage, volumes.accumulated[1].buffer().handle())
+      .buffer(gpu::GATHER_ACCUMULATED_STORE_B, kStorage, volumes.accumulated[2].buffer().handle())
+      .texel_buffer(gpu::GATHER_SOURCES, kTexels, volumes.grids.view())
       .apply(device_.handle());
   return p;
 }
 
 void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
                            bool occlusion, const vkx::Buffer& params, const LpvVolumes& volumes) const {
+  if (first == 0) {  // the sources, once a cascade
+    vkx::DescriptorWriter(sources_.descriptor_set())
+        .buffer(gpu::GATHER_SOURCES_LPV, kUniform, params.handle())
+        .texel_buffer(gpu::GATHER_SOURCES_INJECTED, kTexels, volumes.injected.view())
+        .buffer(gpu::GATHER_SOURCES_STORE, kStorage, volumes.grids.buffer().handle())
+        .apply(device_.handle());
+    sources_.bind(cmd);
+    sources_.push(cmd, gpu::LpvGatherPush{cascade, 0, 0});
+    vkCmdDispatch(cmd, 1, 1, 1);
+    vkx::compute_barrier(cmd);
+  }
   const vkx::Pipeline& pipeline = variant(occlusion, params, volumes);
   pipeline.bind(cmd);
   const glm::uvec3 d = volumes.dims;

@@ -20,7 +20,8 @@ class LpvGatherPass {
   static std::uint32_t slabs(const LpvVolumes& volumes);
 
   // Expects the injected sums in volumes.injected and, when `occlusion`, the geometry volume's
-  // faces. Records slabs first .. first + count - 1 (0-based).
+  // faces. Records slabs first .. first + count - 1 (0-based); slab 0 first lists the lit
+  // injected cells (in volumes.grids, which the gather does not otherwise use).
   void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, bool occlusion,
               const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
@@ -29,6 +30,7 @@ class LpvGatherPass {
   const vkx::Pipeline& variant(bool occlusion, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
   const vkx::Device& device_;
+  vkx::Pipeline sources_;  // lpv_gather_sources.comp: the lit injected cells, listed
   vkx::PipelineLayoutDesc layout_;
   vkx::PipelineVariants variants_;
 };

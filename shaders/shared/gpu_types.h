@@ -118,6 +118,7 @@ LPV_CONST LPV_MAX_CASCADES = 4u;
 // (lpv_irradiance.glsl); the planner keeps the scene that far inside (frame_plan.cpp).
 LPV_CONST LPV_BLEND_CELLS = 2u;
 LPV_CONST LPV_GROUP = 4u;         // grid passes: work groups of 4 x 4 x 4 cells
+LPV_CONST LPV_GATHER_SOURCES_GROUP = 64u;  // lpv_gather_sources.comp: invocations of its one work group
 // Propagation: work groups of 8 x 8 invocations, each walking a column of cells along z: 8 on
 // a CPU device, 2 on a GPU (a specialization constant; LpvPropagatePass says why).
 LPV_CONST LPV_PROPAGATE_GROUP = 8u;
