@@ -115,11 +115,16 @@ void check_configurations(const SweepRequest& sweep) {
   if (count > limits::max_sweep_configurations)
     throw RequestError("parameters", "makes " + std::to_string(count) + " configurations; at most " +
                                          std::to_string(limits::max_sweep_configurations) + " per sweep");
-  for (const SweepSettings& s : sweep_configurations(sweep))
+  for (const SweepSettings& s : sweep_configurations(sweep)) {
     if (s.lpv && s.vpl_downsample > s.rsm)
       throw RequestError("parameters.vpl_downsample", "must be at most the RSM resolution of every configuration, got " +
                                                           std::to_string(s.vpl_downsample) + " with rsm " +
                                                           std::to_string(s.rsm));
+    if (const std::string problem = gather_grid_problem({s.grid[0], s.grid[1], s.grid[2]}, s.transfer);
+        s.lpv && !problem.empty())
+      throw RequestError("parameters.grid", "a configuration with transfer \"gather\": " + problem +
+                                                " (sweep the gather over grids of its own)");
+  }
 }
 
 }  // namespace

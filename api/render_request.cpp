@@ -79,6 +79,16 @@ std::string to_string(Injection i) {
   throw std::invalid_argument("api::to_string: invalid Injection");
 }
 
+std::string gather_grid_problem(const glm::uvec3& grid, Transfer transfer) {
+  const std::uint64_t cells = std::uint64_t(grid.x) * grid.y * grid.z;
+  if (transfer != Transfer::gather || cells <= limits::max_gather_cells) return "";
+  return "the gather transfer takes at most " + std::to_string(limits::max_gather_cells) +
+         " cells a cascade (24^3), got " + std::to_string(grid.x) + "x" + std::to_string(grid.y) + "x" +
+         std::to_string(grid.z) + " (" + std::to_string(cells) +
+         "): every cell gathers from every cell, so its cost grows with their square; use fewer cells or another "
+         "transfer";
+}
+
 std::string to_string(Transfer t) {
   switch (t) {
     case Transfer::cosine: return "cosine";

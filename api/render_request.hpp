@@ -160,6 +160,9 @@ inline constexpr float max_fov_y_deg = 179.9f;
 inline constexpr std::uint32_t max_grid_side = 128;
 inline constexpr std::uint32_t max_cascades = 4;
 inline constexpr std::uint32_t max_iterations = 1024;
+// The gather transfer's cells a cascade: its cost grows with their square (docs/lpv.md, "The
+// gather"; 24^3 takes about 2 s a frame on lavapipe's 2 cores).
+inline constexpr std::uint64_t max_gather_cells = 24 * 24 * 24;
 inline constexpr std::uint32_t max_rsm_resolution = 4096;
 inline constexpr std::uint32_t max_vpl_downsample = 16;  // a power of two, at most the RSM resolution
 inline constexpr std::uint32_t max_bounces = 2;
@@ -169,6 +172,10 @@ inline constexpr float max_lpv_intensity = 1.0e6f;
 
 // Sets the fields the edit carries; the others keep their values.
 void apply_edit(Light& light, const LightEdit& edit);
+
+// Why `grid` is too large for `transfer` (the gather takes at most limits::max_gather_cells a
+// cascade); empty when it is not. Requests, sweeps and the renderer all ask this one rule.
+std::string gather_grid_problem(const glm::uvec3& grid, Transfer transfer);
 
 std::string to_string(LightType t);
 std::string to_string(View v);

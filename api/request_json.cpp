@@ -287,6 +287,10 @@ Lpv read_lpv(const Field& f) {
     lpv.extent = as_float(*v, 0.0f, 2.0f * limits::max_abs_coordinate);
     if (!(*lpv.extent > 0.0f)) v->reject("a number > 0");
   }
+  if (const std::string problem = gather_grid_problem(lpv.grid, lpv.transfer); !problem.empty()) {
+    if (auto v = obj.get("grid")) v->fail(problem);
+    f.fail(problem);  // only a grid given is ever too large: the default fits
+  }
   return lpv;
 }
 

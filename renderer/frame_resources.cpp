@@ -42,12 +42,10 @@ void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const
                                            ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
   const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
                             std::to_string(request.lpv.grid.z) + " cells";
-  const std::uint64_t cells_per_cascade = std::uint64_t(request.lpv.grid.x) * request.lpv.grid.y * request.lpv.grid.z;
-  if (lpv && request.lpv.transfer == api::Transfer::gather && cells_per_cascade > kGatherMaxCells)
-    throw api::DoesNotFit("lpv.grid", "the gather transfer sums the light of every cell at every cell, " + cells +
-                                          " would take " + std::to_string(cells_per_cascade * cells_per_cascade) +
-                                          " pairs a cascade; it takes at most " + std::to_string(kGatherMaxCells) +
-                                          " cells (24^3): use fewer cells, or another transfer");
+  // Requests and sweeps are checked when read; a request built in code is checked here.
+  if (const std::string problem = api::gather_grid_problem(request.lpv.grid, request.lpv.transfer);
+      lpv && !problem.empty())
+    throw api::DoesNotFit("lpv.grid", problem);
   const std::uint32_t geometry_slots = geometry_sources(request.lpv).slots();
   const std::uint32_t accumulated_texels = accumulated_texels_per_cell(request.lpv.transfer);
   const std::uint64_t lpv_bytes =

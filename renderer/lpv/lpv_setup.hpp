@@ -46,11 +46,6 @@ TransferFactors transfer_factors(api::Transfer transfer);
 // the gather's irradiance cube (LpvVolumes::accumulated).
 inline std::uint32_t accumulated_texels_per_cell(api::Transfer transfer) { return transfer == api::Transfer::gather ? 2 : 1; }
 
-// The most cells a cascade of the gather transfer may have: its cost grows with their square
-// (every cell gathers from every injected cell), and 24^3 takes about 2 s a frame on lavapipe's
-// 2 cores (docs/lpv.md, "The gather").
-inline constexpr std::uint64_t kGatherMaxCells = 24 * 24 * 24;
-
 // Geometry volume: fixed-point units per unit of blocking potential.
 inline constexpr float kGeometryUnitsPerPotential = 1048576.0f;  // 2^20
 

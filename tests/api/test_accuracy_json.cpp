@@ -129,6 +129,11 @@ TEST(SweepRequest, ErrorsNameTheirField) {
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"occlusion": [1]}})"), "parameters.occlusion[0]");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"transfer": ["cosine", "narrow"]}})"),
             "parameters.transfer[1]");
+  // Before any row renders: a grid the gather cannot take, in any configuration that gathers.
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"grid": [8, 32], "transfer": ["sharpened", "gather"]}})"),
+            "parameters.grid");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {"lpv": {"transfer": "gather"}}, "parameters": {"grid": [25]}})"),
+            "parameters.grid");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"blocking": ["two_sided"]}})"),
             "parameters.blocking[0]");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"speed": [1]}})"), "parameters.speed");

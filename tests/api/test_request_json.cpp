@@ -479,6 +479,8 @@ std::vector<BadRequest> bad_requests() {
       {R"({"lpv": {"bounces": 3}})", "lpv.bounces"},
       {R"({"lpv": {"injection_offset": -0.1}})", "lpv.injection_offset"},
       {R"({"lpv": {"transfer": "narrow"}})", "lpv.transfer"},
+      {R"({"lpv": {"transfer": "gather", "grid": 25}})", "lpv.grid"},
+      {R"({"lpv": {"grid": [24, 24, 25], "transfer": "gather"}})", "lpv.grid"},
       {R"({"lpv": {"blocking": "two_sided"}})", "lpv.blocking"},
       {R"({"lpv": {"injection": "bilinear"}})", "lpv.injection"},
       {R"({"lpv": {"injection_offset": 2.5}})", "lpv.injection_offset"},
