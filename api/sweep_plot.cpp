@@ -1,5 +1,6 @@
 // to_svg_plot: the sweep as accuracy against cost, GPU time and error both on log scales
 // (settings differ by factors: grids of 16^3 to 128^3 cells, errors over decades).
+#include "api/counted.hpp"
 #include "api/svg_writer.hpp"
 #include "api/sweep_table.hpp"
 
@@ -102,21 +103,8 @@ std::string short_number(double x) {
   return buffer;
 }
 
-std::string count_of(std::uint64_t n, const std::string& noun) {
-  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
-}
-
-std::string settings_text(const SweepSettings& s) {
-  if (!s.lpv) return "LPV off (direct light only)";
-  return "LPV " + std::to_string(s.grid[0]) + "x" + std::to_string(s.grid[1]) + "x" + std::to_string(s.grid[2]) +
-         ", " + count_of(s.iterations, "iteration") + ", " + count_of(s.cascades, "cascade") + ", RSM " +
-         std::to_string(s.rsm) + ", VPL downsample " + std::to_string(s.vpl_downsample) + ", " +
-         count_of(s.bounces, "bounce") + ", occlusion " + (s.occlusion ? "on" : "off") + ", transfer " +
-         to_string(s.transfer) + ", blocking " + to_string(s.blocking);
-}
-
 std::string tooltip(const SweepRow& row, double error, const ParetoAxis& axis) {
-  std::string text = settings_text(row.settings) + "\nGPU " + short_number(row.gpu_ms) + " ms per frame (";
+  std::string text = describe(row.settings) + "\nGPU " + short_number(row.gpu_ms) + " ms per frame (";
   if (row.frames > 1)
     text += "median of " + std::to_string(row.frames) + ", " + short_number(row.gpu_ms_range.first) + "–" +
             short_number(row.gpu_ms_range.second) + "; ";
@@ -241,7 +229,7 @@ std::string note_text(const std::map<std::string, std::uint64_t>& left_out) {
   std::string note = "Not shown on the log scales:";
   const char* separator = " ";
   for (const auto& [reason, n] : left_out) {
-    note += separator + count_of(n, "row") + " with " + reason;
+    note += separator + counted(n, "row") + " with " + reason;
     separator = ", ";
   }
   return note + ".";

@@ -1,5 +1,7 @@
 #include "api/sweep_table.hpp"
 
+#include "api/counted.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -140,6 +142,15 @@ json settings_json(const SweepSettings& s) {
 
 }  // namespace
 
+std::string describe(const SweepSettings& s) {
+  if (!s.lpv) return "LPV off (direct light only)";
+  return "LPV " + std::to_string(s.grid[0]) + "x" + std::to_string(s.grid[1]) + "x" + std::to_string(s.grid[2]) +
+         ", " + counted(s.iterations, "iteration") + ", " + counted(s.cascades, "cascade") + ", RSM " +
+         std::to_string(s.rsm) + ", VPL downsample " + std::to_string(s.vpl_downsample) + ", " +
+         counted(s.bounces, "bounce") + ", occlusion " + (s.occlusion ? "on" : "off") + ", transfer " +
+         to_string(s.transfer) + ", blocking " + to_string(s.blocking);
+}
+
 nlohmann::json to_json(const ErrorMetrics& errors) {
   json j = json::object();
   for (const auto& [name, field] : error_metric_fields) j[name] = number_json(errors.*field);
@@ -227,6 +238,7 @@ nlohmann::json to_json(const SweepRow& row) {
   json passes = json::array();
   for (const PassTime& pass : row.passes) passes.push_back({{"name", pass.name}, {"gpu_ms", number_json(pass.gpu_ms)}});
   return {{"settings", settings_json(row.settings)},
+          {"label", describe(row.settings)},
           {"passes", std::move(passes)},
           {"frames", row.frames},
           {"gpu_ms", number_json(row.gpu_ms)},

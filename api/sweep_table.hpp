@@ -27,6 +27,10 @@ struct SweepSettings {
   Blocking blocking = Blocking::projected;
 };
 
+// The settings in words, as the plot's tooltips and the web page's sweep table show them:
+// "LPV 16x16x16, 32 iterations, 1 cascade, ..., transfer sharpened, blocking projected".
+std::string describe(const SweepSettings& settings);
+
 struct PassTime {
   std::string name;
   double gpu_ms = 0.0;  // median over the row's frames

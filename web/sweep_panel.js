@@ -5,7 +5,7 @@
 // button) loads its configuration into the settings.
 
 import { sweep } from './api_client.js';
-import { describeSettings, sweepPlot } from './sweep_plot.js';
+import { sweepPlot } from './sweep_plot.js';
 import { formatMs } from './svg.js';
 import { LatestRun } from './latest_run.js';
 
@@ -119,7 +119,7 @@ export class SweepPanel {
       const load = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Load' });
       load.addEventListener('click', () => this.load(row));
       const error = row[`${axis.image}_error`][axis.metric];
-      for (const text of [describeSettings(row.settings), timeText(row), error === null ? '∞' : error.toPrecision(3), paretoText(row)])
+      for (const text of [row.label, timeText(row), error === null ? '∞' : error.toPrecision(3), paretoText(row)])
         tr.append(Object.assign(document.createElement('td'), { textContent: text }));
       const cell = document.createElement('td');
       cell.append(load);

@@ -22,17 +22,6 @@ function linearScale(values, from, to) {
   return (v) => from + ((v - low) / span) * (to - from);
 }
 
-// "1 cascade", "2 cascades" (as api::counted words the server's messages).
-const counted = (n, noun) => `${n} ${noun}${n === 1 ? '' : 's'}`;
-
-export function describeSettings(settings) {
-  if (!settings.lpv) return 'LPV off';
-  const grid = Array.isArray(settings.grid) ? settings.grid.join('×') : settings.grid;
-  return `grid ${grid}, ${counted(settings.iterations, 'iteration')}, ${counted(settings.cascades, 'cascade')}, ` +
-    `RSM ${settings.rsm}, VPL downsample ${settings.vpl_downsample}, ${counted(settings.bounces, 'bounce')}, ` +
-    `occlusion ${settings.occlusion ? 'on' : 'off'}`;
-}
-
 // rows: the sweep's rows so far; axis: {image, metric}; onPick(row) loads a row.
 export function sweepPlot(rows, axis, onPick) {
   const errorOf = (row) => row[`${axis.image}_error`][axis.metric];
@@ -58,7 +47,7 @@ export function sweepPlot(rows, axis, onPick) {
     svg.append(svgElement('polyline', { points: front.map((row) => `${x(row.gpu_ms)},${y(errorOf(row))}`).join(' '), class: 'front' }));
 
   for (const row of points) {
-    const label = `${describeSettings(row.settings)}: ${formatMs(row.gpu_ms)} ms, ${axis.metric} ${errorOf(row).toPrecision(3)}` +
+    const label = `${row.label}: ${formatMs(row.gpu_ms)} ms, ${axis.metric} ${errorOf(row).toPrecision(3)}` +
       (row.pareto ? ', on the Pareto front' : '') + '. Load these settings.';
     const point = svgElement('circle', {
       cx: x(row.gpu_ms), cy: y(errorOf(row)), r: 6, tabindex: 0, role: 'button', 'aria-label': label,

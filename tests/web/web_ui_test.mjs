@@ -394,9 +394,11 @@ test('the error against the reference, and a sweep whose points load their setti
   for (const text of times) assert.match(text, /^[\d.]+ \([\d.]+–[\d.]+\)$/, `GPU ms with its range: ${text}`);
   await screenshot(page, '07-sweep');
 
-  assert.match(await page.locator('#sweep-plot circle[aria-label^="grid 8×8×8"]').getAttribute('aria-label'),
-    /^grid 8×8×8, 4 iterations, 1 cascade, RSM \d+, VPL downsample \d+, 1 bounce, /, 'counted in good English');
-  await page.locator('#sweep-plot circle[aria-label^="grid 8×8×8"]').click();
+  // The server's words for a row's settings (api::describe), the same as its SVG plot's.
+  assert.match(await page.locator('#sweep-plot circle[aria-label^="LPV 8x8x8"]').getAttribute('aria-label'),
+    /^LPV 8x8x8, 4 iterations, 1 cascade, RSM \d+, VPL downsample \d+, 1 bounce, occlusion (on|off), transfer [a-z]+, blocking [a-z_]+: /,
+    'counted in good English, the transfer and the blocking named');
+  await page.locator('#sweep-plot circle[aria-label^="LPV 8x8x8"]').click();
   const loaded = await frameShown(page, (request) => request.lpv?.grid === 8 && request.lpv?.iterations === 4);
   assert.equal(loaded.output.width, 128, 'only the LPV settings change');
   assert.equal(await page.locator('#lpv-grid').inputValue(), '8');
