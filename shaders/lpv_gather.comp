@@ -34,7 +34,6 @@ float transmitted(ivec3 from, ivec3 to, vec3 w, uvec3 dims) {
   ivec3 span = abs(d);
   ivec3 step = ivec3(sign(vec3(d)));
   ivec3 next = ivec3(1);  // each axis's next crossing, t = next / (2 span)
-  float length_cells = length(vec3(d));
   int crossings = span.x + span.y + span.z;
   ivec3 cell = from;
   float through = 1.0;
@@ -45,8 +44,8 @@ float transmitted(ivec3 from, ivec3 to, vec3 w, uvec3 dims) {
     ivec3 owner = step[axis] > 0 ? cell : ahead;  // a face is stored with the cell below it
     vec4 b = imageLoad(faces, lpv_face_texel(owner, axis, dims));
     vec3 spread = imageLoad(faces, lpv_face_spread_texel(owner, axis, dims)).xyz;
-    float t = float(next[axis]) / float(2 * span[axis]);
-    through *= lpv_gather_transmitted(b, spread, w, lpv_gather_where(t, length_cells));
+    vec3 face_centre = 0.5 * (vec3(cell) + vec3(ahead));
+    through *= lpv_gather_transmitted(b, spread, w, vec3(from) - face_centre, vec3(to) - face_centre);
     cell = ahead;
     next[axis] += 2;
   }

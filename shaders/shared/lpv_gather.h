@@ -89,31 +89,34 @@ LPV_FUNC lpv_real lpv_gather_axis(vec4 emitter, vec3 d, int a) {
   return lpv_gather_lobe(emitter, w) * max(-dot(w, axis), lpv_real(0)) / (r2 + LPV_GATHER_SOURCE_AREA_TERM);
 }
 
-// Where a crossing lies on the line from a source to the gathering cell, for which blockers
-// stop light there (lpv_gather_transmitted).
-LPV_CONST_I LPV_GATHER_LEAVING = 0;  // within a cell of the source
-LPV_CONST_I LPV_GATHER_ONWARD = 1;   // further on
-LPV_CONST_I LPV_GATHER_NEAR_BOTH = 2;  // within a cell of both ends
+// A face's blockers lie within a cell of it along their normal: the geometry volume splats
+// each surface to the corners of the cell around it, and a face takes the mean of its corners.
+LPV_CONST_F LPV_GATHER_BLOCKER_REACH = 1.0;  // cells
 
-// The fraction of light along unit w that crosses a face whose blockers have the SH b (their
-// potentials times their cosine lobes) and the spread of their normals (lpv_sh.h, "Blocking").
-// The blockers of a cell face are known only to lie somewhere within a cell of it, so which side
-// of them the light is on decides: light meets a surface's front (<n, w> < 0) where it arrives
-// at it, and its back where it leaves it or where it runs into an object from behind its far
-// side. Onward, the open part stops only light meeting blockers from behind: the surfaces the
-// light arrives at pass it (it reached them; the cube reads it there), so a ceiling keeps the
-// light that crosses its own cell, while the far side of anything solid, or of a thin wall,
-// stops it. Leaving, the open part stops only light meeting blockers' fronts: the source's own
-// surface passes it (it leaves from it), a wall in front of it does not. The closed part
-// (spread beyond the first moment: both sides of a thin wall, a solid's faces) stops light
-// either way.
-LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, int where) {
+// The fraction of light along unit w, on the line from a source to the gathering cell, that
+// crosses a face whose blockers have the SH b (their potentials times their cosine lobes) and
+// the spread of their normals (lpv_sh.h, "Blocking"); `to_source` and `to_cell` go from the
+// face's centre to the line's two ends (cell units). The open part (the first moment m,
+// stopping |<m, w>|: the blockers' area across the light) stops the light only where the
+// blockers' plane, through the face's centre along m, separates the two ends by more than
+// LPV_GATHER_BLOCKER_REACH: only then does the line certainly pass through the surface. A
+// surface a line starts or ends at, or runs beside within a cell, does not stop it: a source's
+// own wall passes the light leaving it, a ceiling the light arriving at it, a floor the light
+// grazing it, which propagation's faces stop wherever they hold the surface. The closed part
+// (the spread beyond the first moment: both sides of a thin wall, a solid's faces, which
+// cancel in m) stops light wherever it crosses the face.
+LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, vec3 to_source, vec3 to_cell) {
   const vec3 m = vec3(-b.w, -b.y, b.z) / SH_COSINE_C1;  // sum p n (b = sum p cosine lobe(n))
   const lpv_real u = dot(m, w);
   const lpv_real closed = max(lpv_closed_blocking(spread, w) - abs(u), lpv_real(0));
-  const lpv_real open_part = where == LPV_GATHER_NEAR_BOTH ? lpv_real(0)
-                             : where == LPV_GATHER_LEAVING ? max(-u, lpv_real(0))
-                                                           : max(u, lpv_real(0));
+  const lpv_real length_m = sqrt(dot(m, m));
+  lpv_real open_part = lpv_real(0);
+  if (length_m > lpv_real(0)) {
+    const lpv_real source_side = dot(to_source, m) / length_m;
+    const lpv_real cell_side = dot(to_cell, m) / length_m;
+    const lpv_real reach = LPV_GATHER_BLOCKER_REACH;
+    if ((source_side < -reach && cell_side > reach) || (source_side > reach && cell_side < -reach)) open_part = abs(u);
+  }
   return lpv_real(1) - clamp(open_part + closed, lpv_real(0), lpv_real(1));
 }
 
@@ -132,14 +135,6 @@ LPV_FUNC int lpv_gather_next_axis(ivec3 next, ivec3 span) {
   if (lpv_gather_crosses_first(next.x, span.x, next.y, span.y) && lpv_gather_crosses_first(next.x, span.x, next.z, span.z))
     return 0;
   return lpv_gather_crosses_first(next.y, span.y, next.z, span.z) ? 1 : 2;
-}
-
-// Which of those a crossing at parameter t (0 at the source, 1 at the gathering cell) of a
-// line `length` cells long is.
-LPV_FUNC int lpv_gather_where(lpv_real t, lpv_real length) {
-  const bool leaving = t * length < lpv_real(1);
-  const bool arriving = (lpv_real(1) - t) * length < lpv_real(1);
-  return leaving && arriving ? LPV_GATHER_NEAR_BOTH : leaving ? LPV_GATHER_LEAVING : LPV_GATHER_ONWARD;
 }
 
 // A cell's own injected light onto a surface facing cube axis a: its SH against the cosine

@@ -126,13 +126,13 @@ const Bounds kBounds[] = {
 // The same for {"lpv": {"transfer": "gather"}}, with the same margins.
 const Bounds kGatherBounds[] = {
     // scene               gain   indirect      ind/dir  probe
-    {"cornell-box",        0.23,  0.77, 1.07,   9.0,     0.85, 1.20},  // 0.171 0.921, ceiling 1.005
-    {"cornell-box-point",  0.23,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.173 0.901
-    {"sun-courtyard",      0.33,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.266 0.840
-    {"corridor",           0.31,  0.67, 0.97,   9.0,     0.0,  0.0},   // 0.247 0.821
-    {"thin-wall-room",     0.27,  0.76, 1.06,   9.0,     0.0,  0.05},  // 0.207 0.907, leak 0.030
-    {"open-court",         0.42,  0.76, 1.06,   9.0,     0.0,  0.0},   // 0.356 0.907
-    {"gallery-court",      0.60,  0.71, 1.01,   9.0,     0.0,  0.0},   // 0.535 0.857
+    {"cornell-box",        0.22,  0.82, 1.12,   9.0,     0.88, 1.18},  // 0.156 0.970, ceiling 1.031
+    {"cornell-box-point",  0.21,  0.83, 1.13,   9.0,     0.0,  0.0},   // 0.141 0.977
+    {"sun-courtyard",      0.31,  0.74, 1.04,   9.0,     0.0,  0.0},   // 0.249 0.890
+    {"corridor",           0.29,  0.76, 1.06,   9.0,     0.0,  0.0},   // 0.226 0.914
+    {"thin-wall-room",     0.25,  0.82, 1.12,   9.0,     0.0,  0.05},  // 0.189 0.969, leak 0.032
+    {"open-court",         0.41,  0.79, 1.09,   9.0,     0.0,  0.0},   // 0.341 0.943
+    {"gallery-court",      0.59,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.525 0.899
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
 };
 // clang-format on

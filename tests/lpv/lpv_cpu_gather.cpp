@@ -20,7 +20,6 @@ double transmitted(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces
   const glm::ivec3 d = to - from;
   const glm::ivec3 span = glm::abs(d);
   glm::ivec3 next(1);
-  const double length = glm::length(glm::dvec3(d));
   glm::ivec3 cell = from;
   double through = 1.0;
   for (int i = 0; i < span.x + span.y + span.z && through > 0.0; ++i) {
@@ -29,8 +28,9 @@ double transmitted(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces
     ahead[axis] += d[axis] > 0 ? 1 : -1;
     const glm::ivec3 owner = d[axis] > 0 ? cell : ahead;
     const std::size_t face = grid.index(owner) * 3 + std::size_t(axis);
-    const double t = double(next[axis]) / double(2 * span[axis]);
-    through *= g::lpv_gather_transmitted(faces.sh[face], faces.spread[face], w, g::lpv_gather_where(t, length));
+    const glm::dvec3 face_centre = 0.5 * (glm::dvec3(cell) + glm::dvec3(ahead));
+    through *= g::lpv_gather_transmitted(faces.sh[face], faces.spread[face], w, glm::dvec3(from) - face_centre,
+                                         glm::dvec3(to) - face_centre);
     cell = ahead;
     next[axis] += 2;
   }
