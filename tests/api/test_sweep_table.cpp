@@ -314,7 +314,7 @@ TEST(SweepJson, EveryFieldWithItsValue) {
   r.final_error = {0.25, 0.5, 31.5, 0.875, 0.125, 2.0, -0.0625, 262144};
   r.indirect_error = {1.25, 1.5, 20.0, 0.75, 1.125, 3.0, 0.5, 7};
   r.pareto = true;
-  const json expected = json::parse(R"({
+  const json expected = json::parse(R"json({
     "settings": {"lpv": false, "grid": [16, 24, 48], "iterations": 12, "cascades": 2, "rsm": 512,
                  "vpl_downsample": 4, "bounces": 2, "occlusion": false, "transfer": "sharpened",
                  "blocking": "projected"},
@@ -324,8 +324,21 @@ TEST(SweepJson, EveryFieldWithItsValue) {
                     "max_abs_error": 2.0, "mean_signed_error": -0.0625, "pixels": 262144},
     "indirect_error": {"rmse": 1.25, "relative_mse": 1.5, "psnr_db": 20.0, "ssim": 0.75, "mean_abs_error": 1.125,
                        "max_abs_error": 3.0, "mean_signed_error": 0.5, "pixels": 7},
-    "pareto": true, "pareto_uncertain": false})");
+    "pareto": true, "pareto_uncertain": false, "label": "LPV off (direct light only)"})json");
   EXPECT_EQ(api::to_json(r), expected) << api::to_json(r).dump(2);
+}
+
+// One description of a row's settings, for the plot's tooltips and the web page's table.
+TEST(SweepJson, ARowsSettingsInWords) {
+  api::SweepSettings s{true, {16, 24, 48}, 12, 2, 512, 4, 2, false, api::Transfer::gather, api::Blocking::projected};
+  EXPECT_EQ(api::describe(s), "LPV 16x24x48, 12 iterations, 2 cascades, RSM 512, VPL downsample 4, 2 bounces, "
+                              "occlusion off, transfer gather, blocking projected");
+  s.iterations = 1;
+  s.cascades = 1;
+  s.bounces = 1;
+  EXPECT_NE(api::describe(s).find("1 iteration, 1 cascade, RSM 512, VPL downsample 4, 1 bounce,"), std::string::npos);
+  s.lpv = false;
+  EXPECT_EQ(api::describe(s), "LPV off (direct light only)");
 }
 
 TEST(SweepJson, NumbersReadBackExactly) {
