@@ -33,12 +33,10 @@ using glm::ivec3;
 using glm::min;
 #define LPV_FUNC inline
 #define LPV_CONST_F inline constexpr lpv_real
-#define LPV_CONST_I inline constexpr int
 #else
 #define lpv_real float
 #define LPV_FUNC
 #define LPV_CONST_F const float
-#define LPV_CONST_I const int
 #endif
 
 // A source cell stands for about a cell face of lit surface: its light at distance r falls
@@ -151,6 +149,5 @@ LPV_FUNC lpv_real lpv_gather_own_cell(vec4 sh, int a) {
 #endif
 #undef LPV_FUNC
 #undef LPV_CONST_F
-#undef LPV_CONST_I
 
 #endif  // LPV_GATHER_BODY

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace {
 
@@ -312,15 +313,15 @@ TEST_F(Lpv, GatherTakesAtMost24CubedCellsAndSaysSo) {
   }
   request.lpv.grid = glm::uvec3(8);
   const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear);
-  for (const api::PassStats& pass : result.stats.passes) {
-    if (pass.name == "gather") {
-      EXPECT_TRUE(pass.ran);
-    }
-    if (pass.name == "propagate") {
-      EXPECT_FALSE(pass.ran);
-      EXPECT_NE(pass.reason.find("gather"), std::string::npos) << pass.reason;
-    }
-  }
+  const auto pass = [&](const std::string& name) {
+    const auto found = std::find_if(result.stats.passes.begin(), result.stats.passes.end(),
+                                    [&](const api::PassStats& p) { return p.name == name; });
+    return found == result.stats.passes.end() ? std::optional<api::PassStats>() : std::optional(*found);
+  };
+  ASSERT_TRUE(pass("gather") && pass("propagate")) << "both passes are listed in the stats";
+  EXPECT_TRUE(pass("gather")->ran);
+  EXPECT_FALSE(pass("propagate")->ran);
+  EXPECT_NE(pass("propagate")->reason.find("gather"), std::string::npos) << pass("propagate")->reason;
 }
 
 TEST_F(Lpv, PropagatedFluxNeverExceedsTheInjectedFluxWithOrWithoutOcclusion) {

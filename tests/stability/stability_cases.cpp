@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace stability {
 namespace {
@@ -240,6 +241,7 @@ std::vector<Case> make_cases() {
                            "light-grazing", "light-1e-6", "light-1e6", "cornell-1mm", "cornell-10km", "flat-scene",
                            "grid-1-cell", "black-everywhere", "white-closed-box"}) {
     const auto found = std::find_if(c.begin(), c.end(), [&](const Case& k) { return k.name == name; });
+    if (found == c.end()) throw std::logic_error(std::string("no stability case named ") + name);
     Case gather = *found;
     gather.name = std::string("gather-") + name;
     gather.what += ", gathered";
