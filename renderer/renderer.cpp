@@ -164,9 +164,7 @@ struct Renderer::Impl {
   }
   // What the forward pass and the shading read of the LPV: its cascades when it ran, else none.
   IndirectLightInputs indirect_light(const Frame& frame) const {
-    const bool lpv = frame.plan.run[kInject];
-    return {resources.lpv_uniforms, *resources.volumes, lpv ? std::uint32_t(frame.lpv.cascades.size()) : 0u,
-            lpv && frame.request.lpv.transfer == api::Transfer::gather};
+    return {resources.lpv_uniforms, *resources.volumes, frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u};
   }
   // The named scene, made resident (loaded, uploaded and warmed up) if it is not; the times
   // are 0 when it was.

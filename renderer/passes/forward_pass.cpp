@@ -34,7 +34,7 @@ const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const Direct
   // Bits 0-1: the material variant; 2-3: the tone curve; 4-6: the cascades (at most 4); 7: the
   // irradiance cube; above: the lights (11 bits).
   const std::uint32_t cascades = indirect.cascades;
-  const std::uint32_t cube = indirect.cube ? 1u : 0u;
+  const std::uint32_t cube = indirect.cube() ? 1u : 0u;
   const std::uint32_t key =
       (direct_light_key(direct) << 8) | (cube << 7) | (cascades << 4) | (curve << 2) | variant.index();
   return pipelines_.get(key, [&] {

@@ -15,7 +15,10 @@ struct IndirectLightInputs {
   const vkx::Buffer& lpv;     // gpu::GpuLpv
   const LpvVolumes& volumes;  // the cascades' accumulated SH (not read without indirect light)
   std::uint32_t cascades;     // of indirect light to shade (0: the LPV did not run)
-  bool cube = false;          // the accumulated light is the gather's irradiance cube, not SH
+
+  // The accumulated light is the gather's irradiance cube, not SH (two texels a cell: the
+  // volumes' layout is what the shading must read).
+  bool cube() const { return cascades > 0 && volumes.accumulated_texels == 2; }
 };
 
 // Binds in.lpv at `first` and the accumulated red, green and blue SH at the next three

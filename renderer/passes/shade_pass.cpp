@@ -37,7 +37,7 @@ const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
   // Bits 0-2: the view (VIEW_* < 8); 3-5: the cascades (at most 4); 6-7: the outputs; 8-9:
   // the tone curve; 10: the irradiance cube; above: the lights (11 bits).
   const std::uint32_t cascades = in.indirect.cascades;
-  const std::uint32_t cube = in.indirect.cube ? 1u : 0u;
+  const std::uint32_t cube = in.indirect.cube() ? 1u : 0u;
   const std::uint32_t key =
       (light_key << 11) | (cube << 10) | (curve << 8) | (in.outputs << 6) | (cascades << 3) | in.view;
   return variants_.get(key, [&] {
