@@ -275,13 +275,13 @@ FramePlan plan_frame(const PlanInputs& in) {
       plan.reason[kGeometryVolume] = "occlusion disabled";
     else if (!request.lpv.occlusion_from_camera && !request.lpv.occlusion_from_scene && !any_drawn)
       plan.reason[kGeometryVolume] = "no occluders: occlusion_sources is only \"rsm\" and no light draws an RSM";
-    // One of the two transfers carries the injected light to the cells the shading reads.
-    if (request.lpv.transfer == api::Transfer::gather)
+    // One of the two carries the injected light to the cells the shading reads.
+    if (request.lpv.transfer == api::Transfer::gather) {
       plan.reason[kPropagate] = "lpv.transfer is \"gather\": every cell gathers the injected light itself";
-    else if (request.lpv.iterations == 0)
-      plan.reason[kPropagate] = "0 iterations";
-    if (request.lpv.transfer != api::Transfer::gather)
+    } else {
       plan.reason[kGather] = "lpv.transfer \"" + api::to_string(request.lpv.transfer) + "\" propagates the light";
+      if (request.lpv.iterations == 0) plan.reason[kPropagate] = "0 iterations";
+    }
   }
   for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate, kGather}) plan.run[p] = plan.reason[p].empty();
   plan.convergence = api::plan_applies(request, api::PlanRule::convergence) ? request.lpv.convergence : 0.0f;
