@@ -1,9 +1,10 @@
 #version 450
 // The gather transfer (lpv_gather.h, docs/lpv.md "The gather"): each cell of a slab of layers
-// sums the light of every lit injected cell of its cascade (lpv_gather_sources.comp lists
-// them), each along the straight line between the two, through the faces of the geometry
-// volume it crosses, into its irradiance cube. The sums run over the sources in cell order,
-// so the result is deterministic.
+// sums the light of every lit injected cell of its cascade, the near ones one by one and those
+// further off in blocks (the pyramid lpv_gather_sources.comp builds), each along the straight
+// line from the source (a block's centre) to the cell, through the faces of the geometry
+// volume it crosses, into its irradiance cube. The sums run over levels and blocks in a fixed
+// order, so the result is deterministic.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_gather_interface.h"
@@ -18,7 +19,7 @@ layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GR
 layout(std140, set = 0, binding = GATHER_LPV) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = GATHER_INJECTED, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
 layout(set = 0, binding = GATHER_FACES, rgba32f) uniform readonly imageBuffer faces;          // lpv_face_texel
-layout(set = 0, binding = GATHER_SOURCES, rgba32f) uniform readonly imageBuffer sources;      // lpv_gather_sources.comp's
+layout(set = 0, binding = GATHER_SOURCES, rgba32f) uniform readonly imageBuffer sources;      // lpv_gather_sources.comp's pyramid
 layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_R) writeonly buffer AccumulatedR { u64vec2 accumulated_r[]; };
 layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_G) writeonly buffer AccumulatedG { u64vec2 accumulated_g[]; };
 layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_B) writeonly buffer AccumulatedB { u64vec2 accumulated_b[]; };
@@ -58,35 +59,46 @@ void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, int(push.first_layer));
   if (any(greaterThanEqual(cell, ivec3(dims))) || cell.z >= int(push.first_layer + push.layers)) return;
   vec3 cube[6] = vec3[6](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
-  int here = int(lpv_cell_index(uvec3(cell), dims));
-  int count = int(floatBitsToUint(imageLoad(sources, 0).x));
-  for (int i = 0; i < count; ++i) {
-    vec4 emitter = imageLoad(sources, 1 + 2 * i);
-    vec4 flux_and_cell = imageLoad(sources, 2 + 2 * i);
-    int index = int(flux_and_cell.w);
-    if (index == here) {
-      // Its own light, whose VPLs lie within the cell: read from its SH.
-      vec4 sh[3];
-      for (int c = 0; c < 3; ++c)
-        sh[c] = from_fixed(fixed_pair(imageLoad(injected, 6 * here + 2 * c)),
-                           fixed_pair(imageLoad(injected, 6 * here + 2 * c + 1)), 1.0 / lpv.scales.x);
-      for (int a = 0; a < 6; ++a)
-        cube[a] += vec3(lpv_gather_own_cell(sh[0], a), lpv_gather_own_cell(sh[1], a), lpv_gather_own_cell(sh[2], a));
-      continue;
-    }
-    ivec3 source = ivec3(index % int(dims.x), (index / int(dims.x)) % int(dims.y), index / int(dims.x * dims.y));
-    vec3 d = vec3(cell - source);
-    float axes[6];
-    float any_light = 0.0;
-    for (int a = 0; a < 6; ++a) {
-      axes[a] = lpv_gather_axis(emitter, d, a);
-      any_light += axes[a];
-    }
-    if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line
-    float through = OCCLUDED ? transmitted(source, cell, normalize(d), dims) : 1.0;
-    if (!(through > 0.0)) continue;
-    vec3 flux_per_pi = through * flux_and_cell.xyz;
-    for (int a = 0; a < 6; ++a) cube[a] += flux_per_pi * axes[a];
+  bool last = false;
+  for (int level = 0; !last; ++level) {
+    LpvGatherWindow window = lpv_gather_window(cell, level, ivec3(dims));
+    last = window.last;
+    ivec3 level_dims = lpv_gather_level_dims(ivec3(dims), level);
+    int first = lpv_gather_level_first(ivec3(dims), level);
+    for (int z = window.lo.z; z <= window.hi.z; ++z)
+      for (int y = window.lo.y; y <= window.hi.y; ++y)
+        for (int x = window.lo.x; x <= window.hi.x; ++x) {
+          ivec3 block = ivec3(x, y, z);
+          if (lpv_gather_gathered_finer(block, cell, level)) continue;
+          int record = LPV_GATHER_RECORD_TEXELS * (first + x + level_dims.x * (y + level_dims.y * z));
+          vec3 flux_per_pi = imageLoad(sources, record + 1).xyz;
+          if (!(flux_per_pi.x + flux_per_pi.y + flux_per_pi.z > 0.0)) continue;  // no light there
+          if (level == 0 && block == cell) {
+            // Its own light, whose VPLs lie within the cell: read from its SH.
+            int here = int(lpv_cell_index(uvec3(cell), dims));
+            vec4 sh[3];
+            for (int c = 0; c < 3; ++c)
+              sh[c] = from_fixed(fixed_pair(imageLoad(injected, 6 * here + 2 * c)),
+                                 fixed_pair(imageLoad(injected, 6 * here + 2 * c + 1)), 1.0 / lpv.scales.x);
+            for (int a = 0; a < 6; ++a)
+              cube[a] += vec3(lpv_gather_own_cell(sh[0], a), lpv_gather_own_cell(sh[1], a), lpv_gather_own_cell(sh[2], a));
+            continue;
+          }
+          vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
+          vec3 centre = imageLoad(sources, record + 2).xyz;
+          vec3 d = vec3(cell) - centre;
+          float axes[6];
+          float any_light = 0.0;
+          for (int a = 0; a < 6; ++a) {
+            axes[a] = lpv_gather_axis(emitter, d, a);
+            any_light += axes[a];
+          }
+          if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line
+          ivec3 start = lpv_gather_line_start(centre);
+          float through = OCCLUDED ? transmitted(start, cell, normalize(vec3(cell - start)), dims) : 1.0;
+          if (!(through > 0.0)) continue;
+          for (int a = 0; a < 6; ++a) cube[a] += through * flux_per_pi * axes[a];
+        }
   }
   // Two texels a cell and channel: (+x, -x, +y, -y) and (+z, -z, 0, 0).
   int first = 2 * lpv_accumulated_texel(cell, push.cascade, dims);

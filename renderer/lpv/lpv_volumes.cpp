@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "renderer/gpu_types.hpp"
+#include "shaders/shared/lpv_sh.h"
+#include "shaders/shared/lpv_gather.h"
 
 #include <glm/vec3.hpp>
 
@@ -12,7 +14,6 @@ namespace {
 constexpr VkDeviceSize kInjectedBytesPerCell = 12 * 8;
 constexpr VkDeviceSize kCornerSumBytesPerSlot = gpu::LPV_GV_WORDS * 8;
 constexpr VkDeviceSize kGridTexelsPerCell = 2 * 3;  // two grids of three channels
-constexpr VkDeviceSize kGridBytesPerCell = kGridTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
 constexpr VkDeviceSize kAccumulatedBytesPerTexel = 3 * vkx::TexelBuffer::kTexelBytes;  // a texel per channel
 constexpr VkDeviceSize kCornerTexels = gpu::LPV_GV_CORNER_TEXELS;
 constexpr VkDeviceSize kCornerBytes = kCornerTexels * vkx::TexelBuffer::kTexelBytes;
@@ -24,6 +25,13 @@ constexpr VkFormat kSums = VK_FORMAT_R32G32B32A32_UINT;
 constexpr std::size_t kRecordInt64s = gpu::LPV_FLUX_SLOTS * gpu::LPV_FLUX_SLOT_INT64S;  // one flux_stats record
 
 std::uint64_t cell_count(glm::uvec3 d) { return std::uint64_t(d.x) * d.y * d.z; }
+
+// Propagation's two grids, or the gather's pyramid of sources, which takes more only on
+// grids a few cells thick (lpv_gather.h).
+std::uint64_t grid_texels(glm::uvec3 d) {
+  const std::uint64_t pyramid = std::uint64_t(gpu::lpv_gather_records(glm::ivec3(d))) * gpu::LPV_GATHER_RECORD_TEXELS;
+  return std::max(cell_count(d) * kGridTexelsPerCell, pyramid);
+}
 
 vkx::Image rsm_target(const vkx::Device& device, VkFormat format, std::uint32_t res, std::uint32_t layers) {
   return vkx::Image(device, {format, res, res, layers,
@@ -45,16 +53,18 @@ RsmMaps::RsmMaps(const vkx::Device& device, std::uint32_t res, std::uint32_t n)
 std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
                                 std::uint32_t accumulated_texels) {
   const std::uint64_t cells = cell_count(dims);
-  return cells * (kInjectedBytesPerCell + kGridBytesPerCell + kFaceBytesPerCell + kFaceAlbedoBytesPerCell +
+  return cells * (kInjectedBytesPerCell + kFaceBytesPerCell + kFaceAlbedoBytesPerCell +
                   kAccumulatedBytesPerTexel * accumulated_texels * cascades) +
+         grid_texels(dims) * vkx::TexelBuffer::kTexelBytes +
          cell_count(dims + 1u) * (kCornerBytes + geometry_slots * kCornerSumBytesPerSlot);
 }
 
 std::uint64_t LpvVolumes::largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
                                                std::uint32_t accumulated_texels) {
-  const std::uint64_t per_cell = std::max({kInjectedBytesPerCell, kGridBytesPerCell, kFaceBytesPerCell,
-                                           accumulated_texels * cascades * vkx::TexelBuffer::kTexelBytes});
-  return std::max(cell_count(dims) * per_cell, cell_count(dims + 1u) * geometry_slots * kCornerSumBytesPerSlot);
+  const std::uint64_t per_cell = std::max(
+      {kInjectedBytesPerCell, kFaceBytesPerCell, accumulated_texels * cascades * vkx::TexelBuffer::kTexelBytes});
+  return std::max({cell_count(dims) * per_cell, grid_texels(dims) * vkx::TexelBuffer::kTexelBytes,
+                   cell_count(dims + 1u) * geometry_slots * kCornerSumBytesPerSlot});
 }
 
 LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c, std::uint32_t slots,
@@ -65,7 +75,7 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c,
       accumulated_texels(texels),
       injected(device, cell_count(d) * kInjectedBytesPerCell / vkx::TexelBuffer::kTexelBytes, kSums),
       corner_sums(device, cell_count(d + 1u) * slots * kCornerSumBytesPerSlot / vkx::TexelBuffer::kTexelBytes, kSums),
-      grids(device, cell_count(d) * kGridTexelsPerCell),
+      grids(device, grid_texels(d)),
       accumulated{vkx::TexelBuffer(device, cell_count(d) * c * texels), vkx::TexelBuffer(device, cell_count(d) * c * texels),
                   vkx::TexelBuffer(device, cell_count(d) * c * texels)},
       corners(device, cell_count(d + 1u) * kCornerTexels),

@@ -85,7 +85,7 @@ struct LpvVolumes {
   vkx::Buffer flux_stats;  // records of int64 fixed-point fluxes, host-visible
   // Propagation's ping-pong: texel 3 (which * cells + cell) + k, what the cell sends in
   // channel k = R, G, B: its SH times its outgoing scale (lpv_outgoing_scale), in sender form
-  // (lpv_sender_form).
+  // (lpv_sender_form). The gather keeps its pyramid of sources here instead (lpv_gather.h).
   vkx::TexelBuffer grids;
   // The light the shading reads (and filters itself), one buffer per colour channel:
   // texel accumulated_texels * (cascade * cells + cell) + k. Propagation accumulates SH (one

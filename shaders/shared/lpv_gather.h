@@ -29,14 +29,17 @@ namespace gpu_double {
 #else
 namespace gpu {
 #endif
+using glm::floor;
 using glm::ivec3;
 using glm::min;
 #define LPV_FUNC inline
 #define LPV_CONST_F inline constexpr lpv_real
+#define LPV_CONST_I inline constexpr int
 #else
 #define lpv_real float
 #define LPV_FUNC
 #define LPV_CONST_F const float
+#define LPV_CONST_I const int
 #endif
 
 // A source cell stands for about a cell face of lit surface: its light at distance r falls
@@ -142,6 +145,74 @@ LPV_FUNC lpv_real lpv_gather_own_cell(vec4 sh, int a) {
   return max(dot(sh_nonnegative_irradiance(sh), sh_cosine_lobe(-lpv_cube_axis(a))), lpv_real(0));
 }
 
+// The sources, as a pyramid (docs/lpv.md, "The gather"). A cell gathers the lit cells near it
+// one by one and those further off in blocks, each block's light summed and placed at its
+// centroid: level 0 holds the cells, level L blocks of 2^L cells a side (the last ones of an
+// axis cut short by the grid's end). Which level a source is gathered at is the fast multipole
+// method's rule, with blocks one block apart counted as far: a cell c gathers the level-L
+// blocks whose parent (at level L + 1) lies next to c's (or is c's), except, above level 0,
+// the blocks next to c's own, which it gathered at finer levels. Every source is gathered
+// exactly once, at the coarsest level at which it is more than a block from c; so a block is
+// always at least its own size away, a cell's nearest 2 to 3 cells a side come one by one,
+// and each cell gathers a few hundred records whatever the grid, where it gathered every lit
+// cell of it before.
+//
+// A record is three texels: the sum of its cells' injected SH over the channels (whose band 1
+// gives the emitter: lpv_gather_emitter), each channel's flux / pi, and the flux-weighted
+// centroid of its cells' centres (cell units of level 0), where its light comes from.
+LPV_CONST_I LPV_GATHER_RECORD_TEXELS = 3;
+
+// Blocks per axis at a level.
+LPV_FUNC ivec3 lpv_gather_level_dims(ivec3 dims, int level) { return (dims + ivec3((1 << level) - 1)) >> level; }
+LPV_FUNC int lpv_gather_level_blocks(ivec3 dims, int level) {
+  const ivec3 d = lpv_gather_level_dims(dims, level);
+  return d.x * d.y * d.z;
+}
+// The first record of a level: the levels are stored one after another, blocks x-fastest.
+LPV_FUNC int lpv_gather_level_first(ivec3 dims, int level) {
+  int first = 0;
+  for (int k = 0; k < level; ++k) first += lpv_gather_level_blocks(dims, k);
+  return first;
+}
+// Levels down to a single block, and the records of all of them.
+LPV_FUNC int lpv_gather_levels(ivec3 dims) {
+  int levels = 1;
+  while (lpv_gather_level_blocks(dims, levels - 1) > 1) ++levels;
+  return levels;
+}
+LPV_FUNC int lpv_gather_records(ivec3 dims) { return lpv_gather_level_first(dims, lpv_gather_levels(dims)); }
+
+// The blocks of a level that cell c gathers from lie in [lo, hi] (clipped to the grid), less
+// those next to c's own above level 0 (lpv_gather_gathered_finer). Where the range covers the
+// whole level, c gathers everything left there and `last` ends its climb.
+struct LpvGatherWindow {
+  ivec3 lo;
+  ivec3 hi;
+  bool last;
+};
+LPV_FUNC LpvGatherWindow lpv_gather_window(ivec3 cell, int level, ivec3 dims) {
+  const ivec3 level_dims = lpv_gather_level_dims(dims, level);
+  const ivec3 parent = cell >> (level + 1);
+  LpvGatherWindow window;
+  window.lo = max(parent * 2 - ivec3(2), ivec3(0));
+  window.hi = min(parent * 2 + ivec3(3), level_dims - ivec3(1));
+  window.last = window.lo.x == 0 && window.lo.y == 0 && window.lo.z == 0 && window.hi.x == level_dims.x - 1 &&
+                window.hi.y == level_dims.y - 1 && window.hi.z == level_dims.z - 1;
+  return window;
+}
+LPV_FUNC bool lpv_gather_gathered_finer(ivec3 block, ivec3 cell, int level) {
+  const ivec3 apart = abs(block - (cell >> level));
+  return level > 0 && apart.x <= 1 && apart.y <= 1 && apart.z <= 1;
+}
+
+// The cell a block's line of sight starts from: the one its centroid lies in. Rounded a hair
+// below the half so that a centre halfway between two cells (two equal ones) rounds the same
+// way in float and in double.
+LPV_CONST_F LPV_GATHER_ROUNDING = 0.4921875;  // 1/2 - 1/128
+LPV_FUNC ivec3 lpv_gather_line_start(vec3 centre) {
+  return ivec3(floor(centre + vec3(LPV_GATHER_ROUNDING)));
+}
+
 #ifdef __cplusplus
 }  // namespace gpu or gpu_double
 #else
@@ -149,5 +220,6 @@ LPV_FUNC lpv_real lpv_gather_own_cell(vec4 sh, int a) {
 #endif
 #undef LPV_FUNC
 #undef LPV_CONST_F
+#undef LPV_CONST_I
 
 #endif  // LPV_GATHER_BODY

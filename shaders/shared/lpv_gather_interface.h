@@ -6,10 +6,9 @@
 
 LPV_INTERFACE_BEGIN
 
-// lpv_gather_sources.comp: the lit injected cells, in cell order, written to the sources
-// buffer (the propagation grids' memory, which the gather does not use): texel 0 holds their
-// count (x, as an integer), then two texels each, what it emits (lpv_gather_emitter) and its
-// channels' flux / pi with its cell index in w.
+// lpv_gather_sources.comp: the pyramid of the sources (lpv_gather.h: LPV_GATHER_RECORD_TEXELS
+// a record, lpv_gather_records of them), written to the sources buffer (the propagation
+// grids' memory, which the gather does not use, sized for it: LpvVolumes::grids).
 LPV_BINDING GATHER_SOURCES_LPV = 0u;       // uniform GpuLpv
 LPV_BINDING GATHER_SOURCES_INJECTED = 1u;  // texels: the injection's integer sums
 LPV_BINDING GATHER_SOURCES_STORE = 2u;     // storage: the sources, written

@@ -1,5 +1,5 @@
 // The CPU reference of the gather transfer (lpv_cpu_reference.hpp): the loops of
-// lpv_gather.comp written plainly in double.
+// lpv_gather_sources.comp and lpv_gather.comp written plainly in double.
 #include "lpv_cpu_reference.hpp"
 
 #define LPV_SH_DOUBLE
@@ -37,38 +37,98 @@ double transmitted(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces
   return std::max(through, 0.0);
 }
 
+// A record of the pyramid of sources (lpv_gather_sources.comp's three texels).
+struct Record {
+  glm::dvec4 sh{0.0};    // summed over the channels
+  glm::dvec3 flux{0.0};  // per channel, over pi
+  glm::dvec3 centre{0.0};
+  double weight() const { return flux.x + flux.y + flux.z; }
+};
+
+// lpv_gather_sources.comp: level 0 the cells, each level above the sums of 2 x 2 x 2 records
+// of the one below, in the same order.
+std::vector<Record> pyramid(const GridD& injected) {
+  const glm::ivec3 dims = injected.dims;
+  std::vector<Record> records(std::size_t(g::lpv_gather_records(dims)));
+  for (int z = 0; z < dims.z; ++z)
+    for (int y = 0; y < dims.y; ++y)
+      for (int x = 0; x < dims.x; ++x) {
+        const glm::ivec3 cell(x, y, z);
+        Record& r = records[injected.index(cell)];
+        for (int c = 0; c < 3; ++c) {
+          r.sh += injected.at(cell, c);
+          r.flux[c] = 4.0 * g::SH_C0 * injected.at(cell, c).x;
+        }
+        r.centre = glm::dvec3(cell);
+      }
+  for (int level = 1; level < g::lpv_gather_levels(dims); ++level) {
+    const glm::ivec3 level_dims = g::lpv_gather_level_dims(dims, level);
+    const glm::ivec3 below = g::lpv_gather_level_dims(dims, level - 1);
+    const int first_below = g::lpv_gather_level_first(dims, level - 1);
+    Record* blocks = &records[std::size_t(g::lpv_gather_level_first(dims, level))];
+    for (int bz = 0; bz < level_dims.z; ++bz)
+      for (int by = 0; by < level_dims.y; ++by)
+        for (int bx = 0; bx < level_dims.x; ++bx) {
+          Record& r = blocks[bx + level_dims.x * (by + level_dims.y * bz)];
+          glm::dvec3 weighted(0.0);
+          for (int z = 2 * bz; z < std::min(2 * bz + 2, below.z); ++z)
+            for (int y = 2 * by; y < std::min(2 * by + 2, below.y); ++y)
+              for (int x = 2 * bx; x < std::min(2 * bx + 2, below.x); ++x) {
+                const Record& child = records[std::size_t(first_below + x + below.x * (y + below.y * z))];
+                if (!(child.weight() > 0.0)) continue;
+                r.sh += child.sh;
+                r.flux += child.flux;
+                weighted += child.weight() * child.centre;
+              }
+          if (r.weight() > 0.0) r.centre = weighted / r.weight();
+        }
+  }
+  return records;
+}
+
 }  // namespace
 
 std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection) {
   const glm::ivec3 dims = injected.dims;
+  const std::vector<Record> records = pyramid(injected);
   std::vector<double> cubes(injected.sh.size() * 6, 0.0);
   for (int z = 0; z < dims.z; ++z)
     for (int y = 0; y < dims.y; ++y)
       for (int x = 0; x < dims.x; ++x) {
         const glm::ivec3 cell(x, y, z);
         double* cube = &cubes[injected.index(cell) * 18];
-        for (int sz = 0; sz < dims.z; ++sz)
-          for (int sy = 0; sy < dims.y; ++sy)
-            for (int sx = 0; sx < dims.x; ++sx) {
-              const glm::ivec3 source(sx, sy, sz);
-              const glm::dvec4 sh[3] = {injected.at(source, 0), injected.at(source, 1), injected.at(source, 2)};
-              if (sh[0].x == 0.0 && sh[1].x == 0.0 && sh[2].x == 0.0) continue;
-              if (source == cell) {
+        bool last = false;
+        for (int level = 0; !last; ++level) {
+          const g::LpvGatherWindow window = g::lpv_gather_window(cell, level, dims);
+          last = window.last;
+          const glm::ivec3 level_dims = g::lpv_gather_level_dims(dims, level);
+          const int first = g::lpv_gather_level_first(dims, level);
+          for (int bz = window.lo.z; bz <= window.hi.z; ++bz)
+            for (int by = window.lo.y; by <= window.hi.y; ++by)
+              for (int bx = window.lo.x; bx <= window.hi.x; ++bx) {
+                const glm::ivec3 block(bx, by, bz);
+                if (g::lpv_gather_gathered_finer(block, cell, level)) continue;
+                const Record& r = records[std::size_t(first + bx + level_dims.x * (by + level_dims.y * bz))];
+                if (!(r.weight() > 0.0)) continue;
+                if (level == 0 && block == cell) {
+                  for (int c = 0; c < 3; ++c)
+                    for (int a = 0; a < 6; ++a) cube[c * 6 + a] += g::lpv_gather_own_cell(injected.at(cell, c), a);
+                  continue;
+                }
+                const glm::dvec4 emitter = g::lpv_gather_emitter(r.sh, injection);
+                const glm::dvec3 d = glm::dvec3(cell) - r.centre;
+                double axes[6];
+                double any_light = 0.0;
+                for (int a = 0; a < 6; ++a) any_light += axes[a] = g::lpv_gather_axis(emitter, d, a);
+                if (!(any_light > 0.0)) continue;
+                const glm::ivec3 start = g::lpv_gather_line_start(r.centre);
+                const double through =
+                    faces.empty() ? 1.0 : transmitted(injected, faces, start, cell, glm::normalize(glm::dvec3(cell - start)));
+                if (!(through > 0.0)) continue;
                 for (int c = 0; c < 3; ++c)
-                  for (int a = 0; a < 6; ++a) cube[c * 6 + a] += g::lpv_gather_own_cell(sh[c], a);
-                continue;
+                  for (int a = 0; a < 6; ++a) cube[c * 6 + a] += through * r.flux[c] * axes[a];
               }
-              const glm::dvec4 emitter = g::lpv_gather_emitter(sh[0] + sh[1] + sh[2], injection);
-              const glm::dvec3 d(cell - source);
-              double axes[6];
-              double any_light = 0.0;
-              for (int a = 0; a < 6; ++a) any_light += axes[a] = g::lpv_gather_axis(emitter, d, a);
-              if (!(any_light > 0.0)) continue;
-              const double through = faces.empty() ? 1.0 : transmitted(injected, faces, source, cell, glm::normalize(d));
-              if (!(through > 0.0)) continue;
-              for (int c = 0; c < 3; ++c)
-                for (int a = 0; a < 6; ++a) cube[c * 6 + a] += 4.0 * g::SH_C0 * through * sh[c].x * axes[a];
-            }
+        }
       }
   return cubes;
 }
