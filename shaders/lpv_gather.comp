@@ -87,14 +87,15 @@ void main() {
           vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
           vec3 centre = imageLoad(sources, record + 2).xyz;
           vec3 d = vec3(cell) - centre;
+          bool near = level == 0;
           float axes[6];
           float any_light = 0.0;
           for (int a = 0; a < 6; ++a) {
-            axes[a] = lpv_gather_axis(emitter, d, a);
+            axes[a] = near ? lpv_gather_patch_axis(emitter, d, a) : lpv_gather_axis(emitter, d, a);
             any_light += axes[a];
           }
           if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line
-          ivec3 start = lpv_gather_line_start(centre);
+          ivec3 start = level == 0 ? block : clamp(lpv_gather_line_start(centre + lpv.scales.w * emitter.w * emitter.xyz), ivec3(0), ivec3(dims) - 1);
           float through = OCCLUDED ? transmitted(start, cell, normalize(vec3(cell - start)), dims) : 1.0;
           if (!(through > 0.0)) continue;
           for (int a = 0; a < 6; ++a) cube[a] += through * flux_per_pi * axes[a];

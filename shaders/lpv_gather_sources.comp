@@ -39,7 +39,9 @@ void store_cell(int cell, ivec3 dims) {
                        1.0 / lpv.scales.x);
   ivec3 at = ivec3(cell % dims.x, (cell / dims.x) % dims.y, cell / (dims.x * dims.y));
   // Each channel's flux / pi: 4 c0 s0 (lpv_sh.h: flux = 4 pi c0 s0).
-  store_record(cell, sh[0] + sh[1] + sh[2], 4.0 * SH_C0 * vec3(sh[0].x, sh[1].x, sh[2].x), vec3(at));
+  vec4 summed = sh[0] + sh[1] + sh[2];
+  vec4 emitter = lpv_gather_emitter(summed, lpv.transfer.y);
+  store_record(cell, summed, 4.0 * SH_C0 * vec3(sh[0].x, sh[1].x, sh[2].x), lpv_gather_surface(vec3(at), emitter, lpv.scales.w));
 }
 
 void store_block(int block, int level, ivec3 dims) {
