@@ -87,11 +87,10 @@ void main() {
           vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
           vec3 centre = imageLoad(sources, record + 2).xyz;
           vec3 d = vec3(cell) - centre;
-          bool near = level == 0;
           float axes[6];
           float any_light = 0.0;
           for (int a = 0; a < 6; ++a) {
-            axes[a] = near ? lpv_gather_patch_axis(emitter, d, a) : lpv_gather_axis(emitter, d, a);
+            axes[a] = lpv_gather_axis(emitter, d, a);
             any_light += axes[a];
           }
           if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line

@@ -29,10 +29,8 @@ namespace gpu_double {
 #else
 namespace gpu {
 #endif
-using glm::cross;
 using glm::floor;
 using glm::ivec3;
-using std::acos;
 using glm::min;
 #define LPV_FUNC inline
 #define LPV_CONST_F inline constexpr lpv_real
@@ -90,45 +88,6 @@ LPV_FUNC lpv_real lpv_gather_axis(vec4 emitter, vec3 d, int a) {
   const lpv_real r2 = dot(to_surface, to_surface);
   const vec3 w = to_surface / sqrt(r2);
   return lpv_gather_lobe(emitter, w) * max(-dot(w, axis), lpv_real(0)) / (r2 + LPV_GATHER_SOURCE_AREA_TERM);
-}
-
-// The same from a source near enough that a point is a poor stand-in for the surface it holds:
-// its coherent part as a lit square of one cell face about its normal, centred at the source,
-// whose irradiance is Lambert's sum over its edges (each edge's angle times the unit normal of
-// the plane through it and the receiving point); its isotropic part as a point. Next to a
-// wall, a point at the source's centre lights the floor at its foot as if from above it; the
-// square reaches down to the floor. The receiving surface is taken to face the square whole:
-// where the axis's plane cuts the square, the sum nets the part behind it against the part in
-// front.
-LPV_FUNC lpv_real lpv_gather_patch_axis(vec4 emitter, vec3 d, int a) {
-  const vec3 axis = lpv_cube_axis(a);
-  const vec3 p = d - lpv_real(0.5) * axis;  // the receiving point, from the source
-  const lpv_real r2 = dot(p, p);
-  const vec3 w = p / sqrt(r2);
-  const lpv_real isotropic =
-      (lpv_real(1) - emitter.w) * lpv_real(0.25) * max(-dot(w, axis), lpv_real(0)) / (r2 + LPV_GATHER_SOURCE_AREA_TERM);
-  const vec3 n = vec3(emitter.x, emitter.y, emitter.z);
-  if (!(emitter.w > lpv_real(0)) || !(dot(p, n) > lpv_real(1e-4))) return isotropic;  // behind the square or in its plane
-  // Its sides: along the axes least aligned with n (the grid's, for a surface along them).
-  const vec3 across = abs(n);
-  const vec3 helper = across.x <= across.y && across.x <= across.z ? vec3(1, 0, 0)
-                      : across.y <= across.z                        ? vec3(0, 1, 0)
-                                                                    : vec3(0, 0, 1);
-  const vec3 t = lpv_real(0.5) * normalize(cross(n, helper));
-  const vec3 b = cross(n, t);
-  vec3 corner[4];
-  corner[0] = t + b - p;
-  corner[1] = b - t - p;
-  corner[2] = -t - b - p;
-  corner[3] = t - b - p;
-  vec3 sum = vec3(lpv_real(0));
-  for (int i = 0; i < 4; ++i) {
-    const vec3 u = normalize(corner[i]);
-    const vec3 v = normalize(corner[(i + 1) % 4]);
-    sum += acos(clamp(dot(u, v), lpv_real(-1), lpv_real(1))) * normalize(cross(u, v));
-  }
-  if (dot(sum, -p) < lpv_real(0)) sum = -sum;  // towards the square
-  return isotropic + emitter.w * lpv_real(0.5) * max(dot(sum, axis), lpv_real(0));
 }
 
 // A face's blockers lie within a cell of it along their normal: the geometry volume splats
