@@ -94,7 +94,7 @@ void main() {
             any_light += axes[a];
           }
           if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line
-          ivec3 start = level == 0 ? block : clamp(lpv_gather_line_start(centre + lpv.scales.w * emitter.w * emitter.xyz), ivec3(0), ivec3(dims) - 1);
+          ivec3 start = lpv_gather_line_start(centre, emitter, lpv.scales.w, ivec3(dims));
           float through = OCCLUDED ? transmitted(start, cell, normalize(vec3(cell - start)), dims) : 1.0;
           if (!(through > 0.0)) continue;
           for (int a = 0; a < 6; ++a) cube[a] += through * flux_per_pi * axes[a];

@@ -213,12 +213,15 @@ LPV_FUNC vec3 lpv_gather_surface(vec3 cell_centre, vec4 emitter, lpv_real offset
   return cell_centre - offset * emitter.w * vec3(emitter.x, emitter.y, emitter.z);
 }
 
-// The cell a block's line of sight starts from: the one its centroid lies in. Rounded a hair
+// The cell a record's line of sight starts from: the one its light was added around (its
+// centre moved back along the mean normal: lpv_gather_surface), clamped to the grid. For a cell
+// that is the cell itself; for a block, the one holding most of its light. Rounded a hair
 // below the half so that a centre halfway between two cells (two equal ones) rounds the same
 // way in float and in double.
 LPV_CONST_F LPV_GATHER_ROUNDING = 0.4921875;  // 1/2 - 1/128
-LPV_FUNC ivec3 lpv_gather_line_start(vec3 centre) {
-  return ivec3(floor(centre + vec3(LPV_GATHER_ROUNDING)));
+LPV_FUNC ivec3 lpv_gather_line_start(vec3 centre, vec4 emitter, lpv_real offset, ivec3 dims) {
+  const vec3 added = centre + offset * emitter.w * vec3(emitter.x, emitter.y, emitter.z);
+  return clamp(ivec3(floor(added + vec3(LPV_GATHER_ROUNDING))), ivec3(0), dims - ivec3(1));
 }
 
 #ifdef __cplusplus

@@ -45,9 +45,9 @@ struct Record {
   double weight() const { return flux.x + flux.y + flux.z; }
 };
 
-// lpv_gather_sources.comp: level 0 the cells, each level above the sums of 2 x 2 x 2 records
-// of the one below, in the same order.
-std::vector<Record> pyramid(const GridD& injected) {
+// lpv_gather_sources.comp: level 0 the cells (their light where it left their surfaces), each
+// level above the sums of 2 x 2 x 2 records of the one below, in the same order.
+std::vector<Record> pyramid(const GridD& injected, double injection, double offset) {
   const glm::ivec3 dims = injected.dims;
   std::vector<Record> records(std::size_t(g::lpv_gather_records(dims)));
   for (int z = 0; z < dims.z; ++z)
@@ -59,7 +59,7 @@ std::vector<Record> pyramid(const GridD& injected) {
           r.sh += injected.at(cell, c);
           r.flux[c] = 4.0 * g::SH_C0 * injected.at(cell, c).x;
         }
-        r.centre = glm::dvec3(cell);
+        r.centre = g::lpv_gather_surface(glm::dvec3(cell), g::lpv_gather_emitter(r.sh, injection), offset);
       }
   for (int level = 1; level < g::lpv_gather_levels(dims); ++level) {
     const glm::ivec3 level_dims = g::lpv_gather_level_dims(dims, level);
@@ -88,9 +88,10 @@ std::vector<Record> pyramid(const GridD& injected) {
 
 }  // namespace
 
-std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection) {
+std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection,
+                           double offset) {
   const glm::ivec3 dims = injected.dims;
-  const std::vector<Record> records = pyramid(injected);
+  const std::vector<Record> records = pyramid(injected, injection, offset);
   std::vector<double> cubes(injected.sh.size() * 6, 0.0);
   for (int z = 0; z < dims.z; ++z)
     for (int y = 0; y < dims.y; ++y)
@@ -121,7 +122,7 @@ std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::d
                 double any_light = 0.0;
                 for (int a = 0; a < 6; ++a) any_light += axes[a] = g::lpv_gather_axis(emitter, d, a);
                 if (!(any_light > 0.0)) continue;
-                const glm::ivec3 start = g::lpv_gather_line_start(r.centre);
+                const glm::ivec3 start = g::lpv_gather_line_start(r.centre, emitter, offset, dims);
                 const double through =
                     faces.empty() ? 1.0 : transmitted(injected, faces, start, cell, glm::normalize(glm::dvec3(cell - start)));
                 if (!(through > 0.0)) continue;

@@ -103,11 +103,13 @@ inline Grid inject(const std::vector<Vpl>& vpls, glm::vec3 origin, float cell_si
 
 namespace lpv_ref {
 
-// The gather transfer (lpv_gather.comp) in double, on the shared formulas of
-// shaders/shared/lpv_gather.h: every cell's irradiance cube from the injected grid (its SH,
-// the VPLs having gone in with band 1 times `injection`, lpv.transfer.y) and the faces'
-// blocking (empty: nothing blocks). Six values a cell and channel (+x, -x, +y, -y, +z, -z),
-// at cubes[(3 * cell + channel) * 6 + axis], cells x-fastest.
-std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection);
+// The gather transfer (lpv_gather_sources.comp, lpv_gather.comp) in double, on the shared
+// formulas of shaders/shared/lpv_gather.h: every cell's irradiance cube from the injected grid
+// (its SH, the VPLs having gone in with band 1 times `injection`, lpv.transfer.y, moved
+// `offset` cells along their normals, lpv.injection_offset) and the faces' blocking (empty:
+// nothing blocks). Six values a cell and channel (+x, -x, +y, -y, +z, -z), at
+// cubes[(3 * cell + channel) * 6 + axis], cells x-fastest.
+std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection,
+                           double offset);
 
 }  // namespace lpv_ref

@@ -245,7 +245,8 @@ TEST_F(Lpv, OccludedPropagationMatchesTheDoublePrecisionReference) {
 TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
   std::map<std::uint32_t, double> open_total;  // by grid width
   for (const bool occlusion : {false, true}) {
-    for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(12, 9, 7)}) {
+    // 5 x 1 x 1: a grid whose pyramid of sources outgrows propagation's two grids (LpvVolumes).
+    for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(12, 9, 7), glm::uvec3(5, 1, 1)}) {
       SCOPED_TRACE(std::string(occlusion ? "occlusion, " : "no occlusion, ") + std::to_string(dims.x) + "x" +
                    std::to_string(dims.y) + "x" + std::to_string(dims.z));
       api::RenderRequest request = small_grid_request(0);
@@ -260,8 +261,9 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
         faces.sh.assign(gathered.lpv.faces.begin(), gathered.lpv.faces.end());
         for (const glm::vec4& spread : gathered.lpv.face_spreads) faces.spread.push_back(glm::dvec3(spread));
       }
-      const std::vector<double> exact = lpv_ref::gather(grid_of(injected.lpv.cascades.at(0)), faces,
-                                                        renderer::transfer_factors(api::Transfer::gather).injected);
+      const std::vector<double> exact =
+          lpv_ref::gather(grid_of(injected.lpv.cascades.at(0)), faces,
+                          renderer::transfer_factors(api::Transfer::gather).injected, request.lpv.injection_offset);
       const std::vector<glm::vec4>& texels = gathered.lpv.cascades.at(0).accumulated;  // 2 a cell and channel
       ASSERT_EQ(texels.size() * 3, exact.size());
       double diff = 0.0, scale = 0.0, lit = 0.0, total = 0.0;
@@ -275,7 +277,7 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
       std::printf("gather, %s: GPU (float) against double: %.2e of the largest value (%.0f of %zu values lit)\n",
                   occlusion ? "occluded" : "open", diff / scale, lit, exact.size());
       EXPECT_GT(lit, 0.5 * double(exact.size())) << "the gather lights most cells";
-      if (occlusion) {
+      if (occlusion && dims.y > 1) {  // (the grid one cell thick is checked for agreement alone)
         EXPECT_LT(total, 0.95 * open_total[dims.x]) << "the geometry volume blocks some light";
       } else {
         open_total[dims.x] = total;
