@@ -323,6 +323,19 @@ LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene
       plan.decisions.push_back("grid fitted to the part of the scene the camera sees and the lights reach (" +
                                std::to_string(fitted) + " of " + std::to_string(whole) + " m across)");
   }
+  // The gather's cost is its cell count, however arranged: it spends them on the region's shape.
+  // (Propagation's range and iterations are counted in cells along each axis: it keeps its cube.)
+  if (api::plan_applies(request, api::PlanRule::grid) && plan.run[kGather] && !request.lpv.origin &&
+      !request.lpv.extent) {
+    const glm::uvec3 shaped = grid_shaped_to(request.lpv.grid, lpv.grid_bounds);
+    if (shaped != request.lpv.grid) {
+      plan.decisions.push_back("grid " + std::to_string(shaped.x) + "x" + std::to_string(shaped.y) + "x" +
+                               std::to_string(shaped.z) + ": the gather's cells (no more than " +
+                               std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
+                               std::to_string(request.lpv.grid.z) + ") arranged to the shape of the grid's region");
+      lpv.settings.grid = shaped;
+    }
+  }
   lpv.setup = fit();
 
   if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm]) {

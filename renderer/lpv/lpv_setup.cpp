@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace renderer {
 namespace {
@@ -26,6 +27,23 @@ glm::vec3 snapped_origin(glm::vec3 centre, glm::uvec3 dims, float cell, glm::vec
 
 std::uint32_t surfel_stride(std::uint32_t rows) {
   return std::max(1u, (rows + kGeometrySurfelRows / 2) / kGeometrySurfelRows);
+}
+
+glm::uvec3 grid_shaped_to(glm::uvec3 requested, const scene::Bounds& bounds) {
+  const std::uint64_t budget = std::uint64_t(requested.x) * requested.y * requested.z;
+  const glm::vec3 size = bounds.max - bounds.min;
+  const float longest = max_component(size);
+  if (!(longest > 0.0f) || !std::isfinite(longest)) return requested;
+  std::optional<glm::uvec3> best;
+  for (std::uint32_t n = 2; n <= api::limits::max_grid_side; ++n) {
+    const float cell = longest / float(n - 1);  // dims - 1 cells span the bounds (place_cascades)
+    glm::uvec3 dims;
+    for (int a = 0; a < 3; ++a)
+      dims[a] = std::clamp(std::uint32_t(std::ceil(size[a] / cell)) + 1u, 2u, api::limits::max_grid_side);
+    if (std::uint64_t(dims.x) * dims.y * dims.z > budget) break;
+    best = dims;
+  }
+  return best.value_or(requested);
 }
 
 std::vector<CascadePlacement> place_cascades(const api::Lpv& lpv, const scene::Bounds& bounds, glm::vec3 focus) {

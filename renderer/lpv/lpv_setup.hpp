@@ -25,6 +25,14 @@ struct CascadePlacement {
 // own size, so that a moving focus does not make the lighting crawl.
 std::vector<CascadePlacement> place_cascades(const api::Lpv& lpv, const scene::Bounds& bounds, glm::vec3 focus);
 
+// The cells of `requested` (no more than its count) arranged to the shape of `bounds`: cubic
+// cells, as many along each axis as place_cascades needs to hold the bounds with half a cell
+// to spare, the cells as small as the count allows (each axis 2 to api::limits::max_grid_side).
+// An 8 x 1.5 x 2.5 m corridor gets 8 x 13 x 38 cells of 0.22 m for 16^3, where a cube of 16^3
+// spends 0.53 m cells, 3 across it, on the empty space beside it. `requested` itself when no
+// arrangement fits (a flat or empty box gets 2 cells across its thin axes).
+glm::uvec3 grid_shaped_to(glm::uvec3 requested, const scene::Bounds& bounds);
+
 // An upper bound of the flux all VPLs can carry (W): what the lights send toward the scene,
 // reflected with albedo at most 1. Zero when no light emits.
 double vpl_flux_bound(const std::vector<api::Light>& lights, const scene::Bounds& bounds);
