@@ -211,6 +211,8 @@ std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep) {
   vary(p.occlusion, [](SweepSettings& s, bool v) { s.occlusion = v; });
   vary(p.transfer, [](SweepSettings& s, Transfer v) { s.transfer = v; });
   vary(p.blocking, [](SweepSettings& s, Blocking v) { s.blocking = v; });
+  // Each row names the transfer it ran.
+  for (SweepSettings& s : grid) s.transfer = resolved_transfer({s.grid[0], s.grid[1], s.grid[2]}, s.transfer);
   configurations.insert(configurations.end(), grid.begin(), grid.end());
   return configurations;
 }

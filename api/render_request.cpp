@@ -85,12 +85,17 @@ std::string gather_grid_problem(const glm::uvec3& grid, Transfer transfer) {
   return "the gather transfer takes at most " + std::to_string(limits::max_gather_cells) +
          " cells a cascade (24^3), got " + std::to_string(grid.x) + "x" + std::to_string(grid.y) + "x" +
          std::to_string(grid.z) + " (" + std::to_string(cells) +
-         "): every cell gathers from every cell, so its cost grows with their square; use fewer cells or another "
-         "transfer";
+         "); use fewer cells, or transfer \"auto\", which propagates past it";
+}
+
+Transfer resolved_transfer(const glm::uvec3& grid, Transfer transfer) {
+  if (transfer != Transfer::auto_) return transfer;
+  return gather_grid_problem(grid, Transfer::gather).empty() ? Transfer::gather : Transfer::sharpened;
 }
 
 std::string to_string(Transfer t) {
   switch (t) {
+    case Transfer::auto_: return "auto";
     case Transfer::cosine: return "cosine";
     case Transfer::sharpened: return "sharpened";
     case Transfer::gather: return "gather";

@@ -78,9 +78,11 @@ enum class Injection { trilinear, nearest };
 // propagated cell by cell, re-emitted as cosine lobes along the faces' normals (the paper's),
 // or with the lobes' directional terms sharpened so that the light above a lit plane
 // propagates unchanged (no self-illumination, light travels straight); or gathered by every
-// cell from every injected cell along the straight line between them (no propagation,
-// no range limit; its cost grows with the square of the cells: docs/lpv.md, "The gather").
-enum class Transfer { cosine, sharpened, gather };
+// cell from every injected cell along the straight line between them, the far ones in blocks
+// (no propagation, no range limit; at most limits::max_gather_cells a cascade: docs/lpv.md,
+// "The gather"). auto: the gather where the grid is within its limit, else sharpened
+// (resolved_transfer).
+enum class Transfer { auto_, cosine, sharpened, gather };
 // How much of the light crossing a cell face its blockers (the geometry volume) stop
 // (docs/lpv.md, "Blocking"): their projected area across the light's direction, from
 // either side, as an opaque surface blocks; or the paper's one-sided 2-band SH lobe, which
@@ -119,7 +121,7 @@ struct Lpv {
   bool occlusion_from_scene = true;    // ... and of the scene's surfaces themselves
   std::uint32_t bounces = 1;           // 2: light the geometry volume blocks is reflected on
   Injection injection = Injection::trilinear;
-  Transfer transfer = Transfer::sharpened;
+  Transfer transfer = Transfer::auto_;
   Blocking blocking = Blocking::projected;
   float injection_offset = 0.5f;       // VPLs move this many cells along their normal
   float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
@@ -160,8 +162,9 @@ inline constexpr float max_fov_y_deg = 179.9f;
 inline constexpr std::uint32_t max_grid_side = 128;
 inline constexpr std::uint32_t max_cascades = 4;
 inline constexpr std::uint32_t max_iterations = 1024;
-// The gather transfer's cells a cascade: its cost grows with their square (docs/lpv.md, "The
-// gather"; 24^3 takes about 2 s a frame on lavapipe's 2 cores).
+// The gather transfer's cells a cascade: each gathers a few hundred records, along lines as long
+// as the grid (docs/lpv.md, "The gather"; 24^3 takes about 0.1 s of a frame on lavapipe's 2
+// cores, 32^3 about CHECK).
 inline constexpr std::uint64_t max_gather_cells = 24 * 24 * 24;
 inline constexpr std::uint32_t max_rsm_resolution = 4096;
 inline constexpr std::uint32_t max_vpl_downsample = 16;  // a power of two, at most the RSM resolution
@@ -176,6 +179,10 @@ void apply_edit(Light& light, const LightEdit& edit);
 // Why `grid` is too large for `transfer` (the gather takes at most limits::max_gather_cells a
 // cascade); empty when it is not. Requests, sweeps and the renderer all ask this one rule.
 std::string gather_grid_problem(const glm::uvec3& grid, Transfer transfer);
+// The transfer a frame with this grid runs: `transfer`, or for auto the gather when the grid is
+// within limits::max_gather_cells (it is more accurate everywhere: docs/accuracy.md) and
+// propagation ("sharpened") past it.
+Transfer resolved_transfer(const glm::uvec3& grid, Transfer transfer);
 
 std::string to_string(LightType t);
 std::string to_string(View v);

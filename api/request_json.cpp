@@ -250,7 +250,7 @@ std::uint32_t reader::read_vpl_downsample(const Field& f) {
 }
 
 Transfer reader::read_transfer(const Field& f) {
-  return as_enum(f, std::array{Transfer::sharpened, Transfer::cosine, Transfer::gather});
+  return as_enum(f, std::array{Transfer::auto_, Transfer::gather, Transfer::sharpened, Transfer::cosine});
 }
 
 Blocking reader::read_blocking(const Field& f) {

@@ -301,6 +301,14 @@ void plan_shading(FramePlan& plan, api::View view, bool display_only) {
   plan.reason[kReadback] = "the forward pass copies its image to the host itself";
 }
 
+std::string transfer_choice(const api::Lpv& resolved) {
+  const glm::uvec3 g = resolved.grid;
+  const std::string cells = std::to_string(g.x) + "x" + std::to_string(g.y) + "x" + std::to_string(g.z) + " cells";
+  const std::string limit = std::to_string(api::limits::max_gather_cells);
+  if (resolved.transfer == api::Transfer::gather) return "transfer gather (auto): " + cells + ", within its " + limit;
+  return "transfer " + api::to_string(resolved.transfer) + " (auto): " + cells + " are more than the gather's " + limit;
+}
+
 LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene::Scene& scene,
                  const LpvFrameInputs& frame) {
   LpvPlan lpv{scene.bounds, request.lpv, {}, {}};

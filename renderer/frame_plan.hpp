@@ -85,6 +85,9 @@ struct LpvPlan {
 LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene::Scene& scene,
                  const LpvFrameInputs& frame);
 
+// What transfer "auto" chose for these settings (resolved: api::resolved_transfer), and why.
+std::string transfer_choice(const api::Lpv& resolved);
+
 // Why a light cannot light anything in `bounds` (empty when it may): beyond its range, or
 // its cone pointing away from them.
 std::string light_misses(const api::Light& light, const scene::Bounds& bounds);

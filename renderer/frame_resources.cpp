@@ -42,10 +42,6 @@ void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const
                                            ", over the budget of " + mib(kRsmBudgetBytes) + ": lower the resolution");
   const std::string cells = std::to_string(request.lpv.grid.x) + "x" + std::to_string(request.lpv.grid.y) + "x" +
                             std::to_string(request.lpv.grid.z) + " cells";
-  // Requests and sweeps are checked when read; a request built in code is checked here.
-  if (const std::string problem = api::gather_grid_problem(request.lpv.grid, request.lpv.transfer);
-      lpv && !problem.empty())
-    throw api::DoesNotFit("lpv.grid", problem);
   const std::uint32_t geometry_slots = geometry_sources(request.lpv).slots();
   const std::uint32_t accumulated_texels = accumulated_texels_per_cell(request.lpv.transfer);
   const std::uint64_t lpv_bytes =

@@ -250,6 +250,11 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
                                     unsigned readback, double load_ms, double upload_ms) {
   const auto setup_start = Clock::now();
   api::RenderRequest request = asked;  // as the plan changes it
+  // Requests and sweeps are checked when read; a request built in code is checked here, on the
+  // grid asked for (the plan may arrange the gather's cells differently, never more of them).
+  if (const std::string problem = api::gather_grid_problem(request.lpv.grid, request.lpv.transfer); !problem.empty())
+    throw api::DoesNotFit("lpv.grid", problem);
+  request.lpv.transfer = api::resolved_transfer(request.lpv.grid, request.lpv.transfer);
   const api::Output& out = request.output;
   const std::vector<api::Light> lights = resolve_lights(scene, request);
   const api::Camera camera_request = request.camera.value_or(scene.camera);
@@ -257,6 +262,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   auto plan_start = Clock::now();
   FramePlan plan =
       plan_frame({request, lights, scene, gpu.emitter_count, camera.view_proj});
+  if (asked.lpv.transfer == api::Transfer::auto_ && plan.run[kInject])
+    plan.decisions.push_back(transfer_choice(request.lpv));
   std::vector<LightView> views = light_views(lights, scene.bounds, plan.light_drawn);
   request.shadows.resolution = plan_shadow_resolution(plan, request, scene, lights, views, camera,
                                                       camera_request.fov_y_deg, kShadowAtlasBudgetBytes / 4);

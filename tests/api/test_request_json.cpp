@@ -177,7 +177,7 @@ TEST(ParseRequest, EmptyObjectGivesDefaults) {
   EXPECT_EQ(r.lpv.grid, glm::uvec3(16));
   EXPECT_EQ(r.lpv.cascades, 1u);
   EXPECT_EQ(r.lpv.iterations, 32u);
-  EXPECT_EQ(r.lpv.transfer, api::Transfer::sharpened);
+  EXPECT_EQ(r.lpv.transfer, api::Transfer::auto_);
   EXPECT_EQ(r.lpv.rsm_resolution, 256u);
   EXPECT_TRUE(r.lpv.occlusion);
   EXPECT_EQ(r.lpv.bounces, 1u);
@@ -265,6 +265,19 @@ TEST(RequestJson, TheGatherTransferReadsAndWritesBack) {
   const api::RenderRequest r = api::parse_render_request(R"({"lpv": {"transfer": "gather"}})");
   EXPECT_EQ(r.lpv.transfer, api::Transfer::gather);
   EXPECT_EQ(api::parse_render_request(api::to_json(r).dump()).lpv.transfer, api::Transfer::gather);
+  EXPECT_EQ(api::parse_render_request(R"({"lpv": {"transfer": "auto"}})").lpv.transfer, api::Transfer::auto_);
+}
+
+// auto: the gather up to its cell limit, propagation past it; any other transfer as asked.
+TEST(RequestJson, TransferAutoGathersWithinTheGathersLimitAndPropagatesPastIt) {
+  EXPECT_EQ(api::resolved_transfer(glm::uvec3(16), api::Transfer::auto_), api::Transfer::gather);
+  EXPECT_EQ(api::resolved_transfer(glm::uvec3(24), api::Transfer::auto_), api::Transfer::gather);
+  EXPECT_EQ(api::resolved_transfer({24, 24, 25}, api::Transfer::auto_), api::Transfer::sharpened);
+  EXPECT_EQ(api::resolved_transfer(glm::uvec3(32), api::Transfer::auto_), api::Transfer::sharpened);
+  EXPECT_EQ(api::resolved_transfer(glm::uvec3(16), api::Transfer::cosine), api::Transfer::cosine);
+  EXPECT_EQ(api::resolved_transfer(glm::uvec3(8), api::Transfer::sharpened), api::Transfer::sharpened);
+  // A large grid is no error unless the gather is asked for by name.
+  EXPECT_NO_THROW(api::parse_render_request(R"({"lpv": {"grid": 64}})"));
 }
 
 TEST(ParseRequest, AcceptsValuesAtTheLimits) {

@@ -88,18 +88,18 @@ run tiny.json -o upper.PNG -q
 check "-o upper.PNG (any case) exits 0" test "$rc" -eq 0
 check "-o upper.PNG writes a PNG" test "$(od -An -tx1 -N4 upper.PNG | tr -d ' ')" = "89504e47"
 
-# Progress ("frame 2/3 propagate") on a terminal, erased when done; never in a log.
+# Progress ("frame 2/3 gather") on a terminal, erased when done; never in a log.
 echo '{"output": {"width": 32, "height": 32}, "repeat": 3}' >frames.json
 script -qefc "'$bin' frames.json -o frames.png" /dev/null >tty.txt 2>&1
 check "a render on a terminal exits 0" test $? -eq 0
-check "a render on a terminal shows its progress" grep -q "frame 3/3 propagate" tty.txt
+check "a render on a terminal shows its progress" grep -q "frame 3/3 gather" tty.txt
 check "the progress is erased before the summary" grep -q "$(printf '\033\\[K')frames.png: 32x32 final, 3 frames on" tty.txt
 run frames.json -o frames.png
 check "no progress when standard error is a file" test "$(grep -c "frame [0-9]/3" err.txt)" -eq 0
 check "the summary still follows" grep -q "3 frames on" err.txt
 
 # The propagation's column length changes how the work is cut, not the image.
-echo '{"output": {"width": 64, "height": 64, "format": "pfm"}, "lpv": {"grid": [13, 10, 9]}, "plan": "exact"}' >col.json
+echo '{"output": {"width": 64, "height": 64, "format": "pfm"}, "lpv": {"transfer": "sharpened", "grid": [13, 10, 9]}, "plan": "exact"}' >col.json
 run col.json -o col-default.pfm -q
 run col.json -o col-2.pfm -q --propagate-column 2
 check "--propagate-column 2 exits 0" test "$rc" -eq 0

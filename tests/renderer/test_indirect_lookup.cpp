@@ -78,6 +78,7 @@ api::RenderRequest view_request(api::View view, glm::uvec3 grid, std::uint32_t c
   r.plan = api::PlanMode::exact;
   r.lpv.grid = grid;
   r.lpv.cascades = cascades;
+  r.lpv.transfer = api::Transfer::sharpened;  // the host's lookup reads SH
   return r;
 }
 

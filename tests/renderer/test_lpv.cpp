@@ -24,9 +24,11 @@ using gpu_test::grid_of;
 
 class Lpv : public gpu_test::GpuTest {};
 
+// Propagation (the tests of the gather name it): what most of these tests check.
 api::RenderRequest lpv_request(const std::string& scene, api::View view = api::View::indirect) {
   api::RenderRequest r;
   r.scene = scene;
+  r.lpv.transfer = api::Transfer::sharpened;
   r.output.width = r.output.height = 64;
   r.output.format = api::ImageFormat::exr;
   r.output.view = view;
@@ -252,6 +254,7 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
       api::RenderRequest request = small_grid_request(0);
       request.lpv.grid = dims;
       request.lpv.occlusion = occlusion;
+      request.plan_keep = {api::PlanRule::grid};  // the gather's grid as the propagation's (not reshaped)
       const auto injected = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
       request.lpv.transfer = api::Transfer::gather;
       const auto gathered = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);

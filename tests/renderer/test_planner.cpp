@@ -29,6 +29,7 @@ api::RenderRequest request(api::PlanMode mode) {
   // sharpened transfer): 32 iterations would let the convergence rule act too.
   r.lpv.grid = glm::uvec3(32);
   r.lpv.iterations = 8;
+  r.lpv.transfer = api::Transfer::sharpened;  // the rules for propagation's steps and cascades
   return r;
 }
 

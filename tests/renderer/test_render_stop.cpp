@@ -17,6 +17,7 @@ api::RenderRequest long_request() {
   r.output.format = api::ImageFormat::pfm;
   r.plan = api::PlanMode::exact;  // no convergence: propagation is chunked for the stop check alone
   r.lpv.iterations = 40;
+  r.lpv.transfer = api::Transfer::sharpened;  // propagation's chunks
   r.repeat = 3;
   return r;
 }
