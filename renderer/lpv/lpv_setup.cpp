@@ -34,12 +34,16 @@ glm::uvec3 grid_shaped_to(glm::uvec3 requested, const scene::Bounds& bounds) {
   const glm::vec3 size = bounds.max - bounds.min;
   const float longest = max_component(size);
   if (!(longest > 0.0f) || !std::isfinite(longest)) return requested;
+  // In proportions of the longest edge, so that the same scene at another scale gets the same
+  // cells: an axis that spans a whole number of cells exactly (the longest, and any as long)
+  // must not round up to one more at one scale and not at another.
+  const glm::vec3 proportion = size / longest;
   std::optional<glm::uvec3> best;
   for (std::uint32_t n = 2; n <= api::limits::max_grid_side; ++n) {
-    const float cell = longest / float(n - 1);  // dims - 1 cells span the bounds (place_cascades)
-    glm::uvec3 dims;
+    glm::uvec3 dims;  // dims - 1 cells span the bounds (place_cascades)
     for (int a = 0; a < 3; ++a)
-      dims[a] = std::clamp(std::uint32_t(std::ceil(size[a] / cell)) + 1u, 2u, api::limits::max_grid_side);
+      dims[a] = std::clamp(std::uint32_t(std::ceil(proportion[a] * float(n - 1) - 1e-4f)) + 1u, 2u,
+                           api::limits::max_grid_side);
     if (std::uint64_t(dims.x) * dims.y * dims.z > budget) break;
     best = dims;
   }

@@ -1,6 +1,7 @@
 // The planner's rules on their own (no device): which lights get maps, which passes run,
 // how many propagation steps a cascade needs; "exact" turns the planner's own rules off.
 #include "renderer/frame_plan.hpp"
+#include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_builder.hpp"
 
@@ -147,6 +148,30 @@ TEST(CascadesNeeded, UpToTheFirstThatHoldsTheSceneClearOfItsBorderBand) {
   EXPECT_EQ(renderer::cascades_needed(cascades, {glm::vec3(-5.0f), glm::vec3(5.0f)}), 1u);
   EXPECT_EQ(renderer::cascades_needed(cascades, {glm::vec3(-6.0f), glm::vec3(5.0f)}), 2u);
   EXPECT_EQ(renderer::cascades_needed(cascades, {glm::vec3(-50.0f), glm::vec3(5.0f)}), 3u);
+}
+
+// The gather's cells to the region's shape: cubic, no more than asked, the same at any scale.
+TEST(GridShapedTo, CubicCellsToTheShapeNoMoreThanAskedAtAnyScale) {
+  const glm::uvec3 asked(16);
+  const scene::Bounds corridor{{-0.75f, 0.0f, -8.0f}, {0.75f, 2.5f, 0.0f}};
+  const glm::uvec3 shaped = renderer::grid_shaped_to(asked, corridor);
+  EXPECT_EQ(shaped, glm::uvec3(8, 13, 38));
+  EXPECT_LE(shaped.x * shaped.y * shaped.z, 16u * 16u * 16u);
+  // The cells place_cascades makes of them are cubes that hold the bounds, half a cell to spare.
+  const float cell = 8.0f / float(shaped.z - 1);
+  EXPECT_GE(float(shaped.x - 1) * cell, 1.5f);
+  EXPECT_GE(float(shaped.y - 1) * cell, 2.5f);
+  for (const float s : {1e-3f, 7.0f, 1e4f}) {
+    const scene::Bounds scaled{corridor.min * s, corridor.max * s};
+    EXPECT_EQ(renderer::grid_shaped_to(asked, scaled), shaped) << "scale " << s;
+  }
+  const scene::Bounds cube{glm::vec3(-1.0f), glm::vec3(1.0f)};
+  EXPECT_EQ(renderer::grid_shaped_to(asked, cube), asked);
+  const scene::Bounds plane{{-10.0f, 0.0f, -10.0f}, {10.0f, 0.0f, 10.0f}};
+  EXPECT_EQ(renderer::grid_shaped_to(asked, plane), glm::uvec3(45, 2, 45));
+  const scene::Bounds point{glm::vec3(1.0f), glm::vec3(1.0f)};
+  EXPECT_EQ(renderer::grid_shaped_to(asked, point), asked) << "nothing to shape to";
+  EXPECT_EQ(renderer::grid_shaped_to(glm::uvec3(1), corridor), glm::uvec3(1)) << "no arrangement fits one cell";
 }
 
 TEST(PlanFrame, ALightThatMissesTheSceneGetsNoMapsUnlessExact) {

@@ -21,7 +21,8 @@ const nlohmann::json kTinySuite = {
     {"cases",
      {{{"name", "direct"}, {"request", {{"output", {{"width", 32}, {"height", 24}}}, {"lpv", {{"enabled", false}}}}}},
       {{"name", "lpv"},
-       {"request", {{"output", {{"width", 32}, {"height", 24}}}, {"lpv", {{"grid", 8}, {"iterations", 2}}}}}},
+       {"request",
+        {{"output", {{"width", 32}, {"height", 24}}}, {"lpv", {{"transfer", "sharpened"}, {"grid", 8}, {"iterations", 2}}}}}},
       {{"name", "round trip"}, {"kind", "server_round_trip"}, {"request", nlohmann::json::object()}}}}};
 
 nlohmann::json results_schema() {
