@@ -163,8 +163,8 @@ inline constexpr std::uint32_t max_grid_side = 128;
 inline constexpr std::uint32_t max_cascades = 4;
 inline constexpr std::uint32_t max_iterations = 1024;
 // The gather transfer's cells a cascade: each gathers a few hundred records, along lines as long
-// as the grid (docs/lpv.md, "The gather"; 24^3 takes about 0.1 s of a frame on lavapipe's 2
-// cores, 32^3 about CHECK).
+// as the grid (docs/lpv.md, "The gather"; 24^3 takes 0.1 to 0.2 s of a frame on lavapipe's 2
+// cores). Past it, transfer "auto" propagates.
 inline constexpr std::uint64_t max_gather_cells = 24 * 24 * 24;
 inline constexpr std::uint32_t max_rsm_resolution = 4096;
 inline constexpr std::uint32_t max_vpl_downsample = 16;  // a power of two, at most the RSM resolution
