@@ -13,11 +13,14 @@ namespace {
 
 scene::Scene cornell() { return *scene::make_builtin_scene("cornell-box"); }
 
+// Propagation: the cases were written for it, and past the gather's 24^3 cells the default
+// runs it; the gather's cases below (gather-) name their transfer.
 api::RenderRequest small() {
   api::RenderRequest r;
   r.output.width = r.output.height = 48;
   r.output.format = api::ImageFormat::pfm;
   r.lpv.grid = glm::uvec3(16);
+  r.lpv.transfer = api::Transfer::sharpened;
   r.lpv.rsm_resolution = 64;
   r.shadows.resolution = 128;
   return r;
