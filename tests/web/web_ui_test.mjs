@@ -207,13 +207,15 @@ test('the timing chart and the plan appear, with the reasons of skipped passes',
   const ran = await page.locator('#plan-passes .ran').count();
   assert.ok(ran >= 5, `passes that ran: ${ran}`);
   assert.equal(await page.locator('#pass-chart svg rect').count(), ran, 'one bar per pass that ran');
-  assert.match(await page.locator('#pass-chart svg').textContent(), /propagate.*ms/s);
+  assert.match(await page.locator('#pass-chart svg').textContent(), /gather.*ms/s);
   assert.ok(await page.locator('#plan-decisions li').count() >= 1);
+  assert.match(await page.locator('#plan-passes li', { hasText: 'propagate' }).textContent(), /propagate skipped: .*gather/,
+    'the default gathers, and propagation says so');
 
   await page.locator('#output-view').selectOption('direct');
   await frameShown(page, (request) => request.output?.view === 'direct');
-  const skipped = await page.locator('#plan-passes li', { hasText: 'propagate' }).textContent();
-  assert.match(skipped, /propagate skipped: .+/, 'a skipped pass says why');
+  const skipped = await page.locator('#plan-passes li', { hasText: 'gather' }).textContent();
+  assert.match(skipped, /gather skipped: .+/, 'a skipped pass says why');
   assert.ok(await page.locator('#pass-chart svg rect').count() < ran, 'the chart follows the plan');
   await screenshot(page, '03-plan');
   assert.deepEqual(errors, []);
@@ -370,7 +372,9 @@ test('"copy as curl" gives the command that renders the same frame', async (t) =
 });
 
 test('the error against the reference, and a sweep whose points load their settings', async (t) => {
-  const { page, errors } = await openPage(t, '#request=' + encodeURIComponent('{"output":{"width":128,"height":128}}'));
+  // Propagation, whose iterations the sweep below varies (the gather has none).
+  const request = '{"output":{"width":128,"height":128},"lpv":{"transfer":"sharpened"}}';
+  const { page, errors } = await openPage(t, '#request=' + encodeURIComponent(request));
   await page.locator('#reference-samples').fill('16');
   await page.locator('#reference-run').click();
   await page.locator('#reference-result').waitFor({ state: 'visible', timeout: 60_000 });
