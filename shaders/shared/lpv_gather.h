@@ -104,12 +104,17 @@ LPV_CONST_F LPV_GATHER_BLOCKER_REACH = 1.0;  // cells
 // surface a line starts or ends at, or runs beside within a cell, does not stop it: a source's
 // own wall passes the light leaving it, a ceiling the light arriving at it, a floor the light
 // grazing it, which propagation's faces stop wherever they hold the surface. The closed part
-// (the spread beyond the first moment: both sides of a thin wall, a solid's faces, which
-// cancel in m) stops light wherever it crosses the face.
+// (both sides of a thin wall, a solid's faces, which cancel in m) stops light wherever it
+// crosses the face. It is the lesser of two estimates: the spread's projected area beyond the
+// first moment's (which completes a solid's, its open faces counted by m), and the spread of
+// the normals that cancel along each axis, |n_k| summed less |m_k| (nothing for a crease
+// where a floor meets a wall, whose two normals cancel nowhere; the first took such a crease
+// for a closed surface and stopped the light between the floor and the wall).
 LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, vec3 to_source, vec3 to_cell) {
   const vec3 m = vec3(-b.w, -b.y, b.z) / SH_COSINE_C1;  // sum p n (b = sum p cosine lobe(n))
   const lpv_real u = dot(m, w);
-  const lpv_real closed = max(lpv_closed_blocking(spread, w) - abs(u), lpv_real(0));
+  const lpv_real closed = min(max(lpv_closed_blocking(spread, w) - abs(u), lpv_real(0)),
+                             lpv_closed_blocking(max(spread - abs(m), vec3(lpv_real(0))), w));
   const lpv_real length_m = sqrt(dot(m, m));
   lpv_real open_part = lpv_real(0);
   if (length_m > lpv_real(0)) {
