@@ -79,8 +79,12 @@ std::string to_string(Injection i) {
   throw std::invalid_argument("api::to_string: invalid Injection");
 }
 
+namespace {
+std::uint64_t cells_of(const glm::uvec3& grid) { return std::uint64_t(grid.x) * grid.y * grid.z; }
+}  // namespace
+
 std::string gather_grid_problem(const glm::uvec3& grid, Transfer transfer) {
-  const std::uint64_t cells = std::uint64_t(grid.x) * grid.y * grid.z;
+  const std::uint64_t cells = cells_of(grid);
   if (transfer != Transfer::gather || cells <= limits::max_gather_cells) return "";
   return "the gather transfer takes at most " + std::to_string(limits::max_gather_cells) +
          " cells a cascade (24^3), got " + std::to_string(grid.x) + "x" + std::to_string(grid.y) + "x" +
@@ -90,7 +94,7 @@ std::string gather_grid_problem(const glm::uvec3& grid, Transfer transfer) {
 
 Transfer resolved_transfer(const glm::uvec3& grid, Transfer transfer) {
   if (transfer != Transfer::auto_) return transfer;
-  return gather_grid_problem(grid, Transfer::gather).empty() ? Transfer::gather : Transfer::sharpened;
+  return cells_of(grid) <= limits::max_gather_cells ? Transfer::gather : Transfer::sharpened;
 }
 
 std::string to_string(Transfer t) {

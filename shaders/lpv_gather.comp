@@ -1,9 +1,9 @@
 #version 450
 // The gather transfer (lpv_gather.h, docs/lpv.md "The gather"): each cell of a slab of layers
 // sums the light of every lit injected cell of its cascade, the near ones one by one and those
-// further off in blocks (the pyramid lpv_gather_sources.comp builds), each along the straight
-// line from the source (a block's centre) to the cell, through the faces of the geometry
-// volume it crosses, into its irradiance cube. The sums run over levels and blocks in a fixed
+// further off in blocks (the pyramid lpv_gather_sources.comp builds), each from where its light
+// left its surfaces, its line of sight from the cell its light was added around
+// (lpv_gather_line_start) through the faces of the geometry volume, into its irradiance cube. The sums run over levels and blocks in a fixed
 // order, so the result is deterministic.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/gpu_types.h"

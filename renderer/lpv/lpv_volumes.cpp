@@ -26,13 +26,6 @@ constexpr std::size_t kRecordInt64s = gpu::LPV_FLUX_SLOTS * gpu::LPV_FLUX_SLOT_I
 
 std::uint64_t cell_count(glm::uvec3 d) { return std::uint64_t(d.x) * d.y * d.z; }
 
-// Propagation's two grids, or the gather's pyramid of sources, which takes more only on
-// grids a few cells thick (lpv_gather.h).
-std::uint64_t grid_texels(glm::uvec3 d) {
-  const std::uint64_t pyramid = std::uint64_t(gpu::lpv_gather_records(glm::ivec3(d))) * gpu::LPV_GATHER_RECORD_TEXELS;
-  return std::max(cell_count(d) * kGridTexelsPerCell, pyramid);
-}
-
 vkx::Image rsm_target(const vkx::Device& device, VkFormat format, std::uint32_t res, std::uint32_t layers) {
   return vkx::Image(device, {format, res, res, layers,
                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
@@ -49,6 +42,11 @@ RsmMaps::RsmMaps(const vkx::Device& device, std::uint32_t res, std::uint32_t n)
       flux(rsm_target(device, kFluxFormat, res, n)),
       depth(device, {kDepthFormat, res, res, n, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
                      true}) {}
+
+std::uint64_t LpvVolumes::grid_texels(glm::uvec3 d) {
+  const std::uint64_t pyramid = std::uint64_t(gpu::lpv_gather_records(glm::ivec3(d))) * gpu::LPV_GATHER_RECORD_TEXELS;
+  return std::max(cell_count(d) * kGridTexelsPerCell, pyramid);
+}
 
 std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
                                 std::uint32_t accumulated_texels) {

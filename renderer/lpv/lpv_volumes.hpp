@@ -50,6 +50,9 @@ struct LpvVolumes {
   // bounces (lpv_gv_corner_words).
   VkDeviceSize corner_sum_bytes(std::uint32_t slots, bool bounces) const;
 
+  // Texels of `grids`: propagation's two grids, or the gather's pyramid of sources
+  // (lpv_gather.h), which takes more only on grids a few cells thick.
+  static std::uint64_t grid_texels(glm::uvec3 dims);
   // Device memory the volumes of these sizes take.
   static std::uint64_t bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
                              std::uint32_t accumulated_texels);

@@ -212,4 +212,13 @@ TEST(LpvVolumes, LargestBufferIsTheCornerSumsAndBoundsTheGrid) {
             111ull * 111 * 111 * 6);
 }
 
+// The grids' buffer holds propagation's two grids (6 texels a cell) or the gather's pyramid of
+// sources (3 texels a record), whichever is larger: on a grid one cell thick the pyramid's
+// levels add up to more than twice its cells (5 + 3 + 2 + 1 records for 5 cells).
+TEST(LpvVolumes, GridsHoldTheGathersPyramidOnThinGrids) {
+  EXPECT_EQ(renderer::LpvVolumes::grid_texels(glm::uvec3(16)), 16ull * 16 * 16 * 6);
+  EXPECT_EQ(renderer::LpvVolumes::grid_texels(glm::uvec3(5, 1, 1)), (5ull + 3 + 2 + 1) * 3);
+  EXPECT_EQ(renderer::LpvVolumes::grid_texels(glm::uvec3(1)), 6u);
+}
+
 }  // namespace

@@ -247,7 +247,7 @@ TEST_F(Lpv, OccludedPropagationMatchesTheDoublePrecisionReference) {
 TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
   std::map<std::uint32_t, double> open_total;  // by grid width
   for (const bool occlusion : {false, true}) {
-    // 5 x 1 x 1: a grid whose pyramid of sources outgrows propagation's two grids (LpvVolumes).
+    // 5 x 1 x 1: a grid one cell thick, whose gathering cells stop climbing at different levels.
     for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(12, 9, 7), glm::uvec3(5, 1, 1)}) {
       SCOPED_TRACE(std::string(occlusion ? "occlusion, " : "no occlusion, ") + std::to_string(dims.x) + "x" +
                    std::to_string(dims.y) + "x" + std::to_string(dims.z));
