@@ -90,7 +90,7 @@ struct BenchBuild {
   bool sanitizers = false; // an LPV_SANITIZE build: its times say nothing about a release
 };
 
-// How steady the machine was while the run measured (renderer/bench/machine_noise.hpp): a
+// How steady the machine was while the run measured (lab/bench/machine_noise.hpp): a
 // fixed piece of CPU work timed before every round of renders, the load average at the start
 // and the end, and the share of CPU time the hypervisor took (steal). A comparison says
 // "inconclusive: noisy machine" rather than judge times a noisy run measured.

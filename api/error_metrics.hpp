@@ -1,5 +1,5 @@
 // Error metrics between a linear image and a reference (usually the Monte Carlo ground truth):
-// a response type of compare and sweep. Computed by renderer/image/metrics.cpp; defined here
+// a response type of compare and sweep. Computed by image/metrics.cpp; defined here
 // so that api/ can carry them without knowing how they are computed.
 #pragma once
 
@@ -12,7 +12,7 @@
 namespace api {
 
 // Over the R, G and B values of the pixels in a mask; image::compare_images
-// (renderer/image/metrics.hpp) defines each precisely. With no pixel in the mask nothing
+// (image/metrics.hpp) defines each precisely. With no pixel in the mask nothing
 // differs: the errors are 0, psnr_db +inf and ssim 1, as for identical images.
 struct ErrorMetrics {
   double rmse = 0.0;               // root mean square error, in the images' units

@@ -8,7 +8,7 @@
 #include "api/render_request.hpp"
 #include "renderer/frame_setup.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
-#include "renderer/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <array>
 #include <cstdint>

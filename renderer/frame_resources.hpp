@@ -13,7 +13,7 @@
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "renderer/passes/rsm_pass.hpp"
 #include "renderer/passes/shadow_pass.hpp"
-#include "renderer/vulkan/resources.hpp"
+#include "vkx/resources.hpp"
 
 #include <cstdint>
 #include <optional>

@@ -1,7 +1,7 @@
 // The per-resolution images and buffers of a frame, kept between requests of the same size.
 #pragma once
 
-#include "renderer/vulkan/resources.hpp"
+#include "vkx/resources.hpp"
 
 #include <cstdint>
 

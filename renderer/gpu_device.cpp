@@ -1,6 +1,6 @@
 #include "renderer/gpu_device.hpp"
 
-#include "renderer/vulkan/device.hpp"
+#include "vkx/device.hpp"
 
 namespace renderer {
 namespace {

@@ -3,7 +3,7 @@
 // the tools keep Vulkan out of their code (tests/layers checks that the server does).
 #pragma once
 
-#include "renderer/vulkan/device_options.hpp"
+#include "vkx/device_options.hpp"
 
 #include <array>
 #include <cstdint>

@@ -3,9 +3,9 @@
 
 #include "renderer/gpu_types.hpp"
 #include "renderer/material_textures.hpp"
-#include "renderer/scene/scene.hpp"
-#include "renderer/vulkan/pipeline.hpp"
-#include "renderer/vulkan/resources.hpp"
+#include "scene/scene.hpp"
+#include "vkx/pipeline.hpp"
+#include "vkx/resources.hpp"
 
 #include <array>
 #include <memory>

@@ -1,8 +1,8 @@
 #include "renderer/material_textures.hpp"
 
-#include "renderer/scene/texture_mips.hpp"
-#include "renderer/vulkan/pipeline.hpp"
-#include "renderer/vulkan/vk_check.hpp"
+#include "scene/texture_mips.hpp"
+#include "vkx/pipeline.hpp"
+#include "vkx/vk_check.hpp"
 
 #include <algorithm>
 #include <utility>

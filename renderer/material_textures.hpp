@@ -3,9 +3,9 @@
 // (set 1 of the G-buffer and RSM pipelines; untextured materials read one white texel).
 #pragma once
 
-#include "renderer/scene/scene.hpp"
-#include "renderer/vulkan/device.hpp"
-#include "renderer/vulkan/resources.hpp"
+#include "scene/scene.hpp"
+#include "vkx/device.hpp"
+#include "vkx/resources.hpp"
 
 #include <vulkan/vulkan.h>
 

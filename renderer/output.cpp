@@ -1,8 +1,8 @@
 #include "renderer/output.hpp"
 
-#include "renderer/image/exr.hpp"
-#include "renderer/image/pfm.hpp"
-#include "renderer/image/png.hpp"
+#include "image/exr.hpp"
+#include "image/pfm.hpp"
+#include "image/png.hpp"
 
 #include <stdexcept>
 

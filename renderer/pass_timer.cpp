@@ -1,6 +1,6 @@
 #include "renderer/pass_timer.hpp"
 
-#include "renderer/vulkan/vk_check.hpp"
+#include "vkx/vk_check.hpp"
 
 #include <vector>
 

@@ -4,7 +4,7 @@
 // timestamp before its rasteriser has finished the work recorded ahead of it.
 #pragma once
 
-#include "renderer/vulkan/device.hpp"
+#include "vkx/device.hpp"
 
 #include <vulkan/vulkan.h>
 

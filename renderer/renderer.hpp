@@ -5,8 +5,8 @@
 
 #include "api/render_request.hpp"
 #include "api/render_stats.hpp"
-#include "renderer/image/image.hpp"
-#include "renderer/scene/scene.hpp"
+#include "image/image.hpp"
+#include "scene/scene.hpp"
 
 #include <glm/glm.hpp>
 
@@ -19,7 +19,7 @@
 #include <vector>
 
 namespace vkx {
-class Device;  // renderer/vulkan/device.hpp: the renderer's own, not its users'
+class Device;  // vkx/device.hpp: the renderer's own, not its users'
 }
 
 namespace renderer {

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "renderer/gpu_scene.hpp"
-#include "renderer/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <cstdint>
 #include <list>

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "api/accuracy_request.hpp"
-#include "renderer/accuracy/compare.hpp"
-#include "renderer/accuracy/sweep.hpp"
+#include "lab/accuracy/compare.hpp"
+#include "lab/accuracy/sweep.hpp"
 #include "server/render_queue.hpp"
 
 #include <nlohmann/json.hpp>

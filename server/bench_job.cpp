@@ -1,7 +1,7 @@
 #include "server/bench_job.hpp"
 
-#include "renderer/bench/build_info.hpp"
-#include "renderer/bench/renderer_case_runner.hpp"
+#include "lab/bench/build_info.hpp"
+#include "lab/bench/renderer_case_runner.hpp"
 
 namespace server {
 

@@ -1,6 +1,6 @@
 #include "server/http_errors.hpp"
 
-#include "renderer/scene/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 
 #include <nlohmann/json.hpp>
 

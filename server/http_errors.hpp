@@ -3,7 +3,7 @@
 #pragma once
 
 #include "api/request_error.hpp"
-#include "renderer/scene/gltf_loader.hpp"
+#include "scene/gltf_loader.hpp"
 #include "server/limits.hpp"
 
 #include <httplib.h>

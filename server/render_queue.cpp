@@ -1,6 +1,6 @@
 #include "server/render_queue.hpp"
 
-#include "renderer/scene/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "server/device_report.hpp"
 
 #include <algorithm>

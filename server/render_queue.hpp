@@ -7,11 +7,11 @@
 #pragma once
 
 #include "api/render_request.hpp"
-#include "renderer/accuracy/workbench.hpp"
+#include "lab/accuracy/workbench.hpp"
 #include "renderer/renderer.hpp"
-#include "renderer/vulkan/device_options.hpp"
 #include "server/metrics.hpp"
 #include "server/scene_store.hpp"
+#include "vkx/device_options.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,7 +1,7 @@
 #include "server/route_support.hpp"
 
 #include "api/request_error.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "server/access.hpp"
 #include "server/client_connection.hpp"
 #include "server/http_errors.hpp"

@@ -2,17 +2,17 @@
 
 #include "api/request_error.hpp"
 #include "api/request_json.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "core/utc_time.hpp"
+#include "scene/builtin_scenes.hpp"
 #include "server/access.hpp"
 #include "server/accuracy_routes.hpp"
 #include "server/bench_route.hpp"
 #include "server/client_connection.hpp"
 #include "server/http_errors.hpp"
+#include "server/render_response.hpp"
 #include "server/request_log.hpp"
 #include "server/route_table.hpp"
-#include "server/render_response.hpp"
 #include "server/scene_report.hpp"
-#include "core/utc_time.hpp"
 #include "server/web_routes.hpp"
 
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 #include "server/scene_report.hpp"
 
 #include "api/request_json.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 
 namespace server {
 namespace {

@@ -2,7 +2,7 @@
 // reported by the same code from a scene::Scene; only where they came from differs.
 #pragma once
 
-#include "renderer/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <nlohmann/json.hpp>
 

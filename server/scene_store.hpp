@@ -18,7 +18,7 @@
 // progress.
 #pragma once
 
-#include "renderer/scene/gltf_loader.hpp"
+#include "scene/gltf_loader.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -3,7 +3,7 @@
 // its variable. Values are validated here so the server never starts half-configured.
 #pragma once
 
-#include "renderer/scene/gltf_loader.hpp"
+#include "scene/gltf_loader.hpp"
 #include "server/connection_limits.hpp"
 #include "server/limits.hpp"
 

@@ -1,7 +1,7 @@
 #include "server/web_routes.hpp"
 
 #include "server/http_errors.hpp"
-#include "server/web_assets.hpp"
+#include "web/web_assets.hpp"
 
 #include <string_view>
 
@@ -14,9 +14,9 @@ constexpr const char* kContentSecurityPolicy =
     "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob:; connect-src 'self'; "
     "base-uri 'none'; form-action 'none'; frame-ancestors 'none'";
 
-const WebAsset* find_asset(std::string_view path) {
+const web::WebAsset* find_asset(std::string_view path) {
   if (path == kWebPageRoute) path = "/index.html";
-  for (const WebAsset& asset : web_assets())
+  for (const web::WebAsset& asset : web::web_assets())
     if (asset.path == path) return &asset;
   return nullptr;
 }
@@ -39,7 +39,7 @@ bool etag_matches(std::string_view if_none_match, std::string_view etag) {
 }  // namespace
 
 void serve_web_asset(const httplib::Request& request, httplib::Response& response) {
-  const WebAsset* asset = find_asset(request.path);
+  const web::WebAsset* asset = find_asset(request.path);
   if (!asset) return send_error(response, {404, "not_found", "no such file of the web page: " + request.path, ""});
   // Names carry no version, so browsers must ask each time; an unchanged file costs a 304.
   response.set_header("Cache-Control", "no-cache");

@@ -1,7 +1,7 @@
 #include "renderer/lpv/blocker_surfels.hpp"
 
 #include "renderer/lpv/surface_pieces.hpp"
-#include "renderer/scene/texture_mips.hpp"
+#include "scene/texture_mips.hpp"
 #include "shaders/shared/albedo_code.h"
 
 #include <algorithm>

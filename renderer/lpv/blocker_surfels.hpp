@@ -6,7 +6,7 @@
 #pragma once
 
 #include "renderer/gpu_types.hpp"
-#include "renderer/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <cstddef>
 #include <vector>

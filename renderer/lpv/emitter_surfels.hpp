@@ -4,7 +4,7 @@
 #pragma once
 
 #include "renderer/gpu_types.hpp"
-#include "renderer/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <cstddef>
 #include <vector>

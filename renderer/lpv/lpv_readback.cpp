@@ -1,6 +1,6 @@
 #include "renderer/lpv/lpv_readback.hpp"
 
-#include "renderer/vulkan/resources.hpp"
+#include "vkx/resources.hpp"
 
 #include <algorithm>
 #include <cmath>

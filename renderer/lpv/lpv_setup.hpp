@@ -6,7 +6,7 @@
 #include "api/render_request.hpp"
 #include "renderer/frame_setup.hpp"
 #include "renderer/gpu_types.hpp"
-#include "renderer/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <vector>
 

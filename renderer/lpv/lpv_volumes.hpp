@@ -2,7 +2,7 @@
 // of the cascades. Kept between requests with the same sizes.
 #pragma once
 
-#include "renderer/vulkan/resources.hpp"
+#include "vkx/resources.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -4,7 +4,7 @@
 // on the CPU.
 #pragma once
 
-#include "renderer/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <glm/glm.hpp>
 

@@ -4,7 +4,7 @@
 
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_types.hpp"
-#include "renderer/vulkan/resources.hpp"
+#include "vkx/resources.hpp"
 
 #include <cstdint>
 #include <span>

@@ -1,10 +1,10 @@
 #include "renderer/passes/forward_pass.hpp"
 
 #include "renderer/passes/display_encoding.hpp"
-#include "renderer/vulkan/rendering.hpp"
 #include "shaders/forward.frag.h"
 #include "shaders/gbuffer.vert.h"
 #include "shaders/shared/camera_raster_interface.h"
+#include "vkx/rendering.hpp"
 
 #include <array>
 

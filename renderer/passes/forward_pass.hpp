@@ -10,7 +10,7 @@
 #include "renderer/material_textures.hpp"
 #include "renderer/passes/direct_light_inputs.hpp"
 #include "renderer/passes/indirect_light_inputs.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "vkx/pipeline.hpp"
 
 namespace renderer {
 

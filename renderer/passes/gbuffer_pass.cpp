@@ -1,9 +1,9 @@
 #include "renderer/passes/gbuffer_pass.hpp"
 
-#include "renderer/vulkan/rendering.hpp"
 #include "shaders/gbuffer.frag.h"
 #include "shaders/gbuffer.vert.h"
 #include "shaders/shared/camera_raster_interface.h"
+#include "vkx/rendering.hpp"
 
 #include <array>
 

@@ -10,7 +10,7 @@
 #include "renderer/gpu_scene.hpp"
 #include "renderer/gpu_types.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "vkx/pipeline.hpp"
 
 #include <algorithm>
 #include <string>

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "renderer/lpv/lpv_volumes.hpp"
-#include "renderer/vulkan/pipeline.hpp"
-#include "renderer/vulkan/resources.hpp"
+#include "vkx/pipeline.hpp"
+#include "vkx/resources.hpp"
 
 #include <cstdint>
 

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "renderer/lpv/lpv_volumes.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "vkx/pipeline.hpp"
 
 #include <cstdint>
 

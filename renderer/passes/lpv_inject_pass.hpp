@@ -8,7 +8,7 @@
 #include "api/render_request.hpp"
 #include "renderer/gpu_scene.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "vkx/pipeline.hpp"
 
 namespace renderer {
 

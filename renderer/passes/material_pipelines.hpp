@@ -4,7 +4,7 @@
 #pragma once
 
 #include "renderer/gpu_scene.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "vkx/pipeline.hpp"
 
 #include <functional>
 

@@ -1,12 +1,14 @@
 #include "renderer/passes/rsm_pass.hpp"
 
-#include "renderer/vulkan/rendering.hpp"
 #include "shaders/rsm.frag.h"
 #include "shaders/rsm.vert.h"
 #include "shaders/shared/rsm_interface.h"
+#include "vkx/rendering.hpp"
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 
 namespace renderer {
 namespace {
@@ -48,6 +50,15 @@ MaterialVariant rsm_variant(MaterialVariant v) { return {false, v.textured}; }
 
 RsmPass::RsmPass(const vkx::Device& device, const TextureSetLayout& textures)
     : device_(device), pipelines_(device, rsm_layout(textures), rsm_pipeline) {
+  // The forward pass reads every shadow view of a frame from one uniform buffer, this pass
+  // every RSM view (as many: six a light at most).
+  const VkDeviceSize uniform_range = gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::GpuRsmView);
+  static_assert(sizeof(gpu::GpuRsmView) >= sizeof(gpu::mat4), "the RSM views' buffer is the larger");
+  const vkx::DeviceInfo& info = device.info();
+  if (info.limits.maxUniformBufferRange < uniform_range)
+    throw std::runtime_error("device '" + info.name + "' binds uniform buffers of at most " +
+                             std::to_string(info.limits.maxUniformBufferRange) + " bytes; the RSM pass needs " +
+                             std::to_string(uniform_range));
   pipelines_.get({});
 }
 

@@ -7,7 +7,7 @@
 #include "renderer/gpu_scene.hpp"
 #include "renderer/passes/direct_light_inputs.hpp"
 #include "renderer/passes/indirect_light_inputs.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "vkx/pipeline.hpp"
 
 #include <cstdint>
 

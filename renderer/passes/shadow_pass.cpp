@@ -1,7 +1,7 @@
 #include "renderer/passes/shadow_pass.hpp"
 
-#include "renderer/vulkan/rendering.hpp"
 #include "shaders/shadow.vert.h"
+#include "vkx/rendering.hpp"
 
 namespace renderer {
 namespace {

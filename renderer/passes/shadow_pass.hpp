@@ -4,7 +4,7 @@
 
 #include "renderer/frame_targets.hpp"
 #include "renderer/gpu_scene.hpp"
-#include "renderer/vulkan/pipeline.hpp"
+#include "vkx/pipeline.hpp"
 
 #include <glm/mat4x4.hpp>
 

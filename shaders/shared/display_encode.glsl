@@ -1,5 +1,5 @@
 // Linear value -> one 8-bit RGBA pixel for display: optional tone curve, clamp, sRGB transfer
-// (display_transfer.h, which the CPU's pictures of linear images use too: renderer/accuracy/
+// (display_transfer.h, which the CPU's pictures of linear images use too: lab/accuracy/
 // display_image.cpp). Data views (normal, depth) are quantised linearly instead.
 #ifndef LPV_DISPLAY_ENCODE_GLSL
 #define LPV_DISPLAY_ENCODE_GLSL

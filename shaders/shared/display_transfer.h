@@ -1,6 +1,6 @@
 // The display transfer, shared by C++ and GLSL so the shading (display_encode.glsl), the CPU's
-// pictures of linear images (renderer/accuracy/display_image.cpp) and the textures' mip chains
-// (renderer/scene/texture_mips.cpp) use one definition: the tone curves and the sRGB curve
+// pictures of linear images (lab/accuracy/display_image.cpp) and the textures' mip chains
+// (scene/texture_mips.cpp) use one definition: the tone curves and the sRGB curve
 // (IEC 61966-2-1) both ways. C++ compiles it as namespace gpu on glm; GLSL includes it after
 // gpu_types.h.
 #ifndef LPV_DISPLAY_TRANSFER_H

@@ -1,6 +1,6 @@
 // How a punctual light falls off (KHR_lights_punctual), shared by C++ and GLSL so the shading
 // and the RSMs (lights.glsl), the light setup (renderer/frame_setup.cpp) and the path-traced
-// reference (renderer/reference/punctual_lights.cpp) use one definition: the spot cone's
+// reference (reference/punctual_lights.cpp) use one definition: the spot cone's
 // smooth edge and the range window. C++ compiles the functions as templates on the scalar
 // (the reference computes in double), GLSL in float.
 #ifndef LPV_LIGHT_FALLOFF_H

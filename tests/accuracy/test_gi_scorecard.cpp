@@ -1,5 +1,5 @@
 // The indirect light's scorecard on every built-in scene, at the default request, against a
-// fixed-seed reference (renderer/accuracy/gi_scorecard.hpp; docs/accuracy.md, "The
+// fixed-seed reference (lab/accuracy/gi_scorecard.hpp; docs/accuracy.md, "The
 // scorecard"). Each scene has bounds that the method reaches today with a margin for the
 // reference's noise, so a change that makes the indirect light worse anywhere fails here; the
 // table it prints is the one docs/accuracy.md shows.
@@ -13,9 +13,9 @@
 #include "gpu_test.hpp"
 
 #include "api/request_json.hpp"
-#include "renderer/accuracy/gi_scorecard.hpp"
-#include "renderer/image/file_io.hpp"
-#include "renderer/image/pfm.hpp"
+#include "image/file_io.hpp"
+#include "image/pfm.hpp"
+#include "lab/accuracy/gi_scorecard.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,8 +1,8 @@
 // lpv-bench compare and ab on constructed results: an image change is flagged even when
 // every time is the same, rounding is not, and failures and missing cases are reported.
-#include "renderer/bench/image_fingerprint.hpp"
-#include "renderer/bench/machine_noise.hpp"
-#include "renderer/bench/results_comparison.hpp"
+#include "lab/bench/image_fingerprint.hpp"
+#include "lab/bench/machine_noise.hpp"
+#include "lab/bench/results_comparison.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // lpv-bench run --jobs N on fake runners: the cases spread over the runners at once, each case
 // whole on one runner, and the results are a serial run's: the same cases in the suite's order
 // with the same images and sample counts.
-#include "renderer/bench/suite_fan_out.hpp"
+#include "lab/bench/suite_fan_out.hpp"
 
 #include <gtest/gtest.h>
 

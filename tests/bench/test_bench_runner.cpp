@@ -1,6 +1,6 @@
 // The suite loops on fake runners: what renders when, in which order, and what a failure or
 // a missing round-trip runner does to the results.
-#include "renderer/bench/suite_runner.hpp"
+#include "lab/bench/suite_runner.hpp"
 
 #include <gtest/gtest.h>
 

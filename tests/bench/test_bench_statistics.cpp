@@ -1,8 +1,8 @@
 // The statistics of lpv-bench compare and ab on made-up timings whose truth is known: the
 // exact p-values on small cases, then verdicts over many seeded trials, so that each claim
 // ("a 20% shift with low noise is slower") is a rate, not the luck of one draw.
-#include "renderer/bench/metric_verdict.hpp"
-#include "renderer/bench/statistics.hpp"
+#include "lab/bench/metric_verdict.hpp"
+#include "lab/bench/statistics.hpp"
 #include "synthetic_times.hpp"
 
 #include <gtest/gtest.h>

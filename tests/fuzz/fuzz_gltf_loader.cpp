@@ -2,7 +2,7 @@
 // docs/testing.md). Any input must either load or raise scene::LoadError: every other
 // exception escapes, terminates the process and is reported as a crash, as are sanitizer
 // reports, timeouts (-timeout) and memory use over -rss_limit_mb/-malloc_limit_mb.
-#include "renderer/scene/gltf_loader.hpp"
+#include "scene/gltf_loader.hpp"
 
 #include <cstddef>
 #include <cstdint>

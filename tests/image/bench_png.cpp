@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <random>
 
-#include "renderer/image/png.hpp"
-#include "tests/image/render_like.hpp"
+#include "image/png.hpp"
+#include "render_like.hpp"
 
 namespace {
 

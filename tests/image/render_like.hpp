@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "renderer/image/image.hpp"
+#include "image/image.hpp"
 
 namespace test_images {
 

@@ -24,12 +24,12 @@
 #include <tuple>
 #include <vector>
 
-#include "renderer/image/exr.hpp"
-#include "renderer/image/file_io.hpp"
-#include "renderer/image/image.hpp"
-#include "renderer/image/pfm.hpp"
-#include "renderer/image/png.hpp"
-#include "tests/image/render_like.hpp"
+#include "image/exr.hpp"
+#include "image/file_io.hpp"
+#include "image/image.hpp"
+#include "image/pfm.hpp"
+#include "image/png.hpp"
+#include "render_like.hpp"
 
 namespace {
 

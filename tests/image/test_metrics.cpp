@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/image/heatmap.hpp"
-#include "renderer/image/image.hpp"
-#include "renderer/image/metrics.hpp"
+#include "image/heatmap.hpp"
+#include "image/image.hpp"
+#include "image/metrics.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <array>
 #include <glm/glm.hpp>
 
-#include "renderer/reference/path_tracer.hpp"
-#include "renderer/scene/scene.hpp"
+#include "reference/path_tracer.hpp"
+#include "scene/scene.hpp"
 
 namespace reference_test {
 

@@ -7,8 +7,8 @@
 #include <thread>
 
 #include "analytic_scenes.hpp"
-#include "renderer/reference/path_tracer.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "reference/path_tracer.hpp"
+#include "scene/builtin_scenes.hpp"
 
 int main(int argc, char** argv) {
   const std::string name = argc > 1 ? argv[1] : "cornell-box";

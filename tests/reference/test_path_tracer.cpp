@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "analytic_scenes.hpp"
-#include "renderer/reference/path_tracer.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/scene_builder.hpp"
+#include "reference/path_tracer.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/scene_builder.hpp"
 
 namespace {
 

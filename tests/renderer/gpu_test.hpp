@@ -4,8 +4,8 @@
 
 #include "renderer/frame_setup.hpp"
 #include "renderer/renderer.hpp"
-#include "renderer/scene/scene_builder.hpp"
-#include "renderer/vulkan/device.hpp"
+#include "scene/scene_builder.hpp"
+#include "vkx/device.hpp"
 
 #include <gtest/gtest.h>
 

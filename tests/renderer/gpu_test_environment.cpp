@@ -1,7 +1,7 @@
 #include "gpu_test.hpp"
 
-#include "renderer/image/file_io.hpp"
-#include "renderer/image/pfm.hpp"
+#include "image/file_io.hpp"
+#include "image/pfm.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,12 @@
-// Compare and sweep (renderer/accuracy) on the built-in Cornell box: LPV brings the image
+// Compare and sweep (lab/accuracy) on the built-in Cornell box: LPV brings the image
 // closer to the one-bounce ground truth, the table is whole, the reference is cached, and the
 // reference's 8-bit picture is made as the GPU makes the renders'.
 #include "gpu_test.hpp"
 
 #include "api/accuracy_request.hpp"
-#include "renderer/accuracy/compare.hpp"
-#include "renderer/accuracy/display_image.hpp"
-#include "renderer/accuracy/sweep.hpp"
+#include "lab/accuracy/compare.hpp"
+#include "lab/accuracy/display_image.hpp"
+#include "lab/accuracy/sweep.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 // reach, and the closed-form radiance on the floor below the spot.
 #include "gpu_test.hpp"
 
-#include "renderer/scene/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 
 #include <cmath>
 

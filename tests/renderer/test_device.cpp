@@ -2,8 +2,8 @@
 // pipeline cache file that survives restarts and corruption.
 #include "gpu_test.hpp"
 
-#include "renderer/vulkan/resources.hpp"
-#include "renderer/vulkan/vk_check.hpp"
+#include "vkx/resources.hpp"
+#include "vkx/vk_check.hpp"
 
 #include <cstdlib>
 #include <filesystem>

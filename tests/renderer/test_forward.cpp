@@ -5,8 +5,8 @@
 // double-sided and emissive materials, and with every tone curve.
 #include "gltf_builder.hpp"
 #include "gpu_test.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/gltf_loader.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/gltf_loader.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // how many propagation steps a cascade needs; "exact" turns the planner's own rules off.
 #include "renderer/frame_plan.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/scene_builder.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/scene_builder.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -4,7 +4,7 @@
 #include "renderer/frame_setup.hpp"
 #include "renderer/frame_targets.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 
 #include <gtest/gtest.h>
 

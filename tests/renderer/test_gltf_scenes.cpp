@@ -1,10 +1,10 @@
 // glTF scenes through the whole renderer: a texture's colour reaches the reflected light,
 // an emissive surface lights its surroundings with no light in the scene, and the file's
 // camera is the one a request without a camera gets.
+#include "api/request_error.hpp"
 #include "gltf_builder.hpp"
 #include "gpu_test.hpp"
-#include "api/request_error.hpp"
-#include "renderer/scene/gltf_loader.hpp"
+#include "scene/gltf_loader.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "renderer/gpu_types.hpp"
 #include "renderer/lpv/blocker_surfels.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include "api/request_error.hpp"
 #include "renderer/output.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "scene/builtin_scenes.hpp"
 
 #include <cmath>
 

@@ -3,9 +3,9 @@
 // can change, within a stated tolerance where the plan shortens propagation.
 #include "gltf_builder.hpp"
 #include "gpu_test.hpp"
-#include "renderer/scene/gltf_loader.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/scene_builder.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/gltf_loader.hpp"
+#include "scene/scene_builder.hpp"
 
 #include <gtest/gtest.h>
 

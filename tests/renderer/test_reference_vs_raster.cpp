@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "gpu_test.hpp"
-#include "renderer/reference/path_tracer.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
+#include "reference/path_tracer.hpp"
+#include "scene/builtin_scenes.hpp"
 
 namespace {
 

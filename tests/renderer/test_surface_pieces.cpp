@@ -3,8 +3,8 @@
 // stay within their budget on scenes of many small triangles, and are the same every time.
 #include "renderer/lpv/blocker_surfels.hpp"
 #include "renderer/lpv/emitter_surfels.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/scene_builder.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/scene_builder.hpp"
 
 #include <gtest/gtest.h>
 

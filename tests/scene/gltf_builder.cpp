@@ -1,6 +1,6 @@
 #include "gltf_builder.hpp"
 
-#include "renderer/image/png.hpp"
+#include "image/png.hpp"
 
 #include <cstring>
 

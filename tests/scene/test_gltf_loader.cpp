@@ -1,8 +1,8 @@
 // The glTF loader on files made to test one thing each: where geometry lands, what lights,
 // cameras and materials become, and that broken files are refused with the right kind.
 #include "gltf_builder.hpp"
-#include "renderer/scene/gltf_loader.hpp"
-#include "renderer/scene/image_decode.hpp"
+#include "scene/gltf_loader.hpp"
+#include "scene/image_decode.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "stability_cases.hpp"
 
-#include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/scene_builder.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/scene_builder.hpp"
 
 #include <algorithm>
 #include <cmath>

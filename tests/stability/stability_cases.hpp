@@ -3,7 +3,7 @@
 #pragma once
 
 #include "api/render_request.hpp"
-#include "renderer/scene/scene.hpp"
+#include "scene/scene.hpp"
 
 #include <functional>
 #include <string>

@@ -4,11 +4,11 @@
 // value of each invariant is printed at the end.
 #include "api/request_error.hpp"
 #include "gpu_test.hpp"
-#include "renderer/passes/geometry_volume_pass.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/scene_builder.hpp"
+#include "renderer/passes/geometry_volume_pass.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/scene_builder.hpp"
 #include "stability_cases.hpp"
 
 #include <gtest/gtest.h>

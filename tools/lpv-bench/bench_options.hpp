@@ -1,7 +1,7 @@
 // Command line of lpv-bench: a subcommand, its inputs and its options.
 #pragma once
 
-#include "renderer/bench/results_comparison.hpp"
+#include "lab/bench/results_comparison.hpp"
 #include "tools/common/program_main.hpp"
 
 #include <cstdint>

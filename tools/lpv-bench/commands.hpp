@@ -3,9 +3,9 @@
 #pragma once
 
 #include "bench_options.hpp"
+#include "lab/bench/results_comparison.hpp"
+#include "lab/bench/suite_runner.hpp"
 #include "tools/common/progress_bar.hpp"
-#include "renderer/bench/suite_runner.hpp"
-#include "renderer/bench/results_comparison.hpp"
 
 #include <filesystem>
 #include <optional>

@@ -2,7 +2,7 @@
 // the Markdown report (--report) adds every metric, for job summaries.
 #pragma once
 
-#include "renderer/bench/results_comparison.hpp"
+#include "lab/bench/results_comparison.hpp"
 
 #include <string>
 

@@ -1,9 +1,9 @@
 #include "http_case_runner.hpp"
 
 #include "api/request_json.hpp"
+#include "image/pfm.hpp"
 #include "input_files.hpp"
-#include "renderer/bench/image_fingerprint.hpp"
-#include "renderer/image/pfm.hpp"
+#include "lab/bench/image_fingerprint.hpp"
 
 #include <nlohmann/json.hpp>
 

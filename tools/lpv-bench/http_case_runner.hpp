@@ -3,7 +3,7 @@
 // the answer, with the server's own stats beside.
 #pragma once
 
-#include "renderer/bench/suite_runner.hpp"
+#include "lab/bench/suite_runner.hpp"
 #include "server_connection.hpp"
 
 #include <httplib.h>

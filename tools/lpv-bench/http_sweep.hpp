@@ -3,7 +3,7 @@
 // balancer, each to a replica), then joined: the rows of one sweep, in its order.
 #pragma once
 
-#include "renderer/accuracy/sweep.hpp"
+#include "lab/accuracy/sweep.hpp"
 
 #include <nlohmann/json.hpp>
 

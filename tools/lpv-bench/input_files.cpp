@@ -1,7 +1,7 @@
 #include "input_files.hpp"
 
 #include "api/request_error.hpp"
-#include "renderer/image/file_io.hpp"
+#include "image/file_io.hpp"
 
 #include <algorithm>
 #include <fstream>

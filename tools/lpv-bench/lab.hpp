@@ -2,7 +2,7 @@
 #pragma once
 
 #include "bench_options.hpp"
-#include "renderer/accuracy/workbench.hpp"
+#include "lab/accuracy/workbench.hpp"
 #include "renderer/gpu_device.hpp"
 #include "renderer/renderer.hpp"
 

@@ -6,7 +6,7 @@
 #include "bench_options.hpp"
 #include "http_case_runner.hpp"
 #include "lab.hpp"
-#include "renderer/bench/renderer_case_runner.hpp"
+#include "lab/bench/renderer_case_runner.hpp"
 #include "server_launcher.hpp"
 
 #include <memory>

@@ -1,6 +1,6 @@
 #include "results_report.hpp"
 
-#include "renderer/bench/machine_noise.hpp"
+#include "lab/bench/machine_noise.hpp"
 #include "text_table.hpp"
 
 #include <algorithm>

@@ -3,10 +3,10 @@
 #include "commands.hpp"
 #include "http_case_runner.hpp"
 #include "input_files.hpp"
+#include "lab/bench/build_info.hpp"
+#include "lab/bench/suite_fan_out.hpp"
 #include "local_runners.hpp"
 #include "results_report.hpp"
-#include "renderer/bench/build_info.hpp"
-#include "renderer/bench/suite_fan_out.hpp"
 
 #include <nlohmann/json.hpp>
 

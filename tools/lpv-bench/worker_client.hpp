@@ -5,7 +5,7 @@
 #include "bench_options.hpp"
 #include "child_process.hpp"
 #include "input_files.hpp"
-#include "renderer/bench/suite_runner.hpp"
+#include "lab/bench/suite_runner.hpp"
 #include "worker_protocol.hpp"
 
 #include <filesystem>

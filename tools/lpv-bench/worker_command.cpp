@@ -3,8 +3,8 @@
 // the round trips, and answers on its standard output.
 #include "commands.hpp"
 #include "input_files.hpp"
+#include "lab/bench/build_info.hpp"
 #include "local_runners.hpp"
-#include "renderer/bench/build_info.hpp"
 #include "worker_protocol.hpp"
 
 #include <charconv>

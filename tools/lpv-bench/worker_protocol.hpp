@@ -10,7 +10,7 @@
 // End of input ends the worker. Both sides read the same suite file.
 #pragma once
 
-#include "renderer/bench/suite_runner.hpp"
+#include "lab/bench/suite_runner.hpp"
 
 #include <string>
 

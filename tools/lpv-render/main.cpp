@@ -3,12 +3,12 @@
 #include "api/request_error.hpp"
 #include "api/request_json.hpp"
 #include "cli_options.hpp"
+#include "image/file_io.hpp"
 #include "renderer/gpu_device.hpp"
-#include "renderer/image/file_io.hpp"
 #include "renderer/output.hpp"
 #include "renderer/renderer.hpp"
-#include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/gltf_loader.hpp"
+#include "scene/builtin_scenes.hpp"
+#include "scene/gltf_loader.hpp"
 #include "tools/common/progress_bar.hpp"
 
 #include <unistd.h>

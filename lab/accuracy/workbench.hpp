@@ -1,0 +1,17 @@
+// What the accuracy measurements work with: the renderer of one device and the references
+// computed so far. One per render worker, used by one thread at a time, like the renderer.
+#pragma once
+
+#include "lab/accuracy/reference_runs.hpp"
+#include "renderer/renderer.hpp"
+
+namespace accuracy {
+
+struct Workbench {
+  explicit Workbench(renderer::Renderer& renderer) : renderer(renderer) {}
+
+  renderer::Renderer& renderer;
+  ReferenceCache references;
+};
+
+}  // namespace accuracy
