@@ -127,6 +127,7 @@ std::string error_axis_label(const ParetoAxis& axis) {
 
 struct Point {
   const SweepRow* row = nullptr;
+  std::size_t index = 0;  // the row's place in the table: its circle's data-row
   double time = 0.0, error = 0.0;
 };
 
@@ -203,7 +204,8 @@ void draw_point(SvgWriter& svg, const Point& point, const LogAxis& x, const LogA
                       {"r", svg_number(pareto ? pareto_radius : row_radius)},
                       {"fill", pareto ? pareto_colour : row_colour},
                       {"fill-opacity", pareto ? "1" : "0.7"},
-                      {"stroke", "#fff"}});
+                      {"stroke", "#fff"},
+                      {"data-row", std::to_string(point.index)}});
   svg.element("title", {}, tooltip(*point.row, point.error, axis));
   svg.close();
 }
@@ -240,8 +242,9 @@ std::string note_text(const std::map<std::string, std::uint64_t>& left_out) {
 std::string to_svg_plot(const SweepTable& table, const std::string& title) {
   std::vector<Point> points;
   std::map<std::string, std::uint64_t> left_out;  // reason -> rows (ordered: a stable note)
-  for (const SweepRow& row : table.rows) {
-    const Point point{&row, row.gpu_ms, error_of(row, table.axis)};
+  for (std::size_t index = 0; index < table.rows.size(); ++index) {
+    const SweepRow& row = table.rows[index];
+    const Point point{&row, index, row.gpu_ms, error_of(row, table.axis)};
     if (const std::string why = unplottable(point.time); !why.empty())
       ++left_out[why + " GPU time"];
     else if (const std::string why_error = unplottable(point.error); !why_error.empty())

@@ -120,7 +120,9 @@ SweepTable sweep_table_from_json(const nlohmann::json& json, const std::string& 
 // error_of, both on log scales, every row a circle with a tooltip, the rows marked pareto
 // highlighted and joined by the front's staircase. Rows a log scale cannot place (a time or
 // error that is zero, negative or not finite) are left out and counted in a note under the
-// plot. The title is escaped like every text. Call mark_pareto first.
+// plot. The title is escaped like every text. Each row's circle names the row's index in the
+// table (data-row), so a page that shows the plot can tell which row was picked: the web
+// page shows this plot, it draws none of its own. Call mark_pareto first.
 std::string to_svg_plot(const SweepTable& table, const std::string& title);
 
 std::string to_string(SweepMetric m);  // "rmse", "relative_mse", "psnr_db", "ssim", "mean_abs_error"

@@ -4,9 +4,9 @@
 #include "api/request_error.hpp"
 #include "api/request_json.hpp"
 #include "api/sweep_table.hpp"
-#include "renderer/image/png.hpp"
-#include "server/accuracy_jobs.hpp"
 #include "core/base64.hpp"
+#include "image/png.hpp"
+#include "server/accuracy_jobs.hpp"
 #include "server/http_errors.hpp"
 #include "server/request_log.hpp"
 
@@ -46,6 +46,10 @@ nlohmann::json sweep_json(const accuracy::SweepResult& result) {
   return {{"complete", result.complete}, {"reference", api::to_json(result.reference)}, {"table", api::to_json(result.table)}};
 }
 
+std::string sweep_plot(const SweepJob& job) {
+  return api::to_svg_plot(job.result->table, "LPV error against GPU time: " + job.request.base.scene);
+}
+
 enum class SweepFormat { json, csv, svg, ndjson };
 
 SweepFormat sweep_format(const httplib::Request& request) {
@@ -65,8 +69,7 @@ void send_sweep(httplib::Response& response, const SweepJob& job, SweepFormat fo
   switch (format) {
     case SweepFormat::csv: return response.set_content(api::to_csv(result.table), "text/csv");
     case SweepFormat::svg:
-      return response.set_content(api::to_svg_plot(result.table, "LPV error against GPU time: " + job.request.base.scene),
-                                  "image/svg+xml");
+      return response.set_content(sweep_plot(job), "image/svg+xml");
     default: return send_json(response, sweep_json(result));
   }
 }
@@ -115,8 +118,10 @@ void stream_sweep(const std::shared_ptr<SweepJob>& job, httplib::Response& respo
           write(error_event(*job, service));
         } else {
           service.metrics.count_render("ok");
+          // The plot too, so that the web page shows the same plot as ?format=svg.
           nlohmann::json done = sweep_json(*job->result);
           done["event"] = "done";
+          done["plot"] = sweep_plot(*job);
           write(done);
         }
         sink.done();

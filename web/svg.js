@@ -3,7 +3,7 @@
 
 const NS = 'http://www.w3.org/2000/svg';
 
-export function svgElement(name, attributes = {}, text) {
+function svgElement(name, attributes = {}, text) {
   const element = document.createElementNS(NS, name);
   for (const [key, value] of Object.entries(attributes)) element.setAttribute(key, String(value));
   if (text !== undefined) element.textContent = text;

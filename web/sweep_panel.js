@@ -1,8 +1,8 @@
 // Sweeps from the page: POST /v1/sweep?format=ndjson with the current settings as the base
 // (at a smaller image size: a sweep renders every row and traces a reference), read as a
-// stream so progress shows while the reference is traced and the rows arrive; the plot
-// grows with them and gets its Pareto front when the sweep is done. A point (or a row's
-// button) loads its configuration into the settings.
+// stream so progress shows while the reference is traced and the rows arrive in the table;
+// the plot, the server's own, comes with the timed table when the sweep is done. A point (or
+// a row's button) loads its configuration into the settings.
 
 import { sweep } from './api_client.js';
 import { sweepPlot } from './sweep_plot.js';
@@ -19,6 +19,7 @@ function parseList(text) {
 export class SweepPanel {
   #run = new LatestRun();
   #rows = [];
+  #plot = null;  // the server's SVG plot, once the sweep is done
 
   constructor({ elements, state, errors }) {
     Object.assign(this, { elements, state, errors });
@@ -59,6 +60,7 @@ export class SweepPanel {
     const { elements } = this;
     const body = this.#body();
     this.#rows = [];
+    this.#plot = null;
     this.#draw(body.axis);
     elements.progress.value = 0;
     await this.#run.start(
@@ -87,6 +89,7 @@ export class SweepPanel {
         break;
       case 'done':
         this.#rows = event.table.rows;
+        this.#plot = event.plot;
         this.#progress(event.complete ? `Done: ${this.#rows.length} configurations` : 'Ended early at the deadline', 1);
         this.#draw(axis);
         break;
@@ -104,7 +107,9 @@ export class SweepPanel {
 
   #draw(axis) {
     const rows = this.#rows.filter(Boolean);
-    this.elements.plot.replaceChildren(sweepPlot(rows, axis, (row) => this.load(row)));
+    this.elements.plot.replaceChildren(this.#plot
+      ? sweepPlot(this.#plot, this.#rows, (row) => this.load(row))
+      : Object.assign(document.createElement('p'), { className: 'hint', textContent: 'The plot of error against GPU time comes when the rows are timed.' }));
     this.#table(rows, axis);
   }
 

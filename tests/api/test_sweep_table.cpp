@@ -492,6 +492,13 @@ TEST(SweepSvg, EveryPlottableRowIsACircleAndTheFrontIsHighlighted) {
     highlighted += pareto;
   }
   EXPECT_EQ(highlighted, 3u);
+  // Each circle names its row (the web page loads a row's settings by it): the front's
+  // circles are drawn last, over the others.
+  std::vector<std::string> named;
+  static const std::regex data_row(R"re(<circle class="(row|row pareto)"[^>]* data-row="([0-9]+)")re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), data_row); it != std::sregex_iterator(); ++it)
+    named.push_back((*it)[1].str() + " " + (*it)[2].str());
+  EXPECT_EQ(named, (std::vector<std::string>{"row 2", "row 4", "row pareto 0", "row pareto 1", "row pareto 3"}));
   // The staircase through the three front rows: right then down, twice.
   static const std::regex staircase(R"re(<path class="front" d="M[-0-9.]+ [-0-9.]+ H[-0-9.]+ V[-0-9.]+ H[-0-9.]+ V[-0-9.]+")re");
   EXPECT_TRUE(std::regex_search(svg, staircase));

@@ -132,6 +132,13 @@ TEST(HttpAccuracy, SweepStreamsItsEventsInOrder) {
   EXPECT_EQ(events.back()["event"], "done");
   EXPECT_EQ(events.back()["table"]["rows"].size(), 5u);
   for (const nlohmann::json& row : events.back()["table"]["rows"]) EXPECT_EQ(row["frames"], 3);
+  // The plot ?format=svg answers (the web page shows it): each plotted row a circle that
+  // names its row.
+  const std::string plot = events.back().value("plot", "");
+  EXPECT_TRUE(plot.starts_with("<svg ")) << plot.substr(0, 40);
+  EXPECT_NE(plot.find("LPV error against GPU time: cornell-box"), std::string::npos);
+  for (int row = 0; row < 5; ++row)
+    EXPECT_NE(plot.find("data-row=\"" + std::to_string(row) + "\""), std::string::npos) << "row " << row;
 }
 
 // 65 rows (LPV off, then 4 grids x 16 iteration counts): about 7.5 s on the project's 2-core
