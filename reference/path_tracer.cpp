@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/elapsed.hpp"
 #include "reference/pixel_masks.hpp"
 #include "reference/transport.hpp"
 
@@ -197,7 +198,7 @@ Result render(const SceneBvh& bvh, const View& view, const Settings& settings, c
 
   Result r = assemble(view, surfaces, values, settings.bounces > 0 ? settings.samples : 0, bvh.ray_offset());
   r.rays = rays;
-  r.trace_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  r.trace_ms = core::ms_since(start);
   return r;
 }
 

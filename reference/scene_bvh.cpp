@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/elapsed.hpp"
 #include "reference/embree_scene.hpp"
 #include "reference/texture_lookup.hpp"
 
@@ -54,7 +55,7 @@ SceneBvh::SceneBvh(const scene::Scene& scene) : scene_(scene) {
   }
   ray_offset_ = kRelativeRayOffset * std::max(extent, 1e-3f);
   embree_ = std::make_unique<EmbreeScene>(positions, corners, cullable);
-  build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  build_ms_ = core::ms_since(start);
 }
 
 SceneBvh::~SceneBvh() = default;

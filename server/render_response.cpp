@@ -1,8 +1,9 @@
 #include "server/render_response.hpp"
 
 #include "api/request_json.hpp"
-#include "renderer/output.hpp"
 #include "core/base64.hpp"
+#include "core/elapsed.hpp"
+#include "renderer/output.hpp"
 #include "server/request_log.hpp"
 #include "server/route_support.hpp"
 
@@ -56,7 +57,7 @@ void send_render_result(httplib::Response& response, renderer::RenderResult& res
   const auto encode_start = std::chrono::steady_clock::now();
   const std::vector<std::uint8_t> bytes = renderer::encode_output(result, format);
   const double encode_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - encode_start).count();
+      core::ms_since(encode_start);
   result.stats.cpu_ms["encode"] = api::TimeSummary::of({encode_ms});
   // The pixels are no longer needed; free them before building the response.
   result.display = {};

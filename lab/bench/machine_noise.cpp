@@ -1,3 +1,4 @@
+#include "core/elapsed.hpp"
 #include "lab/bench/machine_noise.hpp"
 
 #include <string>
@@ -72,7 +73,7 @@ NoiseMonitor::NoiseMonitor() {
 void NoiseMonitor::probe() {
   const auto start = std::chrono::steady_clock::now();
   probe_sink = probe_sink ^ probe_work(noise_.probe_ms.size());
-  noise_.probe_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  noise_.probe_ms.push_back(core::ms_since(start));
 }
 
 api::BenchNoise NoiseMonitor::noise() const {

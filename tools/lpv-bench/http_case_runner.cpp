@@ -1,6 +1,7 @@
 #include "http_case_runner.hpp"
 
 #include "api/request_json.hpp"
+#include "core/elapsed.hpp"
 #include "image/pfm.hpp"
 #include "input_files.hpp"
 #include "lab/bench/image_fingerprint.hpp"
@@ -49,7 +50,7 @@ Measurement HttpCaseRunner::render_timed(const api::BenchCase& c) {
   const nlohmann::json body = request_body(c);
   const auto start = std::chrono::steady_clock::now();
   const httplib::Result result = post_render(body, !round_trip);
-  const double round_trip_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const double round_trip_ms = core::ms_since(start);
   if (!result || result->status != 200) throw server_.failure("POST /v1/render", result);
   const nlohmann::json stats = round_trip ? parse_answer(result->get_header_value("X-Render-Stats"), "X-Render-Stats")
                                           : parse_answer(result->body, "the render's answer").value("stats", nlohmann::json());

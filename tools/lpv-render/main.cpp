@@ -3,6 +3,7 @@
 #include "api/request_error.hpp"
 #include "api/request_json.hpp"
 #include "cli_options.hpp"
+#include "core/elapsed.hpp"
 #include "image/file_io.hpp"
 #include "renderer/gpu_device.hpp"
 #include "renderer/output.hpp"
@@ -170,7 +171,7 @@ int run(int argc, char** argv) {
 
   const auto encode_start = std::chrono::steady_clock::now();
   const std::vector<std::uint8_t> bytes = renderer::encode_output(result, request.output.format);
-  const double encode_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - encode_start).count();
+  const double encode_ms = core::ms_since(encode_start);
   result.stats.cpu_ms["encode"] = api::TimeSummary::of({encode_ms});
   image::write_file_atomically(output_file, bytes);
 
