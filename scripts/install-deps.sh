@@ -39,7 +39,7 @@ BUILD_PACKAGES=(
   libdeflate-dev libstb-dev libtinyexr-dev zlib1g-dev
   # content hashes (SHA-256) of uploaded scenes
   libssl-dev
-  # tests and benchmarks; curl for the README's examples and scripts/bench-server.sh
+  # tests and benchmarks; curl for the README's examples and bench/bench-server.sh
   libgtest-dev libbenchmark-dev curl
   # real and deliberately broken glTF files; clang for the sanitizer build and libFuzzer
   assimp-testmodels clang libclang-rt-dev

@@ -12,7 +12,7 @@
 #   # on the other machine:
 #   mkdir lpv && tar -xJf lpv-portable.tar.xz -C lpv
 #   lpv/run.sh ctest --test-dir build -E web_ui      # the suites (no browser there)
-#   lpv/run.sh scripts/bench-lpv.sh                  # the LPV numbers on its device
+#   lpv/run.sh bench/bench-lpv.sh                  # the LPV numbers on its device
 #
 # run.sh runs its command from the bundle's root with the libraries, the layer and the test
 # paths in place.

@@ -2,7 +2,7 @@
 # Prints what a glTF scene costs through lpv-server (issue 5's numbers), on the default
 # device: upload (parse, validate, store), first render (load, upload to the device,
 # render), warm render time (median of 5), and the memory the cached scene holds.
-#   scripts/bench-scene.sh [FILE.glb] [SIZE]
+#   bench/bench-scene.sh [FILE.glb] [SIZE]
 # Default: 2CylinderEngine.glb from assimp-testmodels, 512x512. Needs only curl. Builds first
 # if needed.
 set -euo pipefail

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Prints the numbers the LPV is measured by, on the default device (lavapipe).
-#   scripts/bench-lpv.sh [passes]   per-pass device ms of cornell-box at 512x512 (median of 10
+#   bench/bench-lpv.sh [passes]   per-pass device ms of cornell-box at 512x512 (median of 10
 #                                   frames) for grids of 16^3, 32^3 and 64^3 cells and 4, 8 and 16
 #                                   iterations (one cascade, RSM 256^2, occlusion on, plan exact),
 #                                   and propagation throughput in cell-iterations per second.
-#   scripts/bench-lpv.sh scaling    what one propagation step costs from 4^3 to 64^3 cells (16
+#   bench/bench-lpv.sh scaling    what one propagation step costs from 4^3 to 64^3 cells (16
 #                                   iterations, median of 10 frames): microseconds a step and
 #                                   nanoseconds a cell-iteration, with occlusion and without,
 #                                   which tell the fixed cost of a step (a dispatch and its
@@ -15,7 +15,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 mode=${1:-passes}
-[[ "$mode" == passes || "$mode" == scaling ]] || { echo "usage: scripts/bench-lpv.sh [passes|scaling]" >&2; exit 2; }
+[[ "$mode" == passes || "$mode" == scaling ]] || { echo "usage: bench/bench-lpv.sh [passes|scaling]" >&2; exit 2; }
 [ -x "$root/build/lpv-render" ] || "$root/scripts/build.sh"
 bin="$root/build/lpv-render"
 work=$(mktemp -d)

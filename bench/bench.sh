@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Prints the numbers the foundation is measured by, on the default device (lavapipe):
 #  - per-pass device ms and wall ms per frame for cornell-box at 512x512 with direct light
-#    only (median of 20 frames; scripts/bench-lpv.sh measures the LPV),
+#    only (median of 20 frames; bench/bench-lpv.sh measures the LPV),
 #  - PNG encoding of that frame,
 #  - cold start of lpv-render (process start to PNG on disk, default request: LPV on) with
 #    empty shader caches,
