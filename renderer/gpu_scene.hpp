@@ -88,7 +88,8 @@ struct GpuScene {
         bound_variant = variant.index();
       }
       const VkDescriptorSet set = textures.set_of(draw.material);
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), 1, 1, &set, 0, nullptr);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bound->layout(), gpu::MATERIAL_TEXTURE_SET, 1, &set, 0,
+                              nullptr);
       bound->push(cmd, constants_of(draw));
       vkCmdDrawIndexed(cmd, draw.index_count, 1, draw.first_index, 0, 0);
     }

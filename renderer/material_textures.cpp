@@ -76,7 +76,7 @@ vkx::Image upload_texture(const vkx::Device& device, const scene::Texture& t, st
 
 TextureSetLayout::TextureSetLayout(const vkx::Device& device) : device_(device.handle()) {
   const VkDescriptorSetLayoutBinding b =
-      vkx::binding(0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
+      vkx::binding(gpu::MATERIAL_BASE_COLOR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT);
   VkDescriptorSetLayoutCreateInfo ci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   ci.bindingCount = 1;
   ci.pBindings = &b;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "scene/scene.hpp"
+#include "shaders/shared/material_texture_interface.h"
 #include "vkx/device.hpp"
 #include "vkx/resources.hpp"
 

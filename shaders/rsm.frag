@@ -8,6 +8,7 @@
 #include "shared/rsm_interface.h"
 #include "shared/lights.glsl"
 #include "shared/albedo_code.h"
+#include "shared/material_texture_interface.h"
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
@@ -18,7 +19,7 @@ layout(location = 2) in vec2 in_uv;
 // (as in forward.frag). The buffers are sized for the most views and lights a frame may have.
 layout(std140, set = 0, binding = RSM_VIEWS) uniform Views { GpuRsmView views[SHADE_MAX_SHADOW_VIEWS]; };
 layout(std140, set = 0, binding = RSM_LIGHTS) uniform Lights { GpuLight lights[SHADE_MAX_LIGHTS]; };
-layout(set = 1, binding = 0) uniform sampler2D base_color_texture;  // read when TEXTURED
+layout(set = MATERIAL_TEXTURE_SET, binding = MATERIAL_BASE_COLOR) uniform sampler2D base_color_texture;
 layout(constant_id = 0) const bool TEXTURED = false;
 layout(push_constant) uniform Draw { GpuDrawMaterial material; uint view; } draw;
 

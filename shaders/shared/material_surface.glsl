@@ -6,11 +6,13 @@
 #ifndef LPV_MATERIAL_SURFACE_GLSL
 #define LPV_MATERIAL_SURFACE_GLSL
 
+#include "material_texture_interface.h"
+
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec2 in_uv;
 
-layout(set = 1, binding = 0) uniform sampler2D base_color_texture;  // read when TEXTURED
+layout(set = MATERIAL_TEXTURE_SET, binding = MATERIAL_BASE_COLOR) uniform sampler2D base_color_texture;
 layout(constant_id = 0) const bool DOUBLE_SIDED = false;  // back faces drawn (else culled)
 layout(constant_id = 1) const bool TEXTURED = false;
 layout(push_constant) uniform Draw { GpuDrawMaterial draw; };
