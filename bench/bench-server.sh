@@ -21,17 +21,8 @@ rss_requests=${RSS_REQUESTS:-1000}
 rss_lpv=${RSS_LPV:-off}  # "on" takes 1000 LPV renders (minutes on lavapipe)
 work=$(mktemp -d)
 
-"$bin" --port 0 --queue 64 >"$work/server.log" 2>&1 &
-server=$!
-trap 'kill -TERM $server 2>/dev/null; wait $server 2>/dev/null; rm -rf "$work"' EXIT
-port=""
-for _ in $(seq 600); do
-  port=$(head -1 "$work/server.log" | sed -n 's/.*:\([0-9][0-9]*\)$/\1/p')
-  [ -n "$port" ] && break
-  sleep 0.05
-done
-[ -n "$port" ] || { cat "$work/server.log"; exit 1; }
-until curl -sf "http://127.0.0.1:$port/readyz" >/dev/null; do sleep 0.1; done
+. "$root/bench/local_server.sh"
+start_local_server "$bin" --queue 64
 url="http://127.0.0.1:$port/v1/render"
 
 body() {  # body SIZE LPV(on|off)
