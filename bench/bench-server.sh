@@ -19,6 +19,7 @@ latency_requests=${LATENCY_REQUESTS:-50}
 rps_requests=${RPS_REQUESTS:-25}
 rss_requests=${RSS_REQUESTS:-1000}
 rss_lpv=${RSS_LPV:-off}  # "on" takes 1000 LPV renders (minutes on lavapipe)
+[ "$rss_requests" -ge 10 ] 2>/dev/null || { echo "RSS_REQUESTS must be a number of at least 10 (the first 10 are the baseline), got '$rss_requests'" >&2; exit 2; }
 work=$(mktemp -d)
 
 . "$root/bench/local_server.sh"
