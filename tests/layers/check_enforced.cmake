@@ -5,8 +5,12 @@
 
 cmake_minimum_required(VERSION 3.25)
 
-# The probes build in the tree they were configured in, through its include roots.
-if(NOT EXISTS "${COMPILER}" OR NOT EXISTS "${BUILD_DIR}/include_roots/lpv_scene/scene/scene.hpp")
+# The probes build in the tree they were configured in, through its include roots. Skipped
+# only where that tree has moved (its include roots are links that no longer reach the
+# sources) or there is no compiler: include roots that are missing are a broken build, which
+# the probes report (the controls fail).
+set(root_link "${BUILD_DIR}/include_roots/lpv_scene/scene")
+if(NOT EXISTS "${COMPILER}" OR (IS_SYMLINK "${root_link}" AND NOT EXISTS "${root_link}/scene.hpp"))
   message("layers_enforced: skipped: no compiler at ${COMPILER}, or the include roots of ${BUILD_DIR} do not "
           "reach the sources (a build moved elsewhere, as a portable bundle is)")
   return()
