@@ -186,9 +186,8 @@ void draw_legend(SvgWriter& svg) {
   svg.close();
 }
 
-void draw_point(SvgWriter& svg, const Point& point, const LogAxis& x, const LogAxis& y, const ParetoAxis& axis) {
-  const bool pareto = point.row->pareto;
-  // The frames' range of GPU times as a whisker, where a log scale can place it.
+// The frames' range of GPU times as a whisker, where a log scale can place it.
+void draw_whisker(SvgWriter& svg, const Point& point, const LogAxis& x, const LogAxis& y) {
   const auto [fastest, slowest] = point.row->gpu_ms_range;
   if (point.row->frames > 1 && fastest > 0.0 && std::isfinite(slowest) && slowest > fastest)
     svg.element("line", {{"class", "range"},
@@ -196,8 +195,13 @@ void draw_point(SvgWriter& svg, const Point& point, const LogAxis& x, const LogA
                          {"x2", svg_number(x.pixel(slowest))},
                          {"y1", svg_number(y.pixel(point.error))},
                          {"y2", svg_number(y.pixel(point.error))},
-                         {"stroke", pareto ? pareto_colour : row_colour},
+                         {"stroke", point.row->pareto ? pareto_colour : row_colour},
                          {"stroke-opacity", "0.6"}});
+}
+
+// A row's circle, the only thing in the plot that takes the pointer (the document takes none).
+void draw_circle(SvgWriter& svg, const Point& point, const LogAxis& x, const LogAxis& y, const ParetoAxis& axis) {
+  const bool pareto = point.row->pareto;
   svg.open("circle", {{"class", pareto ? "row pareto" : "row"},
                       {"cx", svg_number(x.pixel(point.time))},
                       {"cy", svg_number(y.pixel(point.error))},
@@ -205,7 +209,8 @@ void draw_point(SvgWriter& svg, const Point& point, const LogAxis& x, const LogA
                       {"fill", pareto ? pareto_colour : row_colour},
                       {"fill-opacity", pareto ? "1" : "0.7"},
                       {"stroke", "#fff"},
-                      {"data-row", std::to_string(point.index)}});
+                      {"data-row", std::to_string(point.index)},
+                      {"pointer-events", "visiblePainted"}});
   svg.element("title", {}, tooltip(*point.row, point.error, axis));
   svg.close();
 }
@@ -253,7 +258,8 @@ std::string to_svg_plot(const SweepTable& table, const std::string& title) {
       points.push_back(point);
   }
 
-  SvgWriter svg(width, height, {{"font-family", "sans-serif"}, {"font-size", "12"}});
+  // No text, line or legend takes the pointer: only the rows' circles do (draw_circle).
+  SvgWriter svg(width, height, {{"font-family", "sans-serif"}, {"font-size", "12"}, {"pointer-events", "none"}});
   svg.element("title", {}, title);
   svg.element("rect", {{"width", "100%"}, {"height", "100%"}, {"fill", "#fff"}});
   svg.element("text", {{"x", svg_number(width / 2)}, {"y", "24"}, {"text-anchor", "middle"}, {"font-size", "16"},
@@ -286,17 +292,17 @@ std::string to_svg_plot(const SweepTable& table, const std::string& title) {
 
   draw_axes(svg, x, y, table.axis);
   draw_legend(svg);
-  std::vector<Point> front;
+  // Every circle can be clicked wherever it lies: the lines (whiskers, the front's staircase)
+  // lie under all circles and take no pointer, and the front's larger circles lie under the
+  // other rows' smaller ones, so a row drawn on a front circle still shows and takes the
+  // pointer, and the front circle's rim around it too.
+  std::vector<Point> front, others;
+  for (const Point& point : points) (point.row->pareto ? front : others).push_back(point);
   svg.open("g", {{"class", "rows"}});
-  for (const Point& point : points) {
-    if (point.row->pareto)
-      front.push_back(point);
-    else
-      draw_point(svg, point, x, y, table.axis);
-  }
-  // The front over the other rows: the line first, its circles on top of it.
+  for (const Point& point : points) draw_whisker(svg, point, x, y);
   draw_staircase(svg, front, x, y);
-  for (const Point& point : front) draw_point(svg, point, x, y, table.axis);
+  for (const Point& point : front) draw_circle(svg, point, x, y, table.axis);
+  for (const Point& point : others) draw_circle(svg, point, x, y, table.axis);
   svg.close();
   return svg.finish();
 }

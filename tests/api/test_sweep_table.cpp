@@ -493,17 +493,38 @@ TEST(SweepSvg, EveryPlottableRowIsACircleAndTheFrontIsHighlighted) {
   }
   EXPECT_EQ(highlighted, 3u);
   // Each circle names its row (the web page loads a row's settings by it): the front's
-  // circles are drawn last, over the others.
+  // larger circles are drawn first, under the others' smaller ones.
   std::vector<std::string> named;
   static const std::regex data_row(R"re(<circle class="(row|row pareto)"[^>]* data-row="([0-9]+)")re");
   for (auto it = std::sregex_iterator(svg.begin(), svg.end(), data_row); it != std::sregex_iterator(); ++it)
     named.push_back((*it)[1].str() + " " + (*it)[2].str());
-  EXPECT_EQ(named, (std::vector<std::string>{"row 2", "row 4", "row pareto 0", "row pareto 1", "row pareto 3"}));
+  EXPECT_EQ(named, (std::vector<std::string>{"row pareto 0", "row pareto 1", "row pareto 3", "row 2", "row 4"}));
   // The staircase through the three front rows: right then down, twice.
   static const std::regex staircase(R"re(<path class="front" d="M[-0-9.]+ [-0-9.]+ H[-0-9.]+ V[-0-9.]+ H[-0-9.]+ V[-0-9.]+")re");
   EXPECT_TRUE(std::regex_search(svg, staircase));
   EXPECT_TRUE(has_text(svg, "cornell-box sweep"));
   EXPECT_EQ(count(svg, "class=\"note\""), 0u) << "a note although every row is shown";
+}
+
+TEST(SweepSvg, OnlyTheCirclesTakeThePointerAndTheyLieOverEveryLine) {
+  // Row 1 lies on the staircase's step from row 0 to row 2 (equal error, slower), and every
+  // row has a whisker: none of it may cover a circle (issue 42: a click on row 1 hit the line).
+  api::SweepTable table = table_of({row(1.0, 1.0), row(5.0, 1.0), row(10.0, 0.01)});
+  for (api::SweepRow& r : table.rows) {
+    r.frames = 5;
+    r.gpu_ms_range = {r.gpu_ms * 0.8, r.gpu_ms * 1.3};
+  }
+  api::mark_pareto(table);
+  ASSERT_FALSE(table.rows[1].pareto);
+  const std::string svg = api::to_svg_plot(table, "t");
+    EXPECT_NE(svg.substr(0, svg.find('>')).find("pointer-events=\"none\""), std::string::npos)
+      << "the document takes no pointer";
+  EXPECT_EQ(count(svg, "pointer-events=\"visiblePainted\""), 3u) << "each circle takes it back";
+  EXPECT_EQ(count(svg, "pointer-events="), 4u) << "and nothing else does";
+  const std::size_t first_circle = svg.find("<circle");
+  EXPECT_LT(svg.find("<path class=\"front\""), first_circle);
+  EXPECT_LT(svg.rfind("<line class=\"range\""), first_circle);
+  EXPECT_EQ(svg.find("<text", first_circle), std::string::npos) << "no text over a circle";
 }
 
 TEST(SweepSvg, PositionsFollowTheLogScales) {

@@ -420,6 +420,40 @@ test('the error against the reference, and a sweep whose points load their setti
   assert.deepEqual(errors, []);
 });
 
+test('every point of the sweep plot can be clicked and reached by keyboard, wherever it lies', async (t) => {
+  // A fixed table (sweep_plot_fixture) served as the sweep's answer: rows 1 and 3 lie on the
+  // front's staircase, every row has a whisker. A click that another element would take fails.
+  const fixture = JSON.parse((await promisify(execFile)(process.env.LPV_SWEEP_PLOT_FIXTURE)).stdout);
+  const request = '{"output":{"width":64,"height":64},"lpv":{"transfer":"sharpened"}}';
+  const { page, errors } = await openPage(t, '#request=' + encodeURIComponent(request));
+  await page.route((url) => url.pathname === '/v1/sweep', (route) => route.fulfill({
+    status: 200, contentType: 'application/x-ndjson',
+    body: JSON.stringify({ event: 'done', complete: true, ...fixture }) + '\n',
+  }));
+  await page.locator('#sweep-run').click();
+  await page.waitForFunction(() => document.getElementById('sweep-progress-label').textContent.startsWith('Done'));
+  const rows = fixture.table.rows;
+  assert.deepEqual(rows.map((row) => row.pareto), [true, false, true, false], 'the fixture\'s layout');
+  assert.equal(await page.locator('#sweep-plot circle[tabindex="0"]').count(), rows.length, 'each point is in the tab order');
+  const grids = rows.map((row) => row.settings.grid[0]);
+  for (const [index, grid] of grids.entries()) {
+    // Each row's grid differs from the one before it, so that each load is a change that shows.
+    await page.locator('#sweep-plot circle[data-row="' + index + '"]').click({ timeout: 5_000 });
+    await frameShown(page, (shown) => shown.lpv?.grid === grid);
+  }
+  for (const [index, grid] of grids.entries()) {
+    if (index === 0) continue;  // row 0 first, then row `index`: each a change
+    await page.locator('#sweep-plot circle[data-row="0"]').focus();
+    await page.keyboard.press('Enter');
+    await frameShown(page, (shown) => shown.lpv?.grid === grids[0]);
+    await page.locator('#sweep-plot circle[data-row="' + index + '"]').focus();
+    await page.keyboard.press(index % 2 ? 'Enter' : ' ');
+    await frameShown(page, (shown) => shown.lpv?.grid === grid);
+  }
+  await screenshot(page, '07b-sweep-fixed-layout');
+  assert.deepEqual(errors, []);
+});
+
 test('dragging the frame orbits the camera', async (t) => {
   const { page, errors } = await openPage(t);
   await page.waitForFunction(() => document.querySelector('[data-field="camera.position"]').value !== '');
