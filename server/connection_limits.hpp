@@ -1,10 +1,11 @@
 // What one client connection may spend before the server answers it (docs/server.md, "Slow
 // clients"): how many connections there may be, how long a request's head and its body may
-// take to arrive, and how large a head may be. server/http_front enforces them.
+// take to arrive, and how large a head and a body may be. server/http_front enforces them.
 #pragma once
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 
 namespace server {
 
@@ -20,6 +21,9 @@ struct ConnectionLimits {
   std::chrono::milliseconds keep_alive_timeout{2000};  // idle between requests, then closed
   std::size_t max_header_lines = 100;                  // beside the request line; more get 431
   std::size_t max_head_bytes = 64 * 1024;              // request line and headers; more get 431
+  // The largest body any route reads (largest_body_bytes: --max-body-bytes, --max-scene-bytes):
+  // a longer Content-Length is answered 413 before the body is read, and the connection closed.
+  std::uint64_t max_body_bytes = 64u << 20;
 };
 
 }  // namespace server

@@ -19,18 +19,24 @@ using Clock = std::chrono::steady_clock;
 
 // One request's connection: the bytes the front read first, then the socket. Reading the body
 // and writing the response each have one deadline, from their first byte; a body that misses
-// its deadline is answered 408 here, and what httplib writes after that is dropped.
+// its deadline is answered 408 here, and what httplib writes after that is dropped. Reads end
+// where the front's framing says the request ends (a chunked body's end is not counted here),
+// so that nothing httplib does reads into the next request.
 class FrontStream : public httplib::Stream {
  public:
-  FrontStream(int fd, std::string buffered, std::chrono::milliseconds transfer_timeout)
-      : fd_(fd), buffered_(std::move(buffered)), transfer_timeout_(transfer_timeout),
-        read_deadline_(Clock::now() + transfer_timeout) {}
+  FrontStream(const HeadReady& connection, std::chrono::milliseconds transfer_timeout)
+      : fd_(connection.fd), buffered_(connection.buffered), transfer_timeout_(transfer_timeout),
+        read_deadline_(Clock::now() + transfer_timeout), request_end_(request_end(connection)) {}
 
   bool is_readable() const override { return position_ < buffered_.size() || wait(POLLIN, read_deadline_); }
   bool is_writable() const override { return wait(POLLOUT, write_deadline()); }
 
   ssize_t read(char* ptr, size_t size) override {
     if (answered_) return -1;
+    if (request_end_) {
+      if (position_ >= *request_end_) return 0;  // the request's end: as if the client had closed
+      size = std::min<std::uint64_t>(size, *request_end_ - position_);
+    }
     if (position_ < buffered_.size()) {
       const std::size_t n = std::min(size, buffered_.size() - position_);
       std::memcpy(ptr, buffered_.data() + position_, n);
@@ -45,6 +51,7 @@ class FrontStream : public httplib::Stream {
         return -1;
       }
       const ssize_t n = recv(fd_, ptr, size, 0);
+      if (n > 0) position_ += std::size_t(n);
       if (n >= 0 || (errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)) return n;
     }
   }
@@ -63,12 +70,25 @@ class FrontStream : public httplib::Stream {
   void get_local_ip_and_port(std::string& ip, int& port) const override { address(getsockname, ip, port); }
   socket_t socket() const override { return fd_; }
 
-  // The connection can serve another request: it was not answered here.
-  bool reusable() const { return !answered_; }
+  // The connection can serve another request: it was not answered here, and its request was
+  // read to its end, so that what follows on it is the next request's start.
+  bool reusable() const { return !answered_ && read_to_end(); }
+  bool read_to_end() const { return request_end_ && position_ == *request_end_; }
   // The bytes after this request's (a pipelined next request's start).
-  std::string leftover() const { return buffered_.substr(std::min(position_, buffered_.size())); }
+  std::string leftover() const { return buffered_.substr(std::min<std::size_t>(position_, buffered_.size())); }
 
  private:
+  // Where the request ends, counted from the head's first byte; none for a chunked body.
+  static std::optional<std::uint64_t> request_end(const HeadReady& connection) {
+    const BodyFraming& body = connection.framed.body;
+    switch (body.kind) {
+      case BodyFraming::Kind::none: return connection.head_bytes;
+      case BodyFraming::Kind::length: return connection.head_bytes + body.length;
+      case BodyFraming::Kind::chunked: return std::nullopt;
+    }
+    return std::nullopt;
+  }
+
   Clock::time_point write_deadline() const { return write_deadline_.value_or(Clock::now() + transfer_timeout_); }
 
   // Whether `fd_` has `events` before `deadline`.
@@ -114,24 +134,47 @@ class FrontStream : public httplib::Stream {
 
   int fd_;
   std::string buffered_;
-  std::size_t position_ = 0;
+  std::uint64_t position_ = 0;  // bytes read, from the head's first
   std::chrono::milliseconds transfer_timeout_;
   Clock::time_point read_deadline_;
   std::optional<Clock::time_point> write_deadline_;
+  std::optional<std::uint64_t> request_end_;
   bool answered_ = false;
 };
+
+// The stream of the request this serving thread is answering, for the post-routing handler,
+// which httplib calls with the request and response only.
+thread_local const FrontStream* answering = nullptr;
 
 }  // namespace
 
 FrontedServer::FrontedServer(const ConnectionLimits& limits) : limits_(limits) {
   // The Keep-Alive header's timeout: the front closes a connection idle this long.
   set_keep_alive_timeout(std::max<time_t>(1, time_t(limits.keep_alive_timeout.count() / 1000)));
+  // The one place that decides whether the connection outlives its answer (issue 43): an
+  // answer sent before its request's body was read to the end (a refusal, whatever refused
+  // it) says "Connection: close", and serve() closes it, so the unread body is never taken
+  // for the next request.
+  set_post_routing_handler([](const httplib::Request&, httplib::Response& response) {
+    if (!answering || answering->read_to_end()) return;
+    response.headers.erase("Keep-Alive");
+    response.headers.erase("Connection");
+    response.set_header("Connection", "close");
+  });
 }
 
 std::optional<std::string> FrontedServer::serve(const HeadReady& connection, bool closing) {
-  FrontStream stream(connection.fd, connection.buffered, limits_.transfer_timeout);
+  FrontStream stream(connection, limits_.transfer_timeout);
+  struct Answering {
+    explicit Answering(const FrontStream& s) { answering = &s; }
+    ~Answering() { answering = nullptr; }
+  } scope(stream);
   bool connection_closed = false;
-  const bool written = process_request(stream, closing, connection_closed, nullptr);
+  const auto restore_empty_fields = [&connection](httplib::Request& request) {
+    for (const std::string& name : connection.framed.empty_fields)
+      if (!request.has_header(name)) request.headers.emplace(name, "");
+  };
+  const bool written = process_request(stream, closing, connection_closed, restore_empty_fields);
   if (!written || connection_closed || closing || !stream.reusable()) return std::nullopt;
   return stream.leftover();
 }

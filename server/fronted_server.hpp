@@ -19,7 +19,9 @@ class FrontedServer : public httplib::Server {
  public:
   explicit FrontedServer(const ConnectionLimits& limits);
 
-  // Serves the one request whose head `connection` holds (HttpFront::Serve).
+  // Serves the one request whose head `connection` holds (HttpFront::Serve): the bytes after
+  // the request when it was read to its end and the connection stays open, else nothing.
+  // Owns httplib's post-routing handler (it marks the answers that close): set no other.
   std::optional<std::string> serve(const HeadReady& connection, bool closing);
 
  private:

@@ -38,8 +38,11 @@ constexpr const char* kRetryAfter503 = "1";
 
 const char* reason_phrase(int status) {
   switch (status) {
+    case 400: return "Bad Request";
     case 408: return "Request Timeout";
+    case 413: return "Content Too Large";
     case 431: return "Request Header Fields Too Large";
+    case 501: return "Not Implemented";
     case 503: return "Service Unavailable";
     default: return "Error";
   }

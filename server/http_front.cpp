@@ -23,8 +23,9 @@ using Clock = std::chrono::steady_clock;
 
 // How often deadlines are checked: the front's timeouts are this much late at most.
 constexpr int kTickMs = 100;
-// A refused connection is read and dropped for this long after its answer, so that the
-// client reads the answer rather than a reset (closing a socket with unread bytes resets it).
+// A connection closed after its answer (refused, or its body left unread) is read and dropped
+// for this long, so that the client reads the answer rather than a reset (closing a socket
+// with unread bytes resets it).
 constexpr auto kLinger = std::chrono::milliseconds(1000);
 // Refused connections lingering at once; past this they are closed at once. With
 // --max-connections (512) they keep the front's descriptors under the usual limit of 1024.
@@ -176,8 +177,10 @@ class FrontLoop {
   void returned(int fd, const std::string& client, std::optional<std::string> leftover, bool stopping,
                 std::deque<HeadReady>& ready) {
     if (!leftover || stopping) {
-      ::close(fd);
+      // Its response is out; what the client still sends (a body left unread) is drained.
+      shutdown(fd, SHUT_WR);
       forget(client);
+      linger(fd, client);
       return;
     }
     Waiting w;
@@ -219,6 +222,12 @@ class FrontLoop {
     const std::size_t from = w.scanned >= 3 ? w.scanned - 3 : 0;
     const std::size_t end = w.buffer.find("\r\n\r\n", from);
     const std::size_t limit = end == std::string::npos ? w.buffer.size() : end + 4;
+    // A head with bare LF line ends never shows a CRLF CRLF: refused at its first, not at its deadline.
+    if (find_bare_line_break(std::string_view(w.buffer).substr(0, limit), from) != std::string::npos) {
+      refuse_waiting(fd, {400, "bad_http_request",
+                          "a bare CR or LF in the request's head: its lines end with CRLF (RFC 9112, section 2.2)", ""});
+      return false;
+    }
     for (std::size_t i = w.scanned; i < limit; ++i) w.lines += w.buffer[i] == '\n';
     w.scanned = limit;
     // The request line and the blank one are not header lines.
@@ -236,8 +245,13 @@ class FrontLoop {
       return false;
     }
     if (end == std::string::npos) return true;
+    const auto framing = frame_request(std::string_view(w.buffer).substr(0, limit), limits_.max_body_bytes);
+    if (const HttpError* refusal = std::get_if<HttpError>(&framing)) {
+      refuse_waiting(fd, *refusal);
+      return false;
+    }
     epoll_ctl(epoll_fd_, EPOLL_CTL_DEL, fd, nullptr);
-    ready.push_back({fd, w.client, std::move(w.buffer)});
+    ready.push_back({fd, w.client, std::move(w.buffer), limit, std::get<FramedHead>(framing)});
     waiting_.erase(fd);
     return false;
   }
@@ -273,7 +287,8 @@ class FrontLoop {
     w.deadline = Clock::now() + kLinger;
   }
 
-  // A refused connection that was never admitted: drained until it closes, or closed now.
+  // A connection answered for the last time, and no longer counted among the admitted ones:
+  // drained until it closes or its time is up, or closed now past the cap.
   void linger(int fd, const std::string& client) {
     if (lingering_ >= kMaxLingering) {
       ::close(fd);

@@ -1,9 +1,12 @@
 // The server's front: it owns accept and every request's head, so that slow or many clients
 // cannot take the threads that serve requests (issue 29). One thread waits on all connections
 // at once (epoll): it refuses connections past the caps (503), reads each request's head
-// within its deadline and size caps (408, 431), and only then hands the connection to one of
-// `threads` serving threads, which read the body, run the handler and write the response.
-// A connection kept alive comes back to the front for its next head.
+// within its deadline and size caps (408, 431), decides where the request's body ends
+// (server/request_framing: a head whose framing is ambiguous is refused, 400, 413 or 501, and
+// its connection closed), and only then hands the connection to one of `threads` serving
+// threads, which read the body, run the handler and write the response. A connection kept
+// alive comes back to the front for its next head; one closed after a response lingers (its
+// unread bytes drained for a moment) so that the client reads the answer, not a reset.
 //
 // httplib 0.11 serves each connection on one thread of a fixed pool from its accept on, with a
 // timeout per read only: a client sending a header line every few seconds holds a thread for
@@ -12,6 +15,7 @@
 #pragma once
 
 #include "server/connection_limits.hpp"
+#include "server/request_framing.hpp"
 
 #include <atomic>
 #include <condition_variable>
@@ -31,6 +35,8 @@ struct HeadReady {
   int fd = -1;
   std::string client;    // the peer's address, without its port
   std::string buffered;  // the head, and whatever came after it (the body's start)
+  std::size_t head_bytes = 0;  // the head's length in `buffered`, its blank line included
+  FramedHead framed;           // where the body ends, and the head's empty fields
 };
 
 class HttpFront {

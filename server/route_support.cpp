@@ -86,8 +86,7 @@ bool media_type_accepted(const httplib::Request& request, httplib::Response& res
                             " is not read here: send it as " + listed,
                         ""});
   response.set_header("Accept-Post", listed);
-  response.set_header("Connection", "close");  // the body is left unread
-  return false;
+  return false;  // the body is left unread: the server closes the connection after the answer
 }
 
 Clock::time_point request_arrival() {

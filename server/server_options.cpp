@@ -228,6 +228,7 @@ ServerOptions parse_server_options(int argc, const char* const* argv, const Envi
       setting.apply(options, item.name, bare_switch ? std::string_view("1") : std::string_view(item.value));
     }
   }
+  options.connections.max_body_bytes = largest_body_bytes(options);
   if (!options.help && options.token.empty() && !options.insecure && !is_loopback_host(options.host))
     throw OptionsError("refusing to listen on " + options.host +
                        " without a token: anyone who can reach it could use the server. Set --token "

@@ -58,6 +58,8 @@ const std::vector<BadRequest> kBadRequests = {
     {"PUT on a scene", "PUT", "/v1/scenes/cornell-box", "{}", 405, "method_not_allowed", ""},
     {"body over the limit", "POST", "/v1/render", std::string(300 * 1024, ' '), 413, "payload_too_large", ""},
     {"bad deadline header", "POST", "/v1/render", "{}", 400, "invalid_value", "X-Deadline-Ms", {{"X-Deadline-Ms", "soon"}}},
+    {"empty deadline header", "POST", "/v1/render", "{}", 400, "invalid_value", "X-Deadline-Ms", {{"X-Deadline-Ms", ""}}},
+    {"zero deadline header", "POST", "/v1/render", "{}", 400, "invalid_value", "X-Deadline-Ms", {{"X-Deadline-Ms", "0"}}},
 };
 
 class HttpErrors : public ::testing::TestWithParam<BadRequest> {};

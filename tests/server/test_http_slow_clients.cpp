@@ -3,6 +3,7 @@
 // thread for long: they are answered 408 or 431 at their deadline or cap, connections past
 // the caps are answered 503, and /healthz answers on the main port throughout.
 #include "http_checks.hpp"
+#include "raw_connection.hpp"
 #include "server_process.hpp"
 
 #include <gtest/gtest.h>
@@ -26,54 +27,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// A connection to the server from `source` (any 127/8 address is loopback on Linux: a second
-// client address), or -1.
-int connect_to(int port, const char* source = "127.0.0.1") {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in from{};
-  from.sin_family = AF_INET;
-  inet_pton(AF_INET, source, &from.sin_addr);
-  sockaddr_in to{};
-  to.sin_family = AF_INET;
-  to.sin_port = htons(std::uint16_t(port));
-  inet_pton(AF_INET, "127.0.0.1", &to.sin_addr);
-  if (fd < 0 || bind(fd, reinterpret_cast<const sockaddr*>(&from), sizeof from) != 0 ||
-      connect(fd, reinterpret_cast<const sockaddr*>(&to), sizeof to) != 0) {
-    if (fd >= 0) close(fd);
-    return -1;
-  }
-  return fd;
-}
-
-bool send_all(int fd, const std::string& text) {
-  return send(fd, text.data(), text.size(), MSG_NOSIGNAL) == ssize_t(text.size());
-}
-
-// What the server answered on `fd` within `seconds` (until it closes or the time is up).
-std::string answer(int fd, double seconds) {
-  std::string text;
-  const auto start = Clock::now();
-  while (seconds_since(start) < seconds) {
-    pollfd p{fd, POLLIN, 0};
-    if (poll(&p, 1, 50) <= 0) continue;
-    char chunk[4096];
-    const ssize_t n = recv(fd, chunk, sizeof chunk, 0);
-    if (n <= 0) break;
-    text.append(chunk, std::size_t(n));
-  }
-  return text;
-}
-
-// The answer's status (0 when there is none) and its JSON error code ("" when it has none).
-std::pair<int, std::string> status_and_code(const std::string& text) {
-  if (text.rfind("HTTP/1.1 ", 0) != 0) return {0, ""};
-  const int status = std::stoi(text.substr(9, 3));
-  const auto body = text.find("\r\n\r\n");
-  if (body == std::string::npos) return {status, ""};
-  const auto json = nlohmann::json::parse(text.substr(body + 4), nullptr, false);
-  return {status, json.is_object() && json.contains("error") ? json["error"].value("code", "") : ""};
-}
 
 // The port of the server's "lpv-server health on http://host:PORT" line.
 int health_port(const ServerProcess& server) {
