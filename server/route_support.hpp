@@ -3,6 +3,8 @@
 // every outcome answered.
 #pragma once
 
+#include "server/fronted_server.hpp"
+
 #include "api/request_error.hpp"
 #include "server/http_errors.hpp"
 #include "server/limits.hpp"
@@ -31,13 +33,9 @@ struct Service {
   SceneStore& scenes;
 };
 
-// httplib compresses an answer whose content type is exactly "application/json" when the
-// client accepts brotli or gzip, as every browser does. An answer that carries base64
-// images gains about a third of its size for 40 ms (one 512^2 frame) to 140 ms (a compare)
-// of brotli, so those are sent as kImageJson: the same media type with a charset parameter,
-// which httplib leaves as it is.
+// JSON answers that carry base64 images are not compressed (server/fronted_server.hpp).
 inline constexpr const char* kJson = "application/json";
-inline constexpr const char* kImageJson = "application/json; charset=utf-8";
+inline constexpr const char* kImageJson = kUncompressedJson;
 
 void send_json(httplib::Response& response, const nlohmann::json& body, int status = 200,
                const char* content_type = kJson);

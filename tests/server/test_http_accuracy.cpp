@@ -33,7 +33,7 @@ TEST(HttpAccuracy, CompareAnswersBothImagesTheHeatMapAndTheMetrics) {
   const auto r = http->Post("/v1/compare", {{"Accept-Encoding", "br, gzip"}}, request.dump(), "application/json");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
-  EXPECT_EQ(r->get_header_value("Content-Type"), "application/json; charset=utf-8");
+  EXPECT_EQ(r->get_header_value("Content-Type"), "application/json") << "one media type for every JSON answer";
   EXPECT_EQ(r->get_header_value("Content-Encoding"), "") << "base64 images are sent uncompressed";
   const auto body = nlohmann::json::parse(r->body);
   for (const auto& image : {body["base"]["image"], body["other"]["image"], body["difference"]["image"]}) {
