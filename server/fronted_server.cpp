@@ -152,10 +152,9 @@ FrontedServer::FrontedServer(const ConnectionLimits& limits) : limits_(limits) {
   // The Keep-Alive header's timeout: the front closes a connection idle this long.
   set_keep_alive_timeout(std::max<time_t>(1, time_t(limits.keep_alive_timeout.count() / 1000)));
   // The wire type of uncompressed JSON (kUncompressedJson), and the one place that decides
-  // whether the connection outlives its answer (issue 43): an
-  // answer sent before its request's body was read to the end (a refusal, whatever refused
-  // it) says "Connection: close", and serve() closes it, so the unread body is never taken
-  // for the next request.
+  // whether the connection outlives its answer (issue 43): an answer sent before its
+  // request's body was read to the end (a refusal, whatever refused it) says "Connection:
+  // close", and serve() closes it, so the unread body is never taken for the next request.
   set_post_routing_handler([](const httplib::Request&, httplib::Response& response) {
     if (response.get_header_value("Content-Type") == kUncompressedJson) {
       response.headers.erase("Content-Type");
