@@ -53,6 +53,16 @@ std::string answer(int fd, double seconds, bool* closed) {
   return text;
 }
 
+std::string answers_until_quiet(int fd, double first_within, double quiet, bool* closed) {
+  bool ended = false;
+  std::string text;
+  for (double waited = 0.0; !ended && answers_in(text) == 0 && waited < first_within; waited += 0.1)
+    text += answer(fd, 0.1, &ended);
+  if (!ended) text += answer(fd, quiet, &ended);
+  if (closed) *closed = ended;
+  return text;
+}
+
 std::pair<int, std::string> status_and_code(const std::string& text) {
   if (text.rfind("HTTP/1.1 ", 0) != 0) return {0, ""};
   const int status = std::stoi(text.substr(9, 3));

@@ -18,6 +18,11 @@ bool send_all(int fd, const std::string& text);
 // was up; `closed` (when given) says which.
 std::string answer(int fd, double seconds, bool* closed = nullptr);
 
+// For a connection the server may keep open: what it sent until its first whole answer (at
+// most `first_within` seconds) and then for `quiet` seconds more, when a second answer would
+// have followed the first at once. `closed` (when given) says whether the server closed it.
+std::string answers_until_quiet(int fd, double first_within, double quiet, bool* closed = nullptr);
+
 // The first answer's status (0 when there is none) and its JSON error code ("" when it has none).
 std::pair<int, std::string> status_and_code(const std::string& text);
 

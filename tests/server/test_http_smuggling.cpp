@@ -42,15 +42,11 @@ std::string exchange(int port, const std::string& bytes, bool& closed, double se
 }
 
 // For a connection the server keeps: what came back until the first answer (at most 10 s,
-// however slow a loaded machine is) and for `then` seconds after it, when a second answer
-// would follow the first at once.
-std::string exchange_kept(int port, const std::string& bytes, bool& closed, double then = 1.0) {
+// however slow a loaded machine is) and for a second after it.
+std::string exchange_kept(int port, const std::string& bytes, bool& closed) {
   const int fd = connect_to(port);
   if (fd < 0 || !send_all(fd, bytes)) throw std::runtime_error("cannot send");
-  std::string text;
-  closed = false;
-  for (int i = 0; i < 100 && !closed && answers_in(text) == 0; ++i) text += answer(fd, 0.1, &closed);
-  if (!closed) text += answer(fd, then, &closed);
+  std::string text = answers_until_quiet(fd, 10.0, 1.0, &closed);
   close(fd);
   return text;
 }
