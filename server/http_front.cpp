@@ -222,10 +222,10 @@ class FrontLoop {
     const std::size_t from = w.scanned >= 3 ? w.scanned - 3 : 0;
     const std::size_t end = w.buffer.find("\r\n\r\n", from);
     const std::size_t limit = end == std::string::npos ? w.buffer.size() : end + 4;
-    // A head with bare LF line ends never shows a CRLF CRLF: refused at its first, not at its deadline.
-    if (find_bare_line_break(std::string_view(w.buffer).substr(0, limit), from) != std::string::npos) {
-      refuse_waiting(fd, {400, "bad_http_request",
-                          "a bare CR or LF in the request's head: its lines end with CRLF (RFC 9112, section 2.2)", ""});
+    // A head with bare LF line ends never shows a CRLF CRLF: refused at its first, not at its
+    // deadline. A head that has ended is checked whole by frame_request below.
+    if (end == std::string::npos && find_bare_line_break(w.buffer, from) != std::string::npos) {
+      refuse_waiting(fd, bare_line_break_refusal());
       return false;
     }
     for (std::size_t i = w.scanned; i < limit; ++i) w.lines += w.buffer[i] == '\n';

@@ -22,13 +22,13 @@ std::string_view trim(std::string_view text) {
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
-std::string lowercase(std::string_view text) {
-  std::string out(text);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return out;
+// Field names and codings are case-insensitive; compared in place, since every header line
+// of every request passes here.
+bool iequals(std::string_view a, std::string_view b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](unsigned char x, unsigned char y) {
+    return std::tolower(x) == std::tolower(y);
+  });
 }
-
-bool iequals(std::string_view a, std::string_view b) { return a.size() == b.size() && lowercase(a) == lowercase(b); }
 
 // A comma-separated list's elements, trimmed, the empty ones dropped (RFC 9110, section 5.6.1).
 std::vector<std::string_view> list_elements(std::string_view value) {
@@ -70,9 +70,12 @@ std::size_t find_bare_line_break(std::string_view bytes, std::size_t from) {
   return std::string_view::npos;
 }
 
+HttpError bare_line_break_refusal() {
+  return bad_request("a bare CR or LF in the request's head: its lines end with CRLF (RFC 9112, section 2.2)");
+}
+
 std::variant<FramedHead, HttpError> frame_request(std::string_view head, std::uint64_t max_body_bytes) {
-  if (find_bare_line_break(head, 0) != std::string_view::npos)
-    return bad_request("a bare CR or LF in the request's head: its lines end with CRLF (RFC 9112, section 2.2)");
+  if (find_bare_line_break(head, 0) != std::string_view::npos) return bare_line_break_refusal();
   if (head.find('\0') != std::string_view::npos) return bad_request("a NUL byte in the request's head");
 
   const std::size_t request_line_end = head.find("\r\n");

@@ -35,6 +35,10 @@ struct FramedHead {
 // `max_body_bytes`: the largest body any route takes; a longer Content-Length is 413.
 std::variant<FramedHead, HttpError> frame_request(std::string_view head, std::uint64_t max_body_bytes);
 
+// The refusal of a head with a bare CR or LF: frame_request's, and the front's for a head
+// that has not ended yet (with bare LF line ends it never shows a CRLF CRLF).
+HttpError bare_line_break_refusal();
+
 // The position of a bare CR or LF (one not part of a CRLF) in `bytes[from, bytes.size())`, or
 // npos. A CR at the very end is not bare yet: its LF may be the next byte to arrive.
 std::size_t find_bare_line_break(std::string_view bytes, std::size_t from);

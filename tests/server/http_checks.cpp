@@ -1,5 +1,7 @@
 #include "http_checks.hpp"
 
+#include "raw_connection.hpp"
+
 #include "core/base64.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -112,19 +114,13 @@ std::string base64_decode(const std::string& text) {
 }
 
 std::string send_raw(int port, const std::string& bytes, int answer_timeout_s) {
-  const int fd = socket(AF_INET, SOCK_STREAM, 0);
-  if (fd < 0) throw std::runtime_error("send_raw: no socket");
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(std::uint16_t(port));
-  inet_pton(AF_INET, "127.0.0.1", &address.sin_addr);
-  const timeval wait{answer_timeout_s, 0};
-  setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof(wait));
-  if (connect(fd, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) != 0 ||
-      send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL) != ssize_t(bytes.size())) {
-    close(fd);
+  const int fd = connect_to(port);
+  if (fd < 0 || !send_all(fd, bytes)) {
+    if (fd >= 0) close(fd);
     throw std::runtime_error("send_raw: could not send the request to port " + std::to_string(port));
   }
+  const timeval wait{answer_timeout_s, 0};
+  setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof(wait));
   std::string answer;
   if (answer_timeout_s > 0) {
     char buffer[256];
