@@ -12,6 +12,7 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_shuffle : require
+#extension GL_KHR_shader_subgroup_ballot : require
 
 // The device runs only the taken side of a branch every lane of a subgroup agrees on
 // (DeviceInfo::uniform_branches): the lookup below shares its cells between lanes only then.
@@ -33,9 +34,18 @@ float in_front(ivec3 cell, vec3 surface, vec3 n) {
 
 // Corner k of set A or of set B, whichever this lane filters. Every lane shuffles both, and
 // only then chooses: a shuffle reads the value of a lane that runs it, and a lane that took
-// the other side of a branch would not.
-vec4 shared_corner(vec4 of_a, vec4 of_b, uint k, bool in_a) {
-  vec4 a = subgroupShuffle(of_a, k), b = subgroupShuffle(of_b, k);
+// the other side of a branch would not. `two_sets` is the same in every lane: where all filter
+// set A (most subgroups: a cell spans many pixels), set B is neither loaded nor shuffled.
+vec4 shared_corner(vec4 of_a, vec4 of_b, uint k, bool in_a, bool two_sets) {
+  vec4 a = subgroupShuffle(of_a, k);
+  if (!two_sets) return a;
+  vec4 b = subgroupShuffle(of_b, k);
+  return in_a ? a : b;
+}
+vec3 shared_corner(vec3 of_a, vec3 of_b, uint k, bool in_a, bool two_sets) {
+  vec3 a = subgroupShuffle(of_a, k);
+  if (!two_sets) return a;
+  vec3 b = subgroupShuffle(of_b, k);
   return in_a ? a : b;
 }
 
@@ -47,24 +57,25 @@ vec3 cell_irradiance(vec4 red, vec4 green, vec4 blue, vec4 lobe) {
               dot(sh_nonnegative_irradiance(blue), lobe));
 }
 
-// The gather's irradiance cubes of the 8 cells from `low` to `high` in cascade c onto a surface
-// with normal n, weighted: each cell's three axes the normal faces, blended by the squares of
-// its components (exact for a normal along an axis; the weights sum to 1).
-vec3 cube_irradiance(uint c, ivec3 low, ivec3 high, float weight[8], vec3 n) {
-  GpuLpvCascade g = lpv.cascades[c];
-  vec3 n2 = n * n;
-  vec3 e = vec3(0.0);
-  for (uint corner = 0u; corner < 8u; ++corner) {
-    int cell = 2 * lpv_accumulated_texel(mix(low, high, corner_step(corner)), c, g.dims.xyz);
-    vec4 r_xy = imageLoad(accumulated_r, cell), g_xy = imageLoad(accumulated_g, cell), b_xy = imageLoad(accumulated_b, cell);
-    vec4 r_z = imageLoad(accumulated_r, cell + 1), g_z = imageLoad(accumulated_g, cell + 1), b_z = imageLoad(accumulated_b, cell + 1);
-    vec3 along_x = n.x >= 0.0 ? vec3(r_xy.x, g_xy.x, b_xy.x) : vec3(r_xy.y, g_xy.y, b_xy.y);
-    vec3 along_y = n.y >= 0.0 ? vec3(r_xy.z, g_xy.z, b_xy.z) : vec3(r_xy.w, g_xy.w, b_xy.w);
-    vec3 along_z = n.z >= 0.0 ? vec3(r_z.x, g_z.x, b_z.x) : vec3(r_z.y, g_z.y, b_z.y);
-    e += weight[corner] * (n2.x * along_x + n2.y * along_y + n2.z * along_z);
-  }
-  return e;
+// The light of one cell's irradiance cube (lpv_gather.h) along the three axes a surface with
+// normal n faces, per channel: the two texels a channel holds, +x, -x, +y, -y then +z, -z.
+struct CubeAxes {
+  vec3 x, y, z;
+};
+CubeAxes facing_axes(int texel, vec3 n) {
+  vec4 r_xy = imageLoad(accumulated_r, 2 * texel), g_xy = imageLoad(accumulated_g, 2 * texel),
+       b_xy = imageLoad(accumulated_b, 2 * texel);
+  vec4 r_z = imageLoad(accumulated_r, 2 * texel + 1), g_z = imageLoad(accumulated_g, 2 * texel + 1),
+       b_z = imageLoad(accumulated_b, 2 * texel + 1);
+  CubeAxes axes;
+  axes.x = n.x >= 0.0 ? vec3(r_xy.x, g_xy.x, b_xy.x) : vec3(r_xy.y, g_xy.y, b_xy.y);
+  axes.y = n.y >= 0.0 ? vec3(r_xy.z, g_xy.z, b_xy.z) : vec3(r_xy.w, g_xy.w, b_xy.w);
+  axes.z = n.z >= 0.0 ? vec3(r_z.x, g_z.x, b_z.x) : vec3(r_z.y, g_z.y, b_z.y);
+  return axes;
 }
+// The cube's irradiance onto the surface: its axes blended by the squares of the normal's
+// components, n2 (exact for a normal along an axis; the weights sum to 1).
+vec3 cube_irradiance(CubeAxes axes, vec3 n2) { return n2.x * axes.x + n2.y * axes.y + n2.z * axes.z; }
 
 // The mean radiance (W/(m^2 sr)) a cell of cascade c holds: the intensity per unit face area of
 // its SH's constant term, or its irradiance cube's mean over pi (an isotropic radiance L gives
@@ -99,8 +110,9 @@ vec3 cell_mean_radiance(uint c, ivec3 cell) {
 // Neighbouring pixels mostly filter the same 8 cells (a cell spans many pixels), or one of two
 // sets of 8 where the subgroup's pixels straddle a cell's boundary. When every lane of the
 // subgroup filters set A or set B (the lowest corners of the subgroup's smallest and largest
-// texel index) and all lanes run, lane k loads corner k mod 8 of both sets and every lane
-// takes its 8 corners from them by shuffles: 6 texel loads a lane instead of 24. lavapipe runs
+// texel index) and all lanes run, lane k loads corner k mod 8 of both sets (of set A alone
+// where every lane filters it) and every lane takes its 8 corners from them by shuffles: 3 to
+// 6 texel loads a lane instead of 24 for SH, 6 to 12 instead of 48 for a cube. lavapipe runs
 // a texel load as a call over the lanes, a shuffle by a constant lane as one permute, and
 // branches for real on a condition every lane shares (Mesa 25). A device that runs both sides
 // of such a branch (lavapipe before Mesa 25: the forward pass 2.3 times slower on 22.3) would
@@ -114,6 +126,7 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   vec3 f = t - vec3(low);
   ivec3 high = min(low + 1, last);
   vec4 lobe = sh_cosine_lobe(-n);
+  vec3 n2 = n * n;
   // Each corner's weight: trilinear, times the part of its cell in front of the surface.
   vec3 surface = q - 0.5 * n;
   float weight[8];
@@ -123,7 +136,6 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     weight[corner] = (w3.x * w3.y * w3.z) * in_front(mix(low, high, corner_step(corner)), surface, n);
     total += weight[corner];
   }
-  if (IRRADIANCE_CUBE) return max(cube_irradiance(c, low, high, weight, n), vec3(0.0)) / (max(total, 1e-6) * g.origin.w * g.origin.w);
   vec3 e = vec3(0.0);
   int key = lpv_accumulated_texel(low, c, g.dims.xyz);
   int key_a = key, key_b = key;
@@ -133,28 +145,61 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     // all run the subgroup operations after it.
     key_a = subgroupMin(key);
     key_b = subgroupMax(key);
-    shared_cells = gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize && subgroupAll(key == key_a || key == key_b);
+    uvec3 octant = uvec3(greaterThanEqual(n, vec3(0.0)));
+    shared_cells = gl_SubgroupSize >= 8u && subgroupAdd(1u) == gl_SubgroupSize && subgroupAll(key == key_a || key == key_b) &&
+                   (!IRRADIANCE_CUBE || subgroupAll(octant == subgroupBroadcastFirst(octant)));
   }
   if (shared_cells) {
+    bool two_sets = key_a != key_b;
+    bool in_a = key == key_a;
     ivec3 low_a = subgroupShuffle(low, subgroupMin(key == key_a ? gl_SubgroupInvocationID : gl_SubgroupSize));
     ivec3 low_b = subgroupShuffle(low, subgroupMin(key == key_b ? gl_SubgroupInvocationID : gl_SubgroupSize));
     bvec3 step = corner_step(gl_SubgroupInvocationID & 7u);
     int mine_a = lpv_accumulated_texel(mix(low_a, min(low_a + 1, last), step), c, g.dims.xyz);
     int mine_b = lpv_accumulated_texel(mix(low_b, min(low_b + 1, last), step), c, g.dims.xyz);
-    vec4 red_a = imageLoad(accumulated_r, mine_a), green_a = imageLoad(accumulated_g, mine_a),
-         blue_a = imageLoad(accumulated_b, mine_a);
-    vec4 red_b = imageLoad(accumulated_r, mine_b), green_b = imageLoad(accumulated_g, mine_b),
-         blue_b = imageLoad(accumulated_b, mine_b);
-    bool in_a = key == key_a;
-    for (uint corner = 0u; corner < 8u; ++corner)
-      e += weight[corner] * cell_irradiance(shared_corner(red_a, red_b, corner, in_a),
-                                            shared_corner(green_a, green_b, corner, in_a),
-                                            shared_corner(blue_a, blue_b, corner, in_a), lobe);
+    if (IRRADIANCE_CUBE) {
+      // Every lane's normal faces the same octant (the condition of shared_cells), so the lane
+      // that loads a corner picks the axes each lane would. Where the lanes share one normal too
+      // (a flat surface), it blends them for all: 3 values a corner shuffled instead of 9.
+      CubeAxes a = facing_axes(mine_a, n), b = a;
+      if (two_sets) b = facing_axes(mine_b, n);
+      if (subgroupAll(n == subgroupBroadcastFirst(n))) {
+        vec3 blended_a = cube_irradiance(a, n2), blended_b = blended_a;
+        if (two_sets) blended_b = cube_irradiance(b, n2);
+        for (uint corner = 0u; corner < 8u; ++corner)
+          e += weight[corner] * shared_corner(blended_a, blended_b, corner, in_a, two_sets);
+      } else {
+        for (uint corner = 0u; corner < 8u; ++corner) {
+          CubeAxes axes;
+          axes.x = shared_corner(a.x, b.x, corner, in_a, two_sets);
+          axes.y = shared_corner(a.y, b.y, corner, in_a, two_sets);
+          axes.z = shared_corner(a.z, b.z, corner, in_a, two_sets);
+          e += weight[corner] * cube_irradiance(axes, n2);
+        }
+      }
+    } else {
+      vec4 red_a = imageLoad(accumulated_r, mine_a), green_a = imageLoad(accumulated_g, mine_a),
+           blue_a = imageLoad(accumulated_b, mine_a);
+      vec4 red_b = red_a, green_b = green_a, blue_b = blue_a;
+      if (two_sets) {
+        red_b = imageLoad(accumulated_r, mine_b);
+        green_b = imageLoad(accumulated_g, mine_b);
+        blue_b = imageLoad(accumulated_b, mine_b);
+      }
+      for (uint corner = 0u; corner < 8u; ++corner)
+        e += weight[corner] * cell_irradiance(shared_corner(red_a, red_b, corner, in_a, two_sets),
+                                              shared_corner(green_a, green_b, corner, in_a, two_sets),
+                                              shared_corner(blue_a, blue_b, corner, in_a, two_sets), lobe);
+    }
   } else {
     for (uint corner = 0u; corner < 8u; ++corner) {
       int cell = lpv_accumulated_texel(mix(low, high, corner_step(corner)), c, g.dims.xyz);
-      e += weight[corner] * cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell),
-                                            imageLoad(accumulated_b, cell), lobe);
+      if (IRRADIANCE_CUBE) {
+        e += weight[corner] * cube_irradiance(facing_axes(cell, n), n2);
+      } else {
+        e += weight[corner] * cell_irradiance(imageLoad(accumulated_r, cell), imageLoad(accumulated_g, cell),
+                                              imageLoad(accumulated_b, cell), lobe);
+      }
     }
   }
   return max(e, vec3(0.0)) / (max(total, 1e-6) * g.origin.w * g.origin.w);
