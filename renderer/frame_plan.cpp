@@ -190,6 +190,41 @@ bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const 
   return false;
 }
 
+namespace {
+
+// Whether some corner of box b lies in front of the plane (n, w): beyond `tolerance`, on
+// either side for a double-sided surface.
+bool reaches_in_front(const scene::Bounds& b, glm::vec4 plane, bool double_sided, float tolerance) {
+  for (int i = 0; i < 8; ++i) {
+    const glm::vec3 corner(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y, i & 4 ? b.max.z : b.min.z);
+    const float height = glm::dot(glm::vec3(plane), corner) - plane.w;
+    if (height > tolerance || (double_sided && height < -tolerance)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool surfaces_may_light_each_other(const scene::Scene& scene) {
+  const std::size_t n = scene.draws.size();
+  if (n > kMaxShadowTestDraws || scene.draw_planar.size() != n || scene.draw_plane.size() != n ||
+      scene.draw_bounds.size() != n)
+    return true;
+  if (!std::all_of(scene.draw_planar.begin(), scene.draw_planar.end(), [](bool planar) { return planar; })) return true;
+  // Within a millionth of the scene's extent of a plane is on it (scene::Scene::draw_planar's).
+  const float tolerance = 1e-6f * glm::length(scene.bounds.max - scene.bounds.min);
+  auto double_sided = [&](std::size_t d) {
+    const std::uint32_t m = scene.draws[d].material;
+    return m < scene.materials.size() && scene.materials[m].double_sided;
+  };
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n; ++b)
+      if (reaches_in_front(scene.draw_bounds[b], scene.draw_plane[a], double_sided(a), tolerance) &&
+          reaches_in_front(scene.draw_bounds[a], scene.draw_plane[b], double_sided(b), tolerance))
+        return true;
+  return false;
+}
+
 scene::Bounds lpv_region(const scene::Scene& scene, const std::vector<bool>& seen,
                          const std::vector<api::Light>& lights, const std::vector<bool>& light_drawn) {
   return draws_bounds(scene, [&](std::size_t d) {
@@ -263,6 +298,9 @@ FramePlan plan_frame(const PlanInputs& in) {
     lpv_reason = "no light reaches the scene and no surface is emissive";
   else if (!vpls)
     lpv_reason = "every albedo is 0: nothing reflects light, and no surface is emissive";
+  else if (view != api::View::lpv && api::plan_applies(request, api::PlanRule::surfaces) &&
+           !surfaces_may_light_each_other(in.scene))
+    lpv_reason = "no surface can light another: every one is planar and none lies in front of another";
   for (Pass p : {kRsm, kInject, kGeometryVolume, kPropagate, kGather}) plan.reason[p] = lpv_reason;
   // Black surfaces still block light: their RSM stays when it is a source of occluders.
   const bool rsm_occludes = request.lpv.occlusion && request.lpv.occlusion_from_rsm;

@@ -99,6 +99,14 @@ std::string light_misses(const api::Light& light, const scene::Bounds& bounds);
 // `seen`: draw_seen() of the frame's camera.
 bool may_cast_shadows(const scene::Scene& scene, const api::Light& light, const std::vector<bool>& seen);
 
+// Whether light reflected or emitted by one surface can reach another: not when every draw
+// is planar and, of every two, one lies wholly on or behind the other's plane (a one-sided
+// surface, emitting or reflecting, lights only what is in front of it, and is lit only from
+// there; a double-sided one has two fronts). A lone plane, or a convex solid seen from
+// outside: its true indirect light is exactly 0. By the draws' bounds, so "may"; scenes of
+// more than kMaxShadowTestDraws draws may.
+bool surfaces_may_light_each_other(const scene::Scene& scene);
+
 // Per draw, whether its bounds may be inside the frustum of `view_proj` (Vulkan clip space).
 std::vector<bool> draws_seen(const scene::Scene& scene, const glm::mat4& view_proj);
 inline constexpr std::size_t kMaxShadowTestDraws = 256;

@@ -3,14 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace scene {
 
 namespace {
 
-// Whether every vertex of the draw lies within a millionth of its extent of the plane of
-// its first triangle with an area.
-bool planar(const Scene& s, const Draw& d, const Bounds& b) {
+// The plane of the draw's first triangle with an area (unit normal, offset: n.p = w) when
+// every vertex of the draw lies within a millionth of its extent of it, zero when no
+// triangle has an area; nothing when the draw is not planar.
+std::optional<glm::vec4> plane_of(const Scene& s, const Draw& d, const Bounds& b) {
   const float tolerance = 1e-6f * glm::length(b.max - b.min);
   glm::vec3 origin(0.0f), normal(0.0f);
   const std::uint32_t end = std::min<std::uint32_t>(d.first_index + d.index_count, std::uint32_t(s.indices.size()));
@@ -23,8 +25,8 @@ bool planar(const Scene& s, const Draw& d, const Bounds& b) {
   }
   for (std::uint32_t i = d.first_index; i < end; ++i)
     if (s.indices[i] < s.vertices.size() && std::abs(glm::dot(s.vertices[s.indices[i]].position - origin, normal)) > tolerance)
-      return false;
-  return true;
+      return std::nullopt;
+  return glm::vec4(normal, glm::dot(normal, origin));
 }
 
 }  // namespace
@@ -32,6 +34,7 @@ bool planar(const Scene& s, const Draw& d, const Bounds& b) {
 void Scene::update_bounds() {
   draw_bounds.clear();
   draw_planar.clear();
+  draw_plane.clear();
   for (const Draw& d : draws) {
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
     for (std::uint32_t i = d.first_index; i < d.first_index + d.index_count && i < indices.size(); ++i) {
@@ -40,7 +43,9 @@ void Scene::update_bounds() {
       hi = glm::max(hi, vertices[indices[i]].position);
     }
     draw_bounds.push_back(lo.x <= hi.x ? Bounds{lo, hi} : Bounds{});
-    draw_planar.push_back(planar(*this, d, draw_bounds.back()));
+    const std::optional<glm::vec4> plane = plane_of(*this, d, draw_bounds.back());
+    draw_planar.push_back(plane.has_value());
+    draw_plane.push_back(plane.value_or(glm::vec4(0.0f)));
   }
   if (vertices.empty()) {
     bounds = {};

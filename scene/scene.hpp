@@ -72,6 +72,9 @@ struct Scene {
   Bounds bounds;       // of the geometry; recompute with update_bounds() after edits
   std::vector<Bounds> draw_bounds;  // per draw, made by update_bounds() too
   std::vector<bool> draw_planar;    // per draw: all its triangles in one plane (cannot shadow itself)
+  // Per planar draw, that plane: unit normal (its first triangle's winding) and offset, n.p = w;
+  // zero for a draw without a triangle with an area, or one that is not planar.
+  std::vector<glm::vec4> draw_plane;
   // What the loader ignored (unsupported optional features); every render's stats repeat them.
   std::vector<std::string> warnings;
 

@@ -137,6 +137,47 @@ TEST(MayCastShadows, OnlyWithSomethingBetweenTheLightAndWhatIsSeen) {
       << "nothing seen: nothing to shadow";
 }
 
+// The six faces of a cube around the origin, 2 m a side, facing out (a convex solid) or in
+// (a closed room). A material each: the builder joins quads of one material into one draw.
+scene::Scene cube_of_quads(bool facing_out, bool double_sided = false) {
+  scene::SceneBuilder b(facing_out ? "cube" : "room");
+  for (int axis = 0; axis < 3; ++axis)
+    for (float side : {-1.0f, 1.0f}) {
+      scene::Material white{"white", glm::vec3(0.8f), {}};
+      white.double_sided = double_sided;
+      glm::vec3 n(0.0f);
+      n[axis] = side;
+      b.add_facing_quad(n, facing_out ? n : -n, 2.0f, b.add_material(white));
+    }
+  return b.build();
+}
+
+TEST(SurfacesMayLightEachOther, NotALonePlaneNorAConvexSolid) {
+  EXPECT_FALSE(renderer::surfaces_may_light_each_other(*scene::make_builtin_scene("lone-plane")));
+  EXPECT_FALSE(renderer::surfaces_may_light_each_other(cube_of_quads(true))) << "each face is behind the others";
+  EXPECT_TRUE(renderer::surfaces_may_light_each_other(cube_of_quads(false))) << "a room's walls face each other";
+  EXPECT_TRUE(renderer::surfaces_may_light_each_other(cube_of_quads(true, true)))
+      << "double-sided faces light each other from inside";
+  for (const scene::BuiltinSceneInfo& info : scene::builtin_scenes()) {
+    if (info.name == "lone-plane") continue;
+    EXPECT_TRUE(renderer::surfaces_may_light_each_other(*scene::make_builtin_scene(info.name))) << info.name;
+  }
+
+  // A floor and a ceiling facing it; the ceiling turned away, and nothing faces anything.
+  scene::SceneBuilder b("floor and ceiling");
+  b.add_facing_quad({0, 0, 0}, {0, 1, 0}, 4.0f, b.add_material({"floor", glm::vec3(0.8f), {}}));
+  scene::SceneBuilder turned = b;
+  b.add_facing_quad({0, 3, 0}, {0, -1, 0}, 4.0f, b.add_material({"ceiling", glm::vec3(0.8f), {}}));
+  EXPECT_TRUE(renderer::surfaces_may_light_each_other(b.build()));
+  turned.add_facing_quad({0, 3, 0}, {0, 1, 0}, 4.0f, turned.add_material({"ceiling", glm::vec3(0.8f), {}}));
+  EXPECT_FALSE(renderer::surfaces_may_light_each_other(turned.build()));
+  // A block (not planar) may light the floor it stands on.
+  b = scene::SceneBuilder("floor and block");
+  b.add_facing_quad({0, 0, 0}, {0, 1, 0}, 4.0f, b.add_material({"white", glm::vec3(0.8f), {}}));
+  b.add_box({0, 0, 0}, glm::vec3(0.5f), 0.0f, 0);
+  EXPECT_TRUE(renderer::surfaces_may_light_each_other(b.build()));
+}
+
 TEST(CascadesNeeded, UpToTheFirstThatHoldsTheSceneClearOfItsBorderBand) {
   std::vector<renderer::CascadePlacement> cascades(3);
   for (std::uint32_t c = 0; c < 3; ++c) {

@@ -151,6 +151,33 @@ TEST_F(Planner, BlackSurfacesSkipTheLpvAndChangeNothing) {
   EXPECT_EQ(automatic.linear.pixels, exact.linear.pixels);
 }
 
+// A lone plane cannot light itself: its true indirect light is exactly 0. The gather,
+// run anyway ("exact"), gets nearly that, at the cost of the whole LPV.
+TEST_F(Planner, SurfacesThatCannotLightEachOtherSkipTheLpv) {
+  const scene::Scene plane = *scene::make_builtin_scene("lone-plane");
+  api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
+  a.lpv.transfer = e.lpv.transfer = api::Transfer::gather;
+  a.lpv.grid = e.lpv.grid = glm::uvec3(16);
+  auto& r = gpu_test::renderer();
+  const auto automatic = r.render(plane, a, renderer::kReadbackLinear);
+  const auto exact = r.render(plane, e, renderer::kReadbackLinear);
+  for (const char* name : {"rsm", "inject", "geometry_volume", "gather"}) {
+    EXPECT_FALSE(pass(automatic, name).ran) << name;
+    EXPECT_EQ(pass(automatic, name).gpu_ms.median, 0.0) << name;
+    EXPECT_EQ(pass(automatic, name).reason, "no surface can light another: every one is planar and none lies in front of another");
+    EXPECT_TRUE(pass(exact, name).ran) << name;
+  }
+  EXPECT_GT(brightest(exact.linear), 0.0f);
+  EXPECT_LE(largest_difference(automatic.linear, exact.linear), 0.01f * brightest(exact.linear))
+      << "the gather's indirect light on the plane is nearly 0 too";
+
+  a.output.view = e.output.view = api::View::indirect;
+  EXPECT_EQ(brightest(r.render(plane, a, renderer::kReadbackLinear).linear), 0.0f);
+  // The LPV view shows the light in the grid's cells, which the plane does fill.
+  a.output.view = api::View::lpv;
+  EXPECT_TRUE(pass(r.render(plane, a, renderer::kReadbackLinear), "gather").ran);
+}
+
 TEST_F(Planner, CascadesBeyondOneThatHoldsTheSceneAreSkippedAndChangeNothing) {
   api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
   for (api::RenderRequest* r : {&a, &e}) {
