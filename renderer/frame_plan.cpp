@@ -382,6 +382,15 @@ LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene
       lpv.settings.grid = shaped;
     }
   }
+  // The gather carries the injected light once, to every cell: a second bounce would be a
+  // second gather from the lit surfaces, which it does not do (yet). Said, not done silently;
+  // the geometry volume then skips the blockers' albedo, which only propagation reflects.
+  if (plan.run[kGather] && request.lpv.bounces > 1) {
+    plan.decisions.push_back("lpv.bounces " + std::to_string(request.lpv.bounces) +
+                             ": 1 ran, the gather carries one bounce (transfer \"sharpened\" or \"cosine\" "
+                             "reflects a second as it propagates)");
+    lpv.settings.bounces = 1;
+  }
   lpv.setup = fit();
 
   if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm]) {

@@ -208,6 +208,26 @@ std::string decision(const renderer::RenderResult& r, const std::string& prefix)
 // the sun-lit galleries seen at 256^2 need 2048 texels a side for a texel of half a pixel,
 // the Cornell box's spot 512 (nothing said); a request that names one gets it, and the same
 // picture as the chosen one when it names that.
+// A second bounce is reflected by propagation; the gather says it does not run one, and
+// renders what one bounce gives, without paying for the blockers' albedo.
+TEST_F(Planner, TheGatherSaysItRunsOneBounce) {
+  api::RenderRequest one = request(api::PlanMode::auto_);
+  one.lpv.transfer = api::Transfer::gather;
+  one.lpv.grid = glm::uvec3(12);
+  api::RenderRequest two = one;
+  two.lpv.bounces = 2;
+  auto& r = gpu_test::renderer();
+  const auto single = r.render(one, renderer::kReadbackLinear);
+  const auto asked_two = r.render(two, renderer::kReadbackLinear);
+  EXPECT_EQ(decision(single, "lpv.bounces"), "");
+  EXPECT_EQ(decision(asked_two, "lpv.bounces"),
+            "lpv.bounces 2: 1 ran, the gather carries one bounce (transfer \"sharpened\" or \"cosine\" reflects a "
+            "second as it propagates)");
+  EXPECT_EQ(single.linear.pixels, asked_two.linear.pixels);
+  two.lpv.transfer = api::Transfer::sharpened;
+  EXPECT_EQ(decision(r.render(two, renderer::kReadbackLinear), "lpv.bounces"), "") << "propagation reflects it";
+}
+
 TEST_F(Planner, ShadowMapsWithoutAResolutionGetTheFramesOwn) {
   api::RenderRequest gallery;
   gallery.scene = "gallery-court";
