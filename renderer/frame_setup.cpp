@@ -16,8 +16,6 @@ namespace {
 // Spots up to this half-angle get one perspective map; wider ones a cube, since a
 // perspective projection degenerates as its field of view approaches 180 degrees.
 constexpr float kMaxSingleMapConeDeg = 60.0f;
-// The normal offset of a shadow lookup, in shadow texels.
-constexpr float kNormalOffsetTexels = 1.5f;
 
 glm::vec3 any_perpendicular_up(glm::vec3 dir) {
   return std::abs(dir.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
@@ -147,10 +145,11 @@ LightSetup setup_lights(const std::vector<api::Light>& lights, std::vector<Light
     if (g.info.z == 0) g.info.y = static_cast<std::uint32_t>(setup.shadow_views.size());
     g.info.z += 1;  // 1 map, or 6 for a cube
     setup.shadow_views.push_back(view.view_proj);
-    // Normal offset of the lookups: about a texel and a half, per metre of distance for
-    // perspective maps; a cube face's corner texels are up to sqrt(3) times its centre's.
+    // A texel's side at the receiver, which the lookups measure their offsets in
+    // (direct_light.glsl): per metre of distance for perspective maps; a cube face's corner
+    // texels are up to sqrt(3) times its centre's.
     const float cube_corner = g.info.z == 6 ? std::sqrt(3.0f) : 1.0f;  // the cube's last face sets it
-    g.params.z = kNormalOffsetTexels * view.half_extent * texel * cube_corner;
+    g.params.z = view.half_extent * texel * cube_corner;
   }
   return setup;
 }

@@ -199,6 +199,34 @@ Scene lone_plane() {
   return b.build();
 }
 
+// Sunlight through openings: a 12 x 8 m hall, 5 m high, of one-sided walls and ceiling (seen
+// from inside, nothing behind them), a low sun entering through three tall windows in the
+// wall it stands behind. Where the ceiling meets the walls, a shadow map's texel can reach
+// past the roof's edge into the empty space beyond: the seams must stay dark.
+Scene sunlit_hall() {
+  SceneBuilder b("sunlit-hall");
+  const auto floor = b.add_material({"floor", {0.55f, 0.5f, 0.45f}, {}});
+  const auto plaster = b.add_material({"plaster", {0.8f, 0.78f, 0.72f}, {}});
+  const glm::vec3 lo(-6.0f, 0.0f, -4.0f), hi(6.0f, 5.0f, 4.0f);
+  b.add_quad({lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, lo.y, lo.z}, {lo.x, lo.y, lo.z}, floor);
+  b.add_quad({lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}, plaster);  // ceiling
+  b.add_quad({lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}, plaster);  // back, -z
+  b.add_quad({lo.x, lo.y, hi.z}, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, hi.z}, plaster);  // -x
+  b.add_quad({hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {hi.x, hi.y, lo.z}, plaster);  // +x
+  // The window wall (+z, facing -z): a sill strip, a lintel strip and the piers between three
+  // windows 1.6 m wide from 1 m to 4 m.
+  auto window_wall = [&](float x0, float x1, float y0, float y1) {
+    b.add_quad({x1, y0, hi.z}, {x0, y0, hi.z}, {x0, y1, hi.z}, {x1, y1, hi.z}, plaster);
+  };
+  window_wall(lo.x, hi.x, 0.0f, 1.0f);
+  window_wall(lo.x, hi.x, 4.0f, hi.y);
+  for (const glm::vec2 pier : {glm::vec2(-6.0f, -4.8f), glm::vec2(-3.2f, -0.8f), glm::vec2(0.8f, 3.2f), glm::vec2(4.8f, 6.0f)})
+    window_wall(pier.x, pier.y, 1.0f, 4.0f);
+  b.add_light(sun(30.0f, {0.25f, -1.0f}, 3.0f));
+  b.set_camera(camera_at({-5.2f, 3.2f, 3.4f}, {1.5f, 1.6f, -4.0f}, 65.0f));
+  return b.build();
+}
+
 struct Entry {
   BuiltinSceneInfo info;
   std::function<Scene()> make;
@@ -214,6 +242,7 @@ const std::vector<Entry>& registry() {
       {{"open-court", "a 16 m court with a large floor under a low sun (self-illumination)"}, open_court},
       {{"gallery-court", "a court with roofed galleries under a low sun (ceilings lit by bounces alone)"}, gallery_court},
       {{"lone-plane", "one 20 m plane alone under a sun; its true indirect light is zero"}, lone_plane},
+      {{"sunlit-hall", "a hall of one-sided walls and ceiling, a low sun through three tall windows (seams)"}, sunlit_hall},
   };
   return entries;
 }

@@ -19,7 +19,7 @@ layout(constant_id = 4) const uint TONE_CURVE = TONEMAP_NONE;
 layout(constant_id = 5) const uint CASCADES = 0u;  // of indirect light; 0: none
 
 layout(std140, set = 0, binding = CAMERA_FRAME) uniform Frame { GpuFrame frame; };
-layout(set = 0, binding = FORWARD_SHADOW_MAPS) uniform sampler2DArrayShadow shadow_maps;
+layout(set = 0, binding = FORWARD_SHADOW_MAPS) uniform sampler2DArray shadow_maps;
 // Uniform buffers, not storage buffers: lavapipe loads a fragment shader's storage buffer lane
 // by lane even at an address all lanes share, a uniform buffer once (the pass 5.8 -> 5.1 ms
 // at 512^2). The buffers are sized for the most lights and views a frame may have.

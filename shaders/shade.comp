@@ -33,7 +33,7 @@ layout(std140, set = 0, binding = SHADE_FRAME) uniform Frame { GpuFrame frame; }
 layout(set = 0, binding = SHADE_G_POSITION, rgba32f) uniform readonly image2D g_position;
 layout(set = 0, binding = SHADE_G_NORMAL, rgba16f) uniform readonly image2D g_normal;
 layout(set = 0, binding = SHADE_G_ALBEDO, rgba16f) uniform readonly image2D g_albedo;
-layout(set = 0, binding = SHADE_SHADOW_MAPS) uniform sampler2DArrayShadow shadow_maps;
+layout(set = 0, binding = SHADE_SHADOW_MAPS) uniform sampler2DArray shadow_maps;
 layout(std430, set = 0, binding = SHADE_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
 layout(std430, set = 0, binding = SHADE_SHADOW_VIEWS) readonly buffer ShadowViews { mat4 shadow_view_proj[]; };
 layout(std430, set = 0, binding = SHADE_MATERIALS) readonly buffer Materials { GpuMaterial materials[]; };

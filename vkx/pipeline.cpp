@@ -134,7 +134,6 @@ Pipeline::Pipeline(const Device& device, const PipelineLayoutDesc& layout, const
     raster.polygonMode = VK_POLYGON_MODE_FILL;
     raster.cullMode = g.cull_mode;
     raster.frontFace = g.front_face;
-    raster.depthBiasEnable = g.depth_bias ? VK_TRUE : VK_FALSE;
     raster.lineWidth = 1.0f;
     VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
     multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
@@ -148,7 +147,6 @@ Pipeline::Pipeline(const Device& device, const PipelineLayoutDesc& layout, const
     blend.attachmentCount = static_cast<std::uint32_t>(blends.size());
     blend.pAttachments = blends.data();
     std::vector<VkDynamicState> dynamic_states{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    if (g.depth_bias) dynamic_states.push_back(VK_DYNAMIC_STATE_DEPTH_BIAS);
     VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamic_states.size());
     dynamic.pDynamicStates = dynamic_states.data();

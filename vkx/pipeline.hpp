@@ -38,7 +38,6 @@ struct GraphicsPipelineDesc {
   VkFormat depth_format = VK_FORMAT_UNDEFINED;
   VkCullModeFlags cull_mode = VK_CULL_MODE_NONE;
   VkFrontFace front_face = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  bool depth_bias = false;  // constant and slope factors set dynamically
 };
 
 class Pipeline {

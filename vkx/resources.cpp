@@ -209,14 +209,12 @@ Buffer upload_buffer(const Device& device, std::span<const std::byte> bytes, VkB
   return target;
 }
 
-Sampler::Sampler(const Device& device, VkFilter filter, bool compare) : device_(device.handle()) {
+Sampler::Sampler(const Device& device, VkFilter filter) : device_(device.handle()) {
   VkSamplerCreateInfo ci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   ci.magFilter = filter;
   ci.minFilter = filter;
   ci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   ci.addressModeU = ci.addressModeV = ci.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  ci.compareEnable = compare ? VK_TRUE : VK_FALSE;
-  ci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // shadows: lit where the receiver is not behind the stored depth
   ci.maxLod = 0.0f;
   VK_CHECK(vkCreateSampler(device_, &ci, nullptr, &sampler_));
 }

@@ -110,12 +110,12 @@ class Image {
   ImageDesc desc_;
 };
 
-// A sampler clamped to the edge, filtering nearest or linear; depth-comparing (for hardware
-// PCF) with `compare`. Or any sampler, from its create info.
+// A sampler clamped to the edge, filtering nearest or linear, of one mip level. Or any
+// sampler, from its create info.
 class Sampler {
  public:
   Sampler() = default;
-  Sampler(const Device& device, VkFilter filter, bool compare = false);
+  Sampler(const Device& device, VkFilter filter);
   Sampler(const Device& device, const VkSamplerCreateInfo& create_info);
   ~Sampler();
   Sampler(Sampler&& other) noexcept { *this = std::move(other); }

@@ -26,7 +26,7 @@ ForwardPass::ForwardPass(const vkx::Device& device, const TextureSetLayout& text
   layout_.draw_sets = {textures.handle()};
   layout_.push_constant_bytes = sizeof(gpu::GpuDrawMaterial);
   layout_.push_constant_stages = fragment;
-  shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
+  shadow_sampler_ = vkx::Sampler(device, VK_FILTER_NEAREST);  // depths, compared in direct_light.glsl
 }
 
 const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const DirectLightInputs& direct,

@@ -27,7 +27,7 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
                                  {gpu::SHADE_ACCUMULATED_G, texels},
                                  {gpu::SHADE_ACCUMULATED_B, texels},
                                  {gpu::SHADE_DISPLAY, buffer}});
-  shadow_sampler_ = vkx::Sampler(device, VK_FILTER_LINEAR, true);
+  shadow_sampler_ = vkx::Sampler(device, VK_FILTER_NEAREST);  // depths, compared in direct_light.glsl
 }
 
 const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {

@@ -6,10 +6,6 @@
 namespace renderer {
 namespace {
 
-// Slope-scaled bias against acne on surfaces at grazing angles to the light; the shading
-// also offsets its lookups along the normal (see shade.comp).
-constexpr float kSlopeBias = 1.5f;
-
 // The stages that sample the maps: the deferred shading (compute) and the forward pass
 // (fragment), which may follow in the same command buffer.
 constexpr VkPipelineStageFlags kReaders = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
@@ -25,7 +21,9 @@ ShadowPass::ShadowPass(const vkx::Device& device) : device_(device) {
   g.vertex_input = {sizeof(scene::Vertex), {{0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(scene::Vertex, position)}}};
   g.depth_format = ShadowAtlas::kFormat;
   g.cull_mode = VK_CULL_MODE_NONE;  // a one-sided wall still blocks light from behind
-  g.depth_bias = true;
+  // No depth bias: the shading compares each texel with the receiver's own plane, which keeps
+  // surfaces from shadowing themselves (direct_light.glsl); a bias on the occluders let light
+  // through where they meet a receiver.
   pipeline_ = vkx::Pipeline(device, layout, g);
 }
 
@@ -37,7 +35,6 @@ void ShadowPass::record(VkCommandBuffer cmd, const GpuScene& scene, const Shadow
                                  true);
     if (scene.index_count > 0) {
       pipeline_.bind(cmd);
-      vkCmdSetDepthBias(cmd, 0.0f, 0.0f, kSlopeBias);
       pipeline_.push(cmd, views[layer]);
       scene.bind_geometry(cmd);
       vkCmdDrawIndexed(cmd, scene.index_count, 1, 0, 0, 0);  // materials do not matter for depth

@@ -7,7 +7,7 @@
 //                          both sides of a branch, so code for what the frame lacks costs
 //                          every pixel, and a loop of constant length is unrolled),
 //   frame (GpuFrame), lights[] (GpuLight), shadow_view_proj[] (mat4 per atlas layer) and
-//   shadow_maps (sampler2DArrayShadow).
+//   shadow_maps (sampler2DArray: the maps' depths, nearest texels).
 #ifndef LPV_DIRECT_LIGHT_GLSL
 #define LPV_DIRECT_LIGHT_GLSL
 
@@ -28,26 +28,85 @@ uint cube_face(vec3 d) {
   return d.z < 0.0 ? 5u : 4u;
 }
 
-// Fraction of the light reaching p (1 = lit), with 2x2 PCF: the four depth comparisons of
-// a compare gather, weighted bilinearly here. The same result as a filtered compare lookup
-// (3e-8 apart on cornell-box when this was changed), which lavapipe runs a millisecond slower
-// per 512^2 frame. The lookup point is pushed along the normal by about a shadow texel to
-// keep surfaces from shadowing themselves.
+// Where a point lands in a shadow map: its map position (normalized device x, y) and depth.
+vec3 shadow_map_position(mat4 view_proj, vec3 p) {
+  vec4 clip = view_proj * vec4(p, 1.0);
+  return clip.xyz / clip.w;
+}
+
+// The shadow lookup's distances, in shadow texels at the receiver (GpuLight::params.z).
+const float SHADOW_RECEIVER_REACH = 1.5;  // how far behind p the receiver's plane is followed
+const float SHADOW_PLANE_STEP = 24.0;     // the points the receiver's plane is measured from
+const float SHADOW_NORMAL_ERROR = 2e-3;   // the receiver's plane's error over the four texels, per texel
+
+// Fraction of the light reaching p (1 = lit): 2x2 PCF, the four texels around p weighted
+// bilinearly, each compared with the depth of the receiver's own plane (through p, normal n)
+// at that texel's centre: "receiver plane depth" (a plane's depth in a map is affine in the
+// map's x and y, perspective maps included).
+//
+// Why per texel: comparing the four with one depth let light through seams. An occluder seen
+// at a grazing angle (a ceiling, under a low sun) changes depth across a texel by more than it
+// stands in front of a receiver that meets it (the wall under the ceiling), so the texels on
+// its far side counted the wall lit, a line of full sunlight along the seam. A slope bias on
+// the occluders and a lookup pushed 1.5 texels along the normal, which kept a single depth off
+// the receiver's own surface before, widened that line, and the push moved shadows' edges
+// sideways on surfaces the light grazes (by 1.5 texels over the cosine, a few pixels). The
+// receiver's own surface needs neither: its texels hold its own plane.
+//
+// The plane is followed at most SHADOW_RECEIVER_REACH texels beyond p along the light: a
+// surface nearly edge-on to the light reaches far in depth within a texel, past where it ends
+// (under the floor it stands on), where whatever the texel holds would shadow it. Its slope
+// is measured over SHADOW_PLANE_STEP texels: perspective depths crowd near 1, and over one
+// texel the slope was left to rounding (it lit a wedge of cornell-box-point's shadows).
+//
+// A texel where nothing was drawn (still at the clear depth, 1) holds no receiver: a lookup
+// reaches it only past the edge of all the light sees. Past an occluder's edge that meets a
+// receiver (nothing beyond the roof), counting it lit would leak; it counts as the drawn
+// texels of the four do: lit only where all of them are. A surface's own edge (a plane that
+// ends in nothing) stays lit.
 float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
   if (!ANY_SHADOWED || light.info.z == 0u) return 1.0;
-  float offset = light.params.z * (light.info.x == LIGHT_DIRECTIONAL ? 1.0 : distance_to_light);
-  vec3 q = p + n * offset;
+  float texel_size = light.params.z * (light.info.x == LIGHT_DIRECTIONAL ? 1.0 : distance_to_light);
   uint layer = light.info.y;
-  if (ANY_CUBE_SHADOWED && light.info.z == 6u) layer += cube_face(q - light.position.xyz);  // a cube of six maps
-  vec4 clip = shadow_view_proj[layer] * vec4(q, 1.0);
+  if (ANY_CUBE_SHADOWED && light.info.z == 6u) layer += cube_face(p - light.position.xyz);  // a cube of six maps
+  mat4 view_proj = shadow_view_proj[layer];
+  vec4 clip = view_proj * vec4(p, 1.0);
   if (clip.w <= 0.0) return 1.0;
   vec3 ndc = clip.xyz / clip.w;
   // Outside the map: nothing was rendered there that could occlude.
   if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0 || ndc.z < 0.0) return 1.0;
-  vec2 uv = ndc.xy * 0.5 + 0.5;
-  vec2 t = uv * vec2(textureSize(shadow_maps, 0).xy) - 0.5;
+
+  // The receiver's plane: its depth at map position s is ndc.z + dot(slope, s - ndc.xy).
+  vec3 along_u = normalize(cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+  vec3 along_v = cross(n, along_u);
+  float step = SHADOW_PLANE_STEP * texel_size;
+  vec3 du = shadow_map_position(view_proj, p + along_u * step) - ndc;
+  vec3 dv = shadow_map_position(view_proj, p + along_v * step) - ndc;
+  float det = du.x * dv.y - du.y * dv.x;
+  if (!(abs(det) > 0.0)) return 1.0;  // edge-on to the light, which it then only grazes: n.l ~ 0
+  vec2 slope = vec2(du.z * dv.y - dv.z * du.y, dv.z * du.x - du.z * dv.x) / det;
+  vec3 away = light.info.x == LIGHT_DIRECTIONAL ? light.direction.xyz : normalize(p - light.position.xyz);
+  float deepest = shadow_map_position(view_proj, p + away * (SHADOW_RECEIVER_REACH * texel_size)).z;
+
+  vec2 size = vec2(textureSize(shadow_maps, 0).xy);
+  vec2 t = (ndc.xy * 0.5 + 0.5) * size - 0.5;
   vec2 f = fract(t);
-  vec4 lit = textureGather(shadow_maps, vec3(uv, float(layer)), ndc.z);  // texels (0,1), (1,1), (1,0), (0,0)
+  vec2 texel = 2.0 / size;                     // a texel, in map x, y
+  vec2 first = (floor(t) + 0.5) * texel - 1.0; // texel (0,0)'s centre
+  float depth_00 = ndc.z + dot(slope, first - ndc.xy);
+  vec4 receiver = depth_00 + vec4(slope.y * texel.y, dot(slope, texel), slope.x * texel.x, 0.0);
+  // The plane's slope is as good as the normal, rounded to 16 bits in the G-buffer (5e-4):
+  // across a texel and a half that moves its depth by the normal's error times 1 + tan^2 of
+  // the light's angle to it, in texels along the light. A receiver the light grazes needs
+  // that much leeway against its own texels; one it faces (a wall under a ceiling) next to none.
+  float texel_depth = (deepest - ndc.z) / SHADOW_RECEIVER_REACH;
+  float tangent = length(slope * texel) / texel_depth;
+  receiver = min(receiver, vec4(deepest)) - (1e-6 + SHADOW_NORMAL_ERROR * (1.0 + tangent * tangent) * texel_depth);
+  vec4 stored = textureGather(shadow_maps, vec3(ndc.xy * 0.5 + 0.5, float(layer)), 0);  // texels (0,1), (1,1), (1,0), (0,0)
+  vec4 lit = vec4(lessThanEqual(receiver, stored));
+  vec4 empty = vec4(greaterThanEqual(stored, vec4(1.0)));
+  vec4 drawn = max(lit, empty);  // the empty ones left out of the least
+  lit = mix(lit, vec4(min(min(drawn.x, drawn.y), min(drawn.z, drawn.w))), empty);
   return mix(mix(lit.w, lit.z, f.x), mix(lit.x, lit.y, f.x), f.y);
 }
 

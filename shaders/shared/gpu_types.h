@@ -68,7 +68,7 @@ struct GpuLight {
   vec4 position;   // xyz: world position (point, spot)
   vec4 direction;  // xyz: unit direction the light travels; w: range in metres (0 = unlimited)
   vec4 radiant;    // rgb: color * intensity (W/sr for point and spot, W/m^2 for directional)
-  vec4 params;     // x, y: spot cone scale and offset (glTF); z: shadow normal offset per metre
+  vec4 params;     // x, y: spot cone scale and offset (glTF); z: a shadow texel at the receiver (per metre of distance for perspective maps)
                    // of distance (point, spot) or in metres (directional)
   uvec4 info;      // x: LIGHT_*; y: first shadow map layer; z: shadow layer count: 0 = unshadowed,
                    // 1 = one map, 6 = a cube (+X, -X, +Y, -Y, +Z, -Z)

@@ -124,6 +124,7 @@ const Bounds kBounds[] = {
     {"open-court",         0.32,  0.66, 0.96,   9.0,     0.0,  0.0},   // 0.256 0.811
     {"gallery-court",      0.57,  0.68, 0.98,   9.0,     0.0,  0.0},   // 0.507 0.828
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
+    {"sunlit-hall",        0.57,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.510 0.992
 };
 
 // The same for {"lpv": {"transfer": "sharpened"}}: the bounds it had as the default (images
@@ -138,6 +139,7 @@ const Bounds kPropagationBounds[] = {
     {"open-court",         0.35,  0.77, 1.07,   9.0,     0.0,  0.0},   // 0.288 0.921
     {"gallery-court",      0.58,  0.60, 0.90,   9.0,     0.0,  0.0},   // 0.520 0.751
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.001
+    {"sunlit-hall",        0.58,  0.93, 1.23,   9.0,     0.0,  0.0},   // 0.522 1.081
 };
 // clang-format on
 
