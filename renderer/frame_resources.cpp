@@ -89,20 +89,23 @@ void FrameResources::fit(const vkx::Device& device, const FramePlan& plan, const
 void FrameResources::upload(const vkx::Device& device, const gpu::GpuFrame& frame, const LightSetup& lights,
                             const LpvSetup& lpv) {
   const auto light_bytes = lights.lights.size() * sizeof(gpu::GpuLight);
-  const auto view_bytes = lights.shadow_views.size() * sizeof(glm::mat4);
+  std::vector<gpu::GpuShadowView> shadow_views;
+  for (const glm::mat4& view_proj : lights.shadow_views)  // the inverse in double: perspective maps' near planes are close
+    shadow_views.push_back({view_proj, glm::mat4(glm::transpose(glm::inverse(glm::dmat4(view_proj))))});
+  const auto view_bytes = shadow_views.size() * sizeof(gpu::GpuShadowView);
   const auto rsm_view_bytes = lpv.rsm_views.size() * sizeof(gpu::GpuRsmView);
   ensure_capacity(device, frame_uniforms, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   // Uniform buffers of the forward and RSM passes too, sized for the most a frame may have.
   const VkBufferUsageFlags both = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT;
   ensure_capacity(device, light_buffer, std::max(light_bytes, gpu::SHADE_MAX_LIGHTS * sizeof(gpu::GpuLight)), both);
-  ensure_capacity(device, shadow_view_buffer, std::max(view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(glm::mat4)), both);
+  ensure_capacity(device, shadow_view_buffer, std::max(view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::GpuShadowView)), both);
   ensure_capacity(device, lpv_uniforms, sizeof(lpv.gpu), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   ensure_capacity(device, rsm_view_buffer, std::max(rsm_view_bytes, gpu::SHADE_MAX_SHADOW_VIEWS * sizeof(gpu::GpuRsmView)),
                   VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   frame_uniforms.write(&frame, sizeof(frame));
   lpv_uniforms.write(&lpv.gpu, sizeof(lpv.gpu));  // read only by frames with indirect light
   if (light_bytes) light_buffer.write(lights.lights.data(), light_bytes);
-  if (view_bytes) shadow_view_buffer.write(lights.shadow_views.data(), view_bytes);
+  if (view_bytes) shadow_view_buffer.write(shadow_views.data(), view_bytes);
   if (rsm_view_bytes) rsm_view_buffer.write(lpv.rsm_views.data(), rsm_view_bytes);
 }
 

@@ -24,7 +24,7 @@ layout(set = 0, binding = FORWARD_SHADOW_MAPS) uniform sampler2DArray shadow_map
 // by lane even at an address all lanes share, a uniform buffer once (the pass 5.8 -> 5.1 ms
 // at 512^2). The buffers are sized for the most lights and views a frame may have.
 layout(std140, set = 0, binding = FORWARD_LIGHTS) uniform Lights { GpuLight lights[SHADE_MAX_LIGHTS]; };
-layout(std140, set = 0, binding = FORWARD_SHADOW_VIEWS) uniform ShadowViews { mat4 shadow_view_proj[SHADE_MAX_SHADOW_VIEWS]; };
+layout(std140, set = 0, binding = FORWARD_SHADOW_VIEWS) uniform ShadowViews { GpuShadowView shadow_views[SHADE_MAX_SHADOW_VIEWS]; };
 layout(std140, set = 0, binding = FORWARD_LPV) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = FORWARD_ACCUMULATED_R, rgba32f) uniform readonly imageBuffer accumulated_r;
 layout(set = 0, binding = FORWARD_ACCUMULATED_G, rgba32f) uniform readonly imageBuffer accumulated_g;

@@ -35,7 +35,7 @@ layout(set = 0, binding = SHADE_G_NORMAL, rgba16f) uniform readonly image2D g_no
 layout(set = 0, binding = SHADE_G_ALBEDO, rgba16f) uniform readonly image2D g_albedo;
 layout(set = 0, binding = SHADE_SHADOW_MAPS) uniform sampler2DArray shadow_maps;
 layout(std430, set = 0, binding = SHADE_LIGHTS) readonly buffer Lights { GpuLight lights[]; };
-layout(std430, set = 0, binding = SHADE_SHADOW_VIEWS) readonly buffer ShadowViews { mat4 shadow_view_proj[]; };
+layout(std430, set = 0, binding = SHADE_SHADOW_VIEWS) readonly buffer ShadowViews { GpuShadowView shadow_views[]; };
 layout(std430, set = 0, binding = SHADE_MATERIALS) readonly buffer Materials { GpuMaterial materials[]; };
 layout(std430, set = 0, binding = SHADE_LINEAR) writeonly buffer Linear { vec4 linear_pixels[]; };
 layout(std140, set = 0, binding = SHADE_LPV) uniform Lpv { GpuLpv lpv; };

@@ -14,7 +14,7 @@ namespace renderer {
 struct DirectLightInputs {
   const vkx::Buffer& frame;         // gpu::GpuFrame
   const vkx::Buffer& lights;        // gpu::GpuLight[]
-  const vkx::Buffer& shadow_views;  // mat4[] per atlas layer
+  const vkx::Buffer& shadow_views;  // gpu::GpuShadowView[] per atlas layer
   const ShadowAtlas& atlas;
   std::uint32_t light_kinds;        // gpu::LIGHTS_* bits (light_kinds())
   std::uint32_t light_count;        // of the buffer `lights`

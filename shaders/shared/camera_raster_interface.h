@@ -13,7 +13,7 @@ LPV_BINDING CAMERA_FRAME = 0u;  // uniform GpuFrame (gbuffer.vert; forward.frag 
 // forward.frag
 LPV_BINDING FORWARD_SHADOW_MAPS = 1u;   // sampled with comparison: the shadow atlas
 LPV_BINDING FORWARD_LIGHTS = 2u;        // uniform: GpuLight[SHADE_MAX_LIGHTS]
-LPV_BINDING FORWARD_SHADOW_VIEWS = 3u;  // uniform: mat4[SHADE_MAX_SHADOW_VIEWS]
+LPV_BINDING FORWARD_SHADOW_VIEWS = 3u;  // uniform: GpuShadowView[SHADE_MAX_SHADOW_VIEWS]
 // The indirect light (lpv_irradiance.glsl): GpuLpv, then the accumulated grids' three
 // channels as texels, in this order (bind_indirect_light binds them from the first).
 LPV_BINDING FORWARD_LPV = 4u;

@@ -6,7 +6,7 @@
 //                          frame.size_view.w (both specialization constants: lavapipe runs
 //                          both sides of a branch, so code for what the frame lacks costs
 //                          every pixel, and a loop of constant length is unrolled),
-//   frame (GpuFrame), lights[] (GpuLight), shadow_view_proj[] (mat4 per atlas layer) and
+//   frame (GpuFrame), lights[] (GpuLight), shadow_views[] (GpuShadowView per atlas layer) and
 //   shadow_maps (sampler2DArray: the maps' depths, nearest texels).
 #ifndef LPV_DIRECT_LIGHT_GLSL
 #define LPV_DIRECT_LIGHT_GLSL
@@ -28,15 +28,8 @@ uint cube_face(vec3 d) {
   return d.z < 0.0 ? 5u : 4u;
 }
 
-// Where a point lands in a shadow map: its map position (normalized device x, y) and depth.
-vec3 shadow_map_position(mat4 view_proj, vec3 p) {
-  vec4 clip = view_proj * vec4(p, 1.0);
-  return clip.xyz / clip.w;
-}
-
 // The shadow lookup's distances, in shadow texels at the receiver (GpuLight::params.z).
 const float SHADOW_RECEIVER_REACH = 1.5;  // how far behind p the receiver's plane is followed
-const float SHADOW_PLANE_STEP = 24.0;     // the points the receiver's plane is measured from
 const float SHADOW_NORMAL_ERROR = 2e-3;   // the receiver's plane's error over the four texels, per texel
 
 // Fraction of the light reaching p (1 = lit): 2x2 PCF, the four texels around p weighted
@@ -53,11 +46,9 @@ const float SHADOW_NORMAL_ERROR = 2e-3;   // the receiver's plane's error over t
 // sideways on surfaces the light grazes (by 1.5 texels over the cosine, a few pixels). The
 // receiver's own surface needs neither: its texels hold its own plane.
 //
-// The plane is followed at most SHADOW_RECEIVER_REACH texels beyond p along the light: a
+// The plane is followed at most SHADOW_RECEIVER_REACH texels behind p along the light: a
 // surface nearly edge-on to the light reaches far in depth within a texel, past where it ends
-// (under the floor it stands on), where whatever the texel holds would shadow it. Its slope
-// is measured over SHADOW_PLANE_STEP texels: perspective depths crowd near 1, and over one
-// texel the slope was left to rounding (it lit a wedge of cornell-box-point's shadows).
+// (under the floor it stands on), where whatever the texel holds would shadow it.
 //
 // A texel where nothing was drawn (still at the clear depth, 1) holds no receiver: a lookup
 // reaches it only past the edge of all the light sees. Past an occluder's edge that meets a
@@ -69,24 +60,22 @@ float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
   float texel_size = light.params.z * (light.info.x == LIGHT_DIRECTIONAL ? 1.0 : distance_to_light);
   uint layer = light.info.y;
   if (ANY_CUBE_SHADOWED && light.info.z == 6u) layer += cube_face(p - light.position.xyz);  // a cube of six maps
-  mat4 view_proj = shadow_view_proj[layer];
-  vec4 clip = view_proj * vec4(p, 1.0);
+  GpuShadowView view = shadow_views[layer];
+  vec4 clip = view.view_proj * vec4(p, 1.0);
   if (clip.w <= 0.0) return 1.0;
   vec3 ndc = clip.xyz / clip.w;
   // Outside the map: nothing was rendered there that could occlude.
   if (any(greaterThan(abs(ndc.xy), vec2(1.0))) || ndc.z > 1.0 || ndc.z < 0.0) return 1.0;
 
-  // The receiver's plane: its depth at map position s is ndc.z + dot(slope, s - ndc.xy).
-  vec3 along_u = normalize(cross(n, abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
-  vec3 along_v = cross(n, along_u);
-  float step = SHADOW_PLANE_STEP * texel_size;
-  vec3 du = shadow_map_position(view_proj, p + along_u * step) - ndc;
-  vec3 dv = shadow_map_position(view_proj, p + along_v * step) - ndc;
-  float det = du.x * dv.y - du.y * dv.x;
-  if (!(abs(det) > 0.0)) return 1.0;  // edge-on to the light, which it then only grazes: n.l ~ 0
-  vec2 slope = vec2(du.z * dv.y - dv.z * du.y, dv.z * du.x - du.z * dv.x) / det;
+  // The receiver's plane in clip space, P: a point of it has <P, (x, y, depth, 1)> = 0 in
+  // normalized device coordinates, so its depth at map position s is
+  // ndc.z - <P.xy, s - ndc.xy> / P.z.
+  vec4 plane = view.plane_to_clip * vec4(n, -dot(n, p));
+  if (!(abs(plane.z) > 0.0)) return 1.0;  // edge-on to the light, which it then only grazes: n.l ~ 0
+  vec2 slope = -plane.xy / plane.z;
   vec3 away = light.info.x == LIGHT_DIRECTIONAL ? light.direction.xyz : normalize(p - light.position.xyz);
-  float deepest = shadow_map_position(view_proj, p + away * (SHADOW_RECEIVER_REACH * texel_size)).z;
+  vec4 behind = view.view_proj * vec4(p + away * (SHADOW_RECEIVER_REACH * texel_size), 1.0);
+  float deepest = behind.z / behind.w;
 
   vec2 size = vec2(textureSize(shadow_maps, 0).xy);
   vec2 t = (ndc.xy * 0.5 + 0.5) * size - 0.5;

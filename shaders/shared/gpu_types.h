@@ -68,10 +68,17 @@ struct GpuLight {
   vec4 position;   // xyz: world position (point, spot)
   vec4 direction;  // xyz: unit direction the light travels; w: range in metres (0 = unlimited)
   vec4 radiant;    // rgb: color * intensity (W/sr for point and spot, W/m^2 for directional)
-  vec4 params;     // x, y: spot cone scale and offset (glTF); z: a shadow texel at the receiver (per metre of distance for perspective maps)
+  vec4 params;     // x, y: spot cone scale and offset (glTF); z: a shadow texel's side at the receiver, per metre
                    // of distance (point, spot) or in metres (directional)
   uvec4 info;      // x: LIGHT_*; y: first shadow map layer; z: shadow layer count: 0 = unshadowed,
                    // 1 = one map, 6 = a cube (+X, -X, +Y, -Y, +Z, -Z)
+};
+
+// A shadow map's view: world to clip space, and what takes a world plane (n, -<n, p>) to clip
+// space (the inverse transpose), where its depth is affine in x and y (direct_light.glsl).
+struct GpuShadowView {
+  mat4 view_proj;
+  mat4 plane_to_clip;
 };
 
 struct GpuMaterial {

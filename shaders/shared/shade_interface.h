@@ -12,7 +12,7 @@ LPV_BINDING SHADE_G_NORMAL = 2u;
 LPV_BINDING SHADE_G_ALBEDO = 3u;
 LPV_BINDING SHADE_SHADOW_MAPS = 4u;      // sampled with comparison: the shadow atlas
 LPV_BINDING SHADE_LIGHTS = 5u;           // storage: GpuLight
-LPV_BINDING SHADE_SHADOW_VIEWS = 6u;     // storage: the shadow views' matrices
+LPV_BINDING SHADE_SHADOW_VIEWS = 6u;     // storage: the shadow views (GpuShadowView)
 LPV_BINDING SHADE_MATERIALS = 7u;        // storage: GpuMaterial
 LPV_BINDING SHADE_LINEAR = 8u;           // storage: the linear image, written
 // The indirect light (lpv_irradiance.glsl): GpuLpv, then the accumulated grids' three
