@@ -227,6 +227,28 @@ Scene sunlit_hall() {
   return b.build();
 }
 
+// Thin walls between a bright outside and a dim inside: a 4 x 4 m hut of 2 cm walls and roof
+// on a sunlit court of pale sand, its doorway on the shaded side. The sun never enters; the
+// inside gets only what the sand sends in through the doorway, while the sand lights the
+// walls' outsides a cell away. Seen from inside.
+Scene thin_wall_hut() {
+  SceneBuilder b("thin-wall-hut");
+  const auto sand = b.add_material({"sand", {0.75f, 0.62f, 0.42f}, {}});
+  const auto clay = b.add_material({"clay", {0.7f, 0.66f, 0.6f}, {}});
+  b.add_quad({-12, 0, 12}, {12, 0, 12}, {12, 0, -12}, {-12, 0, -12}, sand);
+  constexpr float kWall = 0.02f, kHeight = 2.5f;
+  b.add_box({0.0f, 0.0f, -2.0f}, {4.0f, kHeight, kWall}, 0.0f, clay);  // back
+  b.add_box({-2.0f, 0.0f, 0.0f}, {kWall, kHeight, 4.0f}, 0.0f, clay);  // left
+  b.add_box({2.0f, 0.0f, 0.0f}, {kWall, kHeight, 4.0f}, 0.0f, clay);   // right
+  b.add_box({-1.25f, 0.0f, 2.0f}, {1.5f, kHeight, kWall}, 0.0f, clay); // front, left of the doorway
+  b.add_box({1.25f, 0.0f, 2.0f}, {1.5f, kHeight, kWall}, 0.0f, clay);  // and right of it
+  b.add_box({0.0f, 2.0f, 2.0f}, {1.0f, kHeight - 2.0f, kWall}, 0.0f, clay);  // above it
+  b.add_box({0.0f, kHeight, 0.0f}, {4.0f + kWall, kWall, 4.0f + kWall}, 0.0f, clay);  // roof
+  b.add_light(sun(50.0f, {0.3f, 1.0f}, 3.0f));  // from behind the hut: the doorway is in its shade
+  b.set_camera(camera_at({1.4f, 1.6f, 1.6f}, {-1.2f, 0.6f, -1.9f}, 70.0f));
+  return b.build();
+}
+
 struct Entry {
   BuiltinSceneInfo info;
   std::function<Scene()> make;
@@ -243,6 +265,7 @@ const std::vector<Entry>& registry() {
       {{"gallery-court", "a court with roofed galleries under a low sun (ceilings lit by bounces alone)"}, gallery_court},
       {{"lone-plane", "one 20 m plane alone under a sun; its true indirect light is zero"}, lone_plane},
       {{"sunlit-hall", "a hall of one-sided walls and ceiling, a low sun through three tall windows (seams)"}, sunlit_hall},
+      {{"thin-wall-hut", "a hut of 2 cm walls on a sunlit court, lit inside only through its shaded doorway (leaks)"}, thin_wall_hut},
   };
   return entries;
 }

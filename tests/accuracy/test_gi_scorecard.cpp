@@ -82,7 +82,11 @@ void score_within_bounds(const Bounds& b, api::RenderRequest request) {
     EXPECT_GE(s.indirect_ratio, b.min_indirect_ratio);
     EXPECT_LE(s.indirect_ratio, b.max_indirect_ratio);
   }
-  EXPECT_LE(s.indirect_over_direct, b.max_indirect_over_direct);
+  // Not bounded (9): also where no direct light reaches the view (inside thin-wall-hut), which
+  // leaves the ratio undefined.
+  if (b.max_indirect_over_direct < 9.0) {
+    EXPECT_LE(s.indirect_over_direct, b.max_indirect_over_direct);
+  }
   if (b.max_probe > 0.0) {
     ASSERT_TRUE(s.probe.has_value());
     EXPECT_GE(*s.probe, b.min_probe);
@@ -109,9 +113,11 @@ TEST_P(PropagationScorecard, PropagationStaysWithinItsBounds) {
 // clang-format off
 // Measured at 64x64, 1024 samples (docs/accuracy.md, "The scorecard"): gain, indirect ratio,
 // probe. Bounds: gain +0.06, indirect ratio +-0.15, probes +-0.15 (the leak at most 0.05, the
-// issue's target); the lone plane's indirect light at most 2% of its direct light. 9 marks a
-// measure not bounded for the scene, an indirect range starting at 0 one not checked (the lone
-// plane's reference has no indirect light), a probe range ending at 0 a scene without a probe.
+// issue's target); thin-wall-hut's, whose 2 cm walls let the sunlit sand's light into the hut
+// at 26 times the truth (issue 48, open), about 10% and 20% either side; the lone plane's
+// indirect light at most 2% of its direct light. 9 marks a measure not bounded for the scene,
+// an indirect range starting at 0 one not checked (the lone plane's reference has no indirect
+// light), a probe range ending at 0 a scene without a probe.
 // The default request: transfer auto, the gather on these 16^3 grids, its cells arranged to
 // each scene's shape.
 const Bounds kBounds[] = {
@@ -125,6 +131,7 @@ const Bounds kBounds[] = {
     {"gallery-court",      0.57,  0.68, 0.98,   9.0,     0.0,  0.0},   // 0.507 0.828
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
     {"sunlit-hall",        0.57,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.510 0.992
+    {"thin-wall-hut",      26.0,  20.0, 30.0,   9.0,     0.0,  0.0},   // 23.8 26.3: the leak (issue 48)
 };
 
 // The same for {"lpv": {"transfer": "sharpened"}}: the bounds it had as the default (images
@@ -140,6 +147,7 @@ const Bounds kPropagationBounds[] = {
     {"gallery-court",      0.58,  0.60, 0.90,   9.0,     0.0,  0.0},   // 0.520 0.751
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.001
     {"sunlit-hall",        0.58,  0.93, 1.23,   9.0,     0.0,  0.0},   // 0.522 1.081
+    {"thin-wall-hut",      34.0,  28.0, 40.0,   9.0,     0.0,  0.0},   // 30.6 35.3: the leak
 };
 // clang-format on
 
