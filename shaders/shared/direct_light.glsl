@@ -31,6 +31,7 @@ uint cube_face(vec3 d) {
 // The shadow lookup's distances, in shadow texels at the receiver (GpuLight::params.z).
 const float SHADOW_RECEIVER_REACH = 1.5;  // how far behind p the receiver's plane is followed
 const float SHADOW_NORMAL_ERROR = 2e-3;   // the receiver's plane's error over the four texels, per texel
+const float SHADOW_SNAP = 1.0 / 64.0;      // the rasteriser's vertex snapping, in texels, with a margin
 
 // Fraction of the light reaching p (1 = lit): 2x2 PCF, the four texels around p weighted
 // bilinearly, each compared with the depth of the receiver's own plane (through p, normal n)
@@ -84,13 +85,16 @@ float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
   vec2 first = (floor(t) + 0.5) * texel - 1.0; // texel (0,0)'s centre
   float depth_00 = ndc.z + dot(slope, first - ndc.xy);
   vec4 receiver = depth_00 + vec4(slope.y * texel.y, dot(slope, texel), slope.x * texel.x, 0.0);
-  // The plane's slope is as good as the normal, rounded to 16 bits in the G-buffer (5e-4):
-  // across a texel and a half that moves its depth by the normal's error times 1 + tan^2 of
-  // the light's angle to it, in texels along the light. A receiver the light grazes needs
-  // that much leeway against its own texels; one it faces (a wall under a ceiling) next to none.
+  // Leeway against the receiver's own texels, in texels along the light. The plane's slope is
+  // as good as the normal, rounded to 16 bits in the G-buffer (5e-4): across a texel and a half
+  // that moves its depth by the normal's error times 1 + tan^2 of the light's angle to it. And
+  // the map's rasteriser snaps vertices to a fraction of a texel (1/256 on NVIDIA's), which
+  // moves a surface's stored depth by that fraction times tan. A receiver the light grazes needs
+  // both; one it faces (a wall under a ceiling) next to none.
   float texel_depth = (deepest - ndc.z) / SHADOW_RECEIVER_REACH;
   float tangent = length(slope * texel) / texel_depth;
-  receiver = min(receiver, vec4(deepest)) - (1e-6 + SHADOW_NORMAL_ERROR * (1.0 + tangent * tangent) * texel_depth);
+  float leeway = SHADOW_NORMAL_ERROR * (1.0 + tangent * tangent) + SHADOW_SNAP * tangent;
+  receiver = min(receiver, vec4(deepest)) - (1e-6 + leeway * texel_depth);
   vec4 stored = textureGather(shadow_maps, vec3(ndc.xy * 0.5 + 0.5, float(layer)), 0);  // texels (0,1), (1,1), (1,0), (0,0)
   vec4 lit = vec4(lessThanEqual(receiver, stored));
   vec4 empty = vec4(greaterThanEqual(stored, vec4(1.0)));
