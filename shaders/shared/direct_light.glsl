@@ -56,7 +56,7 @@ const float SHADOW_SNAP = 1.0 / 64.0;      // the rasteriser's vertex snapping, 
 // receiver (nothing beyond the roof), counting it lit would leak; it counts as the drawn
 // texels of the four do: lit only where all of them are. A surface's own edge (a plane that
 // ends in nothing) stays lit.
-float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
+float visibility(GpuLight light, vec3 p, vec3 n, vec3 to_light, float distance_to_light) {
   if (!ANY_SHADOWED || light.info.z == 0u) return 1.0;
   float texel_size = light.params.z * (light.info.x == LIGHT_DIRECTIONAL ? 1.0 : distance_to_light);
   uint layer = light.info.y;
@@ -74,8 +74,7 @@ float visibility(GpuLight light, vec3 p, vec3 n, float distance_to_light) {
   vec4 plane = view.plane_to_clip * vec4(n, -dot(n, p));
   if (!(abs(plane.z) > 0.0)) return 1.0;  // edge-on to the light, which it then only grazes: n.l ~ 0
   vec2 slope = -plane.xy / plane.z;
-  vec3 away = light.info.x == LIGHT_DIRECTIONAL ? light.direction.xyz : normalize(p - light.position.xyz);
-  vec4 behind = view.view_proj * vec4(p + away * (SHADOW_RECEIVER_REACH * texel_size), 1.0);
+  vec4 behind = view.view_proj * vec4(p - to_light * (SHADOW_RECEIVER_REACH * texel_size), 1.0);
   float deepest = behind.z / behind.w;
 
   vec2 size = vec2(textureSize(shadow_maps, 0).xy);
@@ -109,14 +108,14 @@ vec3 irradiance(GpuLight light, vec3 p, vec3 n) {
     vec3 to_light = -light.direction.xyz;
     float cos_theta = dot(n, to_light);
     if (cos_theta <= 0.0) return vec3(0.0);
-    return light.radiant.rgb * cos_theta * visibility(light, p, n, 0.0);
+    return light.radiant.rgb * cos_theta * visibility(light, p, n, to_light, 0.0);
   }
   vec3 to_light;
   float dist2;
   vec3 intensity = light_intensity_toward(light, p, to_light, dist2);
   float cos_theta = dot(n, to_light);
   if (cos_theta <= 0.0 || dist2 == 0.0 || intensity == vec3(0.0)) return vec3(0.0);
-  return intensity * (cos_theta / dist2) * visibility(light, p, n, sqrt(dist2));
+  return intensity * (cos_theta / dist2) * visibility(light, p, n, to_light, sqrt(dist2));
 }
 
 // Irradiance (W/m^2) at p with unit normal n from all the frame's lights, shadows included.
