@@ -66,6 +66,7 @@ SceneScore score_request(Workbench& bench, api::RenderRequest request, const Sco
 
   api::ReferenceSettings reference_settings;
   reference_settings.samples = settings.samples;
+  reference_settings.bounces = settings.bounces;
   const ReferenceCache::Entry reference = bench.references.get(r.scene(request.scene), request, reference_settings);
   const reference::Result& truth = *reference.result;
   const image::Mask& interior = truth.interior_mask;

@@ -16,6 +16,7 @@ namespace accuracy {
 struct ScorecardSettings {
   std::uint32_t size = 64;        // pixels per side of the renders and the reference
   std::uint32_t samples = 1024;   // the reference's paths per pixel
+  std::uint32_t bounces = 1;      // the reference's diffuse bounces (8: all that matter)
 };
 
 struct SceneScore {

@@ -5,6 +5,8 @@
 // table it prints is the one docs/accuracy.md shows.
 //   LPV_SCORECARD_SIZE (64), LPV_SCORECARD_SAMPLES (1024): the measurement's resolution and
 //   the reference's paths per pixel (docs/accuracy.md's table: 256 and 4096).
+//   LPV_SCORECARD_BOUNCES (1): the reference's diffuse bounces, 8 for all that matter (the
+//   bounds are one bounce's: against more, read the table and expect the bounds to fail).
 //   LPV_SCORECARD_REQUEST: a render request (JSON) to score instead of the default, its scene
 //   replaced by each built-in's: to compare settings on every scene (the bounds still apply).
 //   LPV_SCORECARD_DUMP: a folder to write each scene's images to (SCENE-indirect.pfm, and
@@ -37,6 +39,7 @@ accuracy::ScorecardSettings settings() {
   accuracy::ScorecardSettings s;
   s.size = setting("LPV_SCORECARD_SIZE", s.size);
   s.samples = setting("LPV_SCORECARD_SAMPLES", s.samples);
+  s.bounces = setting("LPV_SCORECARD_BOUNCES", s.bounces);
   return s;
 }
 
