@@ -2,6 +2,8 @@
 // ApiError carrying the server's {"error": {"code", "message", "field"}}, so the page can
 // show the message next to the control that `field` names.
 
+import { decodePfm } from './pfm.js';
+
 const TOKEN_KEY = 'lpv-server-token';
 
 export class ApiError extends Error {
@@ -63,20 +65,21 @@ export async function uploadScene(file) {
   return response.json();
 }
 
-// The frame as PNG with its stats from the X-Render-Stats header, rather than the JSON
-// answer: a quarter fewer bytes than its base64, and a blob the page shows as it is. The header
+// The frame as a linear PFM (pfm.js) with its stats from the X-Render-Stats header: the page
+// shows it through its own exposure and tone map, and reads exact values from it. The header
 // leaves out the LPV flux statistics when they are long; the page shows none of them.
 export async function render(request, signal) {
-  const response = await call('/v1/render', { method: 'POST', body: request, accept: 'image/png', signal });
+  const body = { ...request, output: { ...request.output, format: 'pfm' } };
+  const response = await call('/v1/render', { method: 'POST', body, accept: 'application/x-pfm', signal });
   if (response.headers.get('Content-Type')?.startsWith('application/json')) {  // a dry run: the plan, no image
     const { stats, queue_ms: queueMs } = await response.json();
-    return { stats, queueMs, png: null };
+    return { stats, queueMs, image: null };
   }
   const queue = /(?:^|,)\s*queue;dur=([\d.]+)/.exec(response.headers.get('Server-Timing') ?? '');
   return {
     stats: JSON.parse(response.headers.get('X-Render-Stats')),
     queueMs: queue ? Number(queue[1]) : 0,
-    png: await response.blob(),
+    image: decodePfm(await response.arrayBuffer()),
   };
 }
 

@@ -1,8 +1,9 @@
-// Moving the camera with the pointer or the keyboard, over the frame:
-//   drag            orbit around the target (about the camera's up axis, then sideways)
+// Moving the camera with the pointer or the keyboard, over the frame, while the canvas's
+// drag mode is "camera" (view_controls.js; the plain wheel zooms the view, not the camera):
+//   drag                 orbit around the target (about the camera's up axis, then sideways)
 //   right or Shift-drag  pan: camera and target move together in the view plane
-//   wheel           zoom: the distance to the target scales
-//   arrows, + and − the same from the keyboard, for whoever does not use a pointer
+//   Alt+wheel            dolly: the distance to the target scales
+//   arrows, Page Up and Page Down  the same from the keyboard, the canvas focused
 // The result is the request's camera (position, target, up, fov), which starts as the
 // scene's camera; every move goes through the render loop's debounce like any control.
 
@@ -52,8 +53,8 @@ function zoom(camera, factor) {
   return { ...camera, position: round(add(camera.target, offset)) };
 }
 
-export function attachCameraControls(area, state) {
-  const camera = () => state.get('camera');
+export function attachCameraControls(area, state, { enabled }) {
+  const camera = () => (enabled() ? state.get('camera') : undefined);
   const apply = (next) => {
     if (next) state.set('camera', next);
   };
@@ -80,7 +81,7 @@ export function attachCameraControls(area, state) {
   area.addEventListener('pointerup', end);
   area.addEventListener('pointercancel', end);
   area.addEventListener('wheel', (event) => {
-    if (!camera()) return;
+    if (!event.altKey || !camera()) return;
     event.preventDefault();
     apply(zoom(camera(), Math.exp(event.deltaY * 0.001)));
   }, { passive: false });
@@ -92,9 +93,8 @@ export function attachCameraControls(area, state) {
       ArrowRight: () => orbit(camera(), step, 0),
       ArrowUp: () => orbit(camera(), 0, -step),
       ArrowDown: () => orbit(camera(), 0, step),
-      '+': () => zoom(camera(), 0.9),
-      '=': () => zoom(camera(), 0.9),
-      '-': () => zoom(camera(), 1 / 0.9),
+      PageUp: () => zoom(camera(), 0.9),
+      PageDown: () => zoom(camera(), 1 / 0.9),
     };
     if (!moves[event.key]) return;
     event.preventDefault();

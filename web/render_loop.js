@@ -1,7 +1,9 @@
-// Turns changes of the request into frames: a change aborts the request in flight at once
-// (its answer, should it still arrive, is dropped) and sends the new one after a short
-// debounce, so a dragged slider sends one request, not fifty. The frame on screen is thus
-// never replaced by one older than the newest change.
+// Turns changes of the request into frames, as fast as the renderer allows and never out of
+// order: a change when nothing is in flight is sent at once (no debounce: the frame shows within
+// the render's own time and a few milliseconds of decoding); a change while a frame is being
+// rendered waits, replacing any change that waited before it, and is sent when that frame is
+// in. So a dragged slider gets a frame per render time, each for newer settings than the last,
+// and the frame on screen is never replaced by one older than itself.
 //
 // Performance marks (read by the browser test): "lpv:change" at each change, "lpv:request"
 // when its request is sent, "lpv:answer" when the answer is in, "lpv:frame" once its image
@@ -9,50 +11,50 @@
 // HTTP) and "lpv:answer-to-frame" (decoding and painting).
 
 import { ApiError } from './api_client.js';
-import { nextPaint } from './images.js';
 
 export class RenderLoop {
-  #timer = 0;
-  #inFlight = null;  // the AbortController of the newest request
+  #inFlight = null;  // the request being rendered
+  #waiting = null;   // the newest change that came while one was in flight
 
   // render(request, signal) -> answer; show(answer, request) -> promise, resolves when shown
-  constructor({ debounceMs, render, show, onBusy, onError }) {
-    Object.assign(this, { debounceMs, render, show, onBusy, onError });
+  constructor({ render, show, onBusy, onError }) {
+    Object.assign(this, { render, show, onBusy, onError });
   }
 
   schedule(request) {
     performance.mark('lpv:change');
-    this.#inFlight?.abort();
-    this.#inFlight = null;
-    clearTimeout(this.#timer);
     this.onBusy(true);
-    this.#timer = setTimeout(() => this.#run(request), this.debounceMs);
+    if (this.#inFlight) this.#waiting = request;
+    else this.#run(request);
   }
 
   async #run(request) {
-    const controller = new AbortController();
-    this.#inFlight = controller;
-    const current = () => this.#inFlight === controller;
+    this.#inFlight = request;
     performance.mark('lpv:request');
     try {
-      const answer = await this.render(request, controller.signal);
-      if (!current()) return;
+      const answer = await this.render(request);
       performance.mark('lpv:answer');
       await this.show(answer, request);
-      if (!current()) return;
       await nextPaint();
       performance.mark('lpv:frame');
       performance.measure('lpv:change-to-frame', 'lpv:change', 'lpv:frame');
       performance.measure('lpv:request-to-answer', 'lpv:request', 'lpv:answer');
       performance.measure('lpv:answer-to-frame', 'lpv:answer', 'lpv:frame');
     } catch (error) {
-      if (!current() || error.name === 'AbortError') return;
-      this.onError(error instanceof ApiError ? error : new ApiError(0, { code: 'network', message: String(error.message ?? error) }));
+      // An error for settings already changed again is no longer news: the next frame answers.
+      if (!this.#waiting)
+        this.onError(error instanceof ApiError ? error : new ApiError(0, { code: 'network', message: String(error.message ?? error) }));
     } finally {
-      if (current()) {
-        this.#inFlight = null;
-        this.onBusy(false);
-      }
+      this.#inFlight = null;
+      const next = this.#waiting;
+      this.#waiting = null;
+      if (next) this.#run(next);
+      else this.onBusy(false);
     }
   }
+}
+
+// Resolves after the browser has painted what the DOM holds now.
+function nextPaint() {
+  return new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
 }

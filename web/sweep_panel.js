@@ -27,6 +27,15 @@ export class SweepPanel {
       event.preventDefault();
       this.run();
     });
+    // Iterations move light only in a propagation: under the gather (and auto, which gathers
+    // at the grids a sweep offers by default) a list of them would time one frame twice.
+    const offerIterations = () => {
+      const propagates = ['sharpened', 'cosine'].includes(state.get('lpv.transfer'));
+      elements.iterationsControl.hidden = !propagates;
+      if (!propagates) elements.lists.iterations.value = '';
+    };
+    state.addEventListener('change', offerIterations);
+    offerIterations();
     elements.stop.addEventListener('click', () => {
       this.#run.stop();
       this.#progress('Stopped', elements.progress.value);
@@ -108,7 +117,7 @@ export class SweepPanel {
   #draw(axis) {
     const rows = this.#rows.filter(Boolean);
     this.elements.plot.replaceChildren(this.#plot
-      ? sweepPlot(this.#plot, this.#rows, (row) => this.load(row))
+      ? sweepPlot(this.#plot, this.#rows, (row) => this.load(row), (row) => this.#hover(row, axis))
       : Object.assign(document.createElement('p'), { className: 'hint', textContent: 'The plot of error against GPU time comes when the rows are timed.' }));
     this.#table(rows, axis);
   }
@@ -134,7 +143,14 @@ export class SweepPanel {
     table.replaceChildren(caption, head, ...body);
   }
 
-  // A row's settings into the request's LPV fields (the rest of the settings stay).
+  // The row under the pointer (or focused), in words: its settings, error and time.
+  #hover(row, axis) {
+    const error = row[`${axis.image}_error`][axis.metric];
+    this.elements.hover.textContent = `${row.label}: ${axis.metric} of the ${axis.image} image ${error === null ? '∞' : error.toPrecision(3)}, ` +
+      `${timeText(row)} ms on the device. Click or Enter loads it as B.`;
+  }
+
+  // A row's settings into the request's LPV fields (the rest of the settings stay): that is B.
   load(row) {
     const { settings } = row;
     if (!settings.lpv) return this.state.setAll({ 'lpv.enabled': false });

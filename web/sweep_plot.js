@@ -3,8 +3,9 @@
 // the plot's points buttons. Each circle names its row (data-row); clicking one (or Enter or
 // Space on it) loads that row's configuration.
 
-// svgText: the server's SVG; rows: the table's rows; onPick(row) loads a row.
-export function sweepPlot(svgText, rows, onPick) {
+// svgText: the server's SVG; rows: the table's rows; onPick(row) loads a row; onHover(row)
+// says what the row under the pointer or the focus is.
+export function sweepPlot(svgText, rows, onPick, onHover) {
   const parsed = new DOMParser().parseFromString(svgText, 'image/svg+xml').documentElement;
   if (parsed.nodeName !== 'svg') throw new Error('the sweep plot is not an SVG document');
   const svg = document.importNode(parsed, true);
@@ -22,6 +23,8 @@ export function sweepPlot(svgText, rows, onPick) {
     point.setAttribute('role', 'button');
     point.setAttribute('aria-label', `${row.label}: ${details}. Load these settings.`);
     point.addEventListener('click', () => onPick(row));
+    point.addEventListener('pointerenter', () => onHover(row));
+    point.addEventListener('focus', () => onHover(row));
     point.addEventListener('keydown', (event) => {
       if (event.key !== 'Enter' && event.key !== ' ') return;
       event.preventDefault();

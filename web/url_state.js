@@ -1,10 +1,12 @@
 // The whole state of the page lives in the URL's fragment, so a link reproduces the view:
-// #request=<the render request as JSON>&a=<the pinned A, when there is one>. The fragment
+// #request=<the render request as JSON (B)>&a=<the pinned A, when there is one>&view=<the
+// canvas: source, pair, difference, zoom, pan, rectangle, display, reference>. The fragment
 // never reaches the server, and replaceState keeps the history free of every slider step.
 
 export function readUrlState(hash = location.hash) {
   const params = new URLSearchParams(hash.replace(/^#/, ''));
-  return { request: parseJson(params.get('request'), 'request'), a: parseJson(params.get('a'), 'a') };
+  return { request: parseJson(params.get('request'), 'request'), a: parseJson(params.get('a'), 'a'),
+           view: parseJson(params.get('view'), 'view') };
 }
 
 function parseJson(text, name) {
@@ -18,10 +20,11 @@ function parseJson(text, name) {
   throw new Error(`the link's "${name}" is not a JSON object; starting from the defaults`);
 }
 
-export function urlStateHash({ request, a }) {
+export function urlStateHash({ request, a, view }) {
   const params = new URLSearchParams();
   params.set('request', JSON.stringify(request));
   if (a) params.set('a', JSON.stringify(a));
+  if (view) params.set('view', JSON.stringify(view));
   return '#' + params.toString();
 }
 
