@@ -8,10 +8,11 @@
 namespace server {
 namespace {
 
-// Everything the page loads comes from this server: its scripts, styles and icon, and the
-// images it makes from API answers (blob: URLs). Nothing from other hosts, no inline code.
+// Everything the page loads comes from this server: its scripts, styles and icon. It draws the
+// API's images on a canvas, so it needs no image URLs of its own (no blob:, no data:).
+// Nothing from other hosts, no inline code.
 constexpr const char* kContentSecurityPolicy =
-    "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob:; connect-src 'self'; "
+    "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self'; connect-src 'self'; "
     "base-uri 'none'; form-action 'none'; frame-ancestors 'none'";
 
 const web::WebAsset* find_asset(std::string_view path) {

@@ -51,6 +51,7 @@ TEST(HttpWeb, ThePageIsServedAtTheRootWithAPolicyThatKeepsItToThisServer) {
   EXPECT_NE(policy.find("default-src 'none'"), std::string::npos) << policy;
   EXPECT_NE(policy.find("script-src 'self'"), std::string::npos) << policy;
   EXPECT_NE(policy.find("connect-src 'self'"), std::string::npos) << policy;
+  EXPECT_NE(policy.find("img-src 'self';"), std::string::npos) << "the canvas needs no blob: or data: images: " << policy;
   EXPECT_EQ(r->get_header_value("X-Content-Type-Options"), "nosniff");
 }
 
