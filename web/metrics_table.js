@@ -9,6 +9,7 @@ const METRICS = [
   ['mean_abs_error', 'mean |error|'],
   ['max_abs_error', 'max |error|'],
   ['mean_signed_error', 'mean signed error (bias)'],
+  ['flip', 'FLIP (mean, as displayed)'],
   ['pixels', 'pixels compared'],
 ];
 
