@@ -20,13 +20,16 @@ using nlohmann::json;
 using namespace reader;
 
 constexpr std::array<std::string_view, 3> reference_keys{"samples", "bounces", "seed"};
-constexpr std::array<std::string_view, 5> compare_keys{"base", "against", "reference", "mask", "heatmap_scale"};
+constexpr std::array<std::string_view, 7> compare_keys{"base",          "against", "reference", "mask",
+                                                       "heatmap_scale", "images",  "region"};
+constexpr std::array<std::string_view, 4> region_keys{"x", "y", "width", "height"};
 constexpr std::array<std::string_view, 6> sweep_keys{"base", "parameters", "lpv_off_row", "reference", "axis", "mask"};
 constexpr std::array<std::string_view, 2> axis_keys{"image", "metric"};
 constexpr std::array masks{MetricMask::all, MetricMask::surfaces, MetricMask::interior};
+constexpr std::array compare_images{CompareImages::png, CompareImages::pfm};
 constexpr std::array sweep_images{SweepImage::final_, SweepImage::indirect};
 constexpr std::array sweep_metrics{SweepMetric::rmse, SweepMetric::relative_mse, SweepMetric::psnr_db,
-                                   SweepMetric::ssim, SweepMetric::mean_abs_error};
+                                   SweepMetric::ssim, SweepMetric::mean_abs_error, SweepMetric::flip};
 constexpr float max_heatmap_scale = 1.0e12f;
 
 ReferenceSettings read_reference(const Field& f) {
@@ -56,6 +59,28 @@ RenderRequest read_against(const Field& against, const Field& base) {
                                                                 std::to_string(original.output.height) +
                                                                 "): images of different sizes cannot be compared");
   return other;
+}
+
+// A rectangle inside the base's output. Each value is checked in turn against what the ones
+// before it leave, so the error names the field that does not fit and the size it must fit in.
+PixelRegion read_region(const Field& f, const RenderRequest& base) {
+  const Object obj(f, region_keys);
+  const std::uint32_t width = base.output.width, height = base.output.height;
+  const auto read = [&](std::string_view key, std::uint32_t lo, std::uint32_t hi) {
+    const Field field = obj.require(key, "pixels");
+    const auto value = as_uint<std::uint32_t>(field, 0, std::numeric_limits<std::uint32_t>::max());
+    if (value < lo || value > hi)
+      field.fail("must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] to keep the region "
+                 "inside the output (" + std::to_string(width) + " x " + std::to_string(height) + "), got " +
+                 std::to_string(value));
+    return value;
+  };
+  PixelRegion region;
+  region.x = read("x", 0, width - 1);
+  region.y = read("y", 0, height - 1);
+  region.width = read("width", 1, width - region.x);
+  region.height = read("height", 1, height - region.y);
+  return region;
 }
 
 // A list of 1 to max_sweep_values values, each read by `read`.
@@ -137,6 +162,8 @@ ParetoAxis reader::read_pareto_axis(const Field& f) {
   return axis;
 }
 
+std::string to_string(CompareImages i) { return i == CompareImages::pfm ? "pfm" : "png"; }
+
 std::string to_string(MetricMask m) {
   switch (m) {
     case MetricMask::all: return "all";
@@ -160,6 +187,8 @@ CompareRequest parse_compare_request(std::string_view json_text) {
   if (reference) compare.reference = read_reference(*reference);
   if (auto v = obj.get("mask")) compare.mask = as_enum(*v, masks);
   if (auto v = obj.get("heatmap_scale")) compare.heatmap_scale = as_float(*v, 0.0f, max_heatmap_scale);
+  if (auto v = obj.get("images")) compare.images = as_enum(*v, compare_images);
+  if (auto v = obj.get("region")) compare.region = read_region(*v, compare.base);
   return compare;
 }
 
@@ -231,6 +260,10 @@ RenderRequest request_for(const RenderRequest& base, const SweepSettings& settin
   lpv.transfer = settings.transfer;
   lpv.blocking = settings.blocking;
   return request;
+}
+
+nlohmann::json to_json(const PixelRegion& region) {
+  return {{"x", region.x}, {"y", region.y}, {"width", region.width}, {"height", region.height}};
 }
 
 nlohmann::json to_json(const ReferenceSettings& reference) {

@@ -29,6 +29,15 @@ struct ReferenceSettings {
 // by their sampling, not by their light).
 enum class MetricMask { all, surfaces, interior };
 
+// How a compare answers the images: PNGs of the display images, or PFMs of the linear ones
+// (exact values per pixel, for a client that measures them itself).
+enum class CompareImages { png, pfm };
+
+// A rectangle of the output in pixels, row 0 = top; inside the image (the reader checks it).
+struct PixelRegion {
+  std::uint32_t x = 0, y = 0, width = 0, height = 0;
+};
+
 struct CompareRequest {
   RenderRequest base;
   // Exactly one of the two: another render ("against": the base with these fields changed,
@@ -37,6 +46,8 @@ struct CompareRequest {
   std::optional<ReferenceSettings> reference;
   MetricMask mask = MetricMask::surfaces;
   float heatmap_scale = 0.0f;  // the difference at the top of the heat map's colour scale; 0: automatic
+  CompareImages images = CompareImages::png;
+  std::optional<PixelRegion> region;  // the metrics count only the masked pixels inside it
 };
 
 // The values each LPV setting takes; an empty list keeps the base request's value.
@@ -77,6 +88,7 @@ inline constexpr std::size_t max_sweep_configurations = 512;  // rows of one swe
 }  // namespace limits
 
 std::string to_string(MetricMask m);
+std::string to_string(CompareImages i);
 
 // Throw RequestError naming the field.
 CompareRequest parse_compare_request(std::string_view json_text);
@@ -94,5 +106,6 @@ std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep);
 RenderRequest request_for(const RenderRequest& base, const SweepSettings& settings);
 
 nlohmann::json to_json(const ReferenceSettings& reference);
+nlohmann::json to_json(const PixelRegion& region);
 
 }  // namespace api

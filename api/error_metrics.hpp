@@ -12,7 +12,8 @@
 namespace api {
 
 // Over the R, G and B values of the pixels in a mask; image::compare_images
-// (image/metrics.hpp) defines each precisely. With no pixel in the mask nothing
+// (image/metrics.hpp) defines each but `flip`, which image::flip (image/flip.hpp) computes
+// from the 8-bit display images that compare_images never sees. With no pixel in the mask nothing
 // differs: the errors are 0, psnr_db +inf and ssim 1, as for identical images.
 struct ErrorMetrics {
   double rmse = 0.0;               // root mean square error, in the images' units
@@ -25,11 +26,13 @@ struct ErrorMetrics {
   double max_abs_error = 0.0;
   double mean_signed_error = 0.0;  // bias: mean of x - r (negative: darker than the reference)
   std::uint64_t pixels = 0;        // pixels in the mask
+  double flip = 0.0;               // mean LDR-FLIP (image/flip.hpp) of the displayed 8-bit images,
+                                   // in [0, 1], 0 when equal; 0 where only linear images were compared
 };
 
 // The double fields, in declaration order, with their names in JSON and CSV: every writer and
 // reader goes through this one list, so none can miss a field. `pixels` is the only other.
-inline constexpr std::array<std::pair<const char*, double ErrorMetrics::*>, 7> error_metric_fields{{
+inline constexpr std::array<std::pair<const char*, double ErrorMetrics::*>, 8> error_metric_fields{{
     {"rmse", &ErrorMetrics::rmse},
     {"relative_mse", &ErrorMetrics::relative_mse},
     {"psnr_db", &ErrorMetrics::psnr_db},
@@ -37,6 +40,7 @@ inline constexpr std::array<std::pair<const char*, double ErrorMetrics::*>, 7> e
     {"mean_abs_error", &ErrorMetrics::mean_abs_error},
     {"max_abs_error", &ErrorMetrics::max_abs_error},
     {"mean_signed_error", &ErrorMetrics::mean_signed_error},
+    {"flip", &ErrorMetrics::flip},
 }};
 
 // Every field; a non-finite value (the PSNR of identical images, +inf) is written as null,

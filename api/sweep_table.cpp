@@ -174,6 +174,7 @@ double error_of(const SweepRow& row, const ParetoAxis& axis) {
     case SweepMetric::psnr_db: return std::pow(10.0, -errors.psnr_db / 10.0);
     case SweepMetric::ssim: return 1.0 - errors.ssim;
     case SweepMetric::mean_abs_error: return errors.mean_abs_error;
+    case SweepMetric::flip: return errors.flip;
   }
   throw std::invalid_argument("api::error_of: invalid SweepMetric");
 }
@@ -186,6 +187,7 @@ std::string error_label(const ParetoAxis& axis) {
     case SweepMetric::psnr_db: return "MSE / peak^2 = 10^(-PSNR/10)" + image;
     case SweepMetric::ssim: return "1 - SSIM" + image;
     case SweepMetric::mean_abs_error: return "mean absolute error" + image;
+    case SweepMetric::flip: return "mean FLIP" + image;
   }
   throw std::invalid_argument("api::error_label: invalid SweepMetric");
 }
@@ -264,6 +266,7 @@ std::string to_string(SweepMetric m) {
     case SweepMetric::psnr_db: return "psnr_db";
     case SweepMetric::ssim: return "ssim";
     case SweepMetric::mean_abs_error: return "mean_abs_error";
+    case SweepMetric::flip: return "flip";
   }
   throw std::invalid_argument("api::to_string: invalid SweepMetric");
 }

@@ -52,7 +52,7 @@ struct SweepRow {
 };
 
 // Which error the Pareto front and the plot use.
-enum class SweepMetric { rmse, relative_mse, psnr_db, ssim, mean_abs_error };
+enum class SweepMetric { rmse, relative_mse, psnr_db, ssim, mean_abs_error, flip };
 enum class SweepImage { final_, indirect };
 
 struct ParetoAxis {
@@ -70,7 +70,7 @@ const ErrorMetrics& image_errors(const SweepRow& row, SweepImage image);
 
 // A row's error on the axis as a "smaller is better" value that is >= 0 for any sensible
 // input, so that it has a log scale too:
-//  - rmse, relative_mse, mean_abs_error: the metric itself;
+//  - rmse, relative_mse, mean_abs_error, flip: the metric itself;
 //  - psnr_db: 10^(-psnr/10), which is MSE / peak^2 (the normalised MSE the PSNR is made
 //    of): 0 for +inf dB (identical images); merely negating would give negative values;
 //  - ssim: 1 - ssim (0 for identical images, at most 2).
@@ -112,7 +112,8 @@ nlohmann::json to_json(const SweepRow& row);
 // {"axis": {"image": "final", "metric": "rmse"}, "rows": [to_json(row), ...]}
 nlohmann::json to_json(const SweepTable& table);
 // The inverse of to_json (a null number is NaN, but a null psnr_db is +inf, as in
-// to_json(ErrorMetrics)); members it does not know are ignored. Throws RequestError naming
+// to_json(ErrorMetrics), and a missing flip, from a table older than FLIP, is NaN); members it
+// does not know are ignored. Throws RequestError naming
 // the field that is missing or wrong, with `path` before it. Defined in sweep_table_read.cpp.
 SweepTable sweep_table_from_json(const nlohmann::json& json, const std::string& path = "table");
 
@@ -125,7 +126,7 @@ SweepTable sweep_table_from_json(const nlohmann::json& json, const std::string& 
 // page shows this plot, it draws none of its own. Call mark_pareto first.
 std::string to_svg_plot(const SweepTable& table, const std::string& title);
 
-std::string to_string(SweepMetric m);  // "rmse", "relative_mse", "psnr_db", "ssim", "mean_abs_error"
+std::string to_string(SweepMetric m);  // "rmse", "relative_mse", "psnr_db", "ssim", "mean_abs_error", "flip"
 std::string to_string(SweepImage i);   // "final", "indirect"
 
 }  // namespace api

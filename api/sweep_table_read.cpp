@@ -26,8 +26,14 @@ double nullable(const Field& f, double when_null) {
 
 ErrorMetrics read_errors(const Field& f) {
   ErrorMetrics errors;
-  for (const auto& [name, field] : error_metric_fields)
+  for (const auto& [name, field] : error_metric_fields) {
+    // Tables written before FLIP was measured have no "flip": unmeasured, as null reads.
+    if (name == std::string_view("flip") && !f.optional_member(name)) {
+      errors.flip = NAN;
+      continue;
+    }
     errors.*field = nullable(f.member(name), name == std::string_view("psnr_db") ? INFINITY : NAN);
+  }
   errors.pixels = as_uint<std::uint64_t>(f.member("pixels"), 0, std::numeric_limits<std::uint64_t>::max());
   return errors;
 }

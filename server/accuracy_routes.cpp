@@ -5,6 +5,8 @@
 #include "api/request_json.hpp"
 #include "api/sweep_table.hpp"
 #include "core/base64.hpp"
+#include "image/flip.hpp"
+#include "image/pfm.hpp"
 #include "image/png.hpp"
 #include "server/accuracy_jobs.hpp"
 #include "server/http_errors.hpp"
@@ -21,25 +23,52 @@ namespace {
 constexpr auto kStreamPoll = std::chrono::milliseconds(250);
 
 std::string png_base64(const image::Rgba8Image& picture) { return core::base64_encode(image::encode_png(picture)); }
+std::string pfm_base64(const image::RgbaF32Image& linear) { return core::base64_encode(image::encode_pfm(linear)); }
 
-nlohmann::json side_json(const accuracy::CompareSide& side) {
-  nlohmann::json j = {{"label", side.label}, {"image", png_base64(side.display)}};
+// "png": the display image as the PNG shows it; "pfm": the linear final and indirect images,
+// exact values per pixel.
+nlohmann::json side_json(const accuracy::CompareSide& side, api::CompareImages images) {
+  nlohmann::json j = {{"label", side.label}};
+  if (images == api::CompareImages::pfm) {
+    j["image"] = pfm_base64(side.final_image);
+    j["indirect"] = pfm_base64(side.indirect);
+  } else {
+    j["image"] = png_base64(side.display);
+  }
   if (side.stats) j["stats"] = api::to_json(*side.stats);
   if (side.reference) j["reference"] = api::to_json(*side.reference);
   return j;
 }
 
-nlohmann::json comparison_json(const accuracy::Comparison& c, double queue_ms) {
-  return {{"mask", api::to_string(c.mask)},
-          {"metrics", {{"final", api::to_json(c.final_error)}, {"indirect", api::to_json(c.indirect_error)}}},
-          {"base", side_json(c.base)},
-          {"other", side_json(c.other)},
-          {"difference",
-           {{"image", png_base64(c.difference.image)},
-            {"scale", c.difference.scale},
-            {"quantity", "|luminance(base) - luminance(other)| of the final images, linear; the top of the colour "
-                         "scale is `scale`"}}},
-          {"queue_ms", queue_ms}};
+nlohmann::json flip_json(const accuracy::Comparison& c, api::CompareImages images) {
+  nlohmann::json j = {{"image", png_base64(c.flip_heatmap)},
+                      {"mean", c.final_error.flip},
+                      {"viewing",
+                       {{"monitor_width_m", c.viewing.monitor_width_m},
+                        {"monitor_width_px", c.viewing.monitor_width_px},
+                        {"distance_m", c.viewing.distance_m},
+                        {"pixels_per_degree", c.viewing.pixels_per_degree()}}}};
+  if (images == api::CompareImages::pfm) j["values"] = pfm_base64(image::flip_image(c.flip));
+  return j;
+}
+
+nlohmann::json comparison_json(const accuracy::Comparison& c, const api::CompareRequest& request, double queue_ms) {
+  nlohmann::json j = {
+      {"mask", api::to_string(c.mask)},
+      {"images", api::to_string(request.images)},
+      {"metrics", {{"final", api::to_json(c.final_error)}, {"indirect", api::to_json(c.indirect_error)}}},
+      {"base", side_json(c.base, request.images)},
+      {"other", side_json(c.other, request.images)},
+      {"difference",
+       {{"image", png_base64(c.difference.image)},
+        {"scale", c.difference.scale},
+        {"quantity", "|luminance(base) - luminance(other)| of the final images, linear; the top of the colour "
+                     "scale is `scale`"}}},
+      {"flip", flip_json(c, request.images)},
+      {"indirect_ratio", c.indirect_ratio ? nlohmann::json(*c.indirect_ratio) : nlohmann::json(nullptr)},
+      {"queue_ms", queue_ms}};
+  if (c.region) j["region"] = api::to_json(*c.region);
+  return j;
 }
 
 nlohmann::json sweep_json(const accuracy::SweepResult& result) {
@@ -139,7 +168,7 @@ void handle_compare(const httplib::Request& request, httplib::Response& response
   if (!accepted) return;
   auto job = std::make_shared<CompareJob>(std::move(accepted->request), request_arrival() + accepted->deadline);
   if (!run_job(job, accepted->deadline, request, response, service)) return;
-  send_json(response, comparison_json(*job->result, job->queue_wait_ms), 200, kImageJson);
+  send_json(response, comparison_json(*job->result, job->request, job->queue_wait_ms), 200, kImageJson);
 }
 
 void handle_sweep(const httplib::Request& request, httplib::Response& response, const httplib::ContentReader& content,

@@ -1,7 +1,10 @@
 #include "lab/accuracy/sweep.hpp"
 
+#include "image/flip.hpp"
 #include "image/metrics.hpp"
 #include "lab/accuracy/compare.hpp"
+#include "lab/accuracy/display_image.hpp"
+#include "lab/accuracy/displayed_flip.hpp"
 #include "lab/accuracy/rendered_views.hpp"
 
 #include <cmath>
@@ -67,6 +70,8 @@ SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const Swee
   result.reference = truth.report;
   if (observer.reference_done) observer.reference_done(truth.report);
   const image::Mask mask = metric_mask(*truth.result, request.mask);
+  const api::Tonemap tonemap = request.base.output.tonemap;
+  const image::Rgba8Image truth_display = display_image(truth.result->final_image, tonemap);
 
   // Each row once, untimed: its errors, and its warm-up.
   std::vector<api::RenderRequest> requests;
@@ -85,6 +90,8 @@ SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const Swee
     row.gpu_ms_range = {kUnmeasured, kUnmeasured};
     row.final_error = image::compare_images(views.final_image, truth.result->final_image, mask);
     row.indirect_error = image::compare_images(views.indirect, truth.result->indirect, mask);
+    row.final_error.flip = image::mean_flip(image::flip_map(views.display, truth_display), mask);
+    row.indirect_error.flip = image::mean_flip(displayed_flip(views.indirect, truth.result->indirect, tonemap), mask);
     result.table.rows.push_back(row);
     if (observer.row_measured) observer.row_measured(i, configurations.size(), row);
   }

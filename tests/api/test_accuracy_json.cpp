@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <string>
 
 namespace {
@@ -35,6 +37,50 @@ TEST(CompareRequest, ReferenceWithDefaults) {
   EXPECT_EQ(c.reference->bounces, 1u);
   EXPECT_EQ(c.mask, api::MetricMask::surfaces);
   EXPECT_EQ(c.heatmap_scale, 0.0f);
+  EXPECT_EQ(c.images, api::CompareImages::png);
+  EXPECT_FALSE(c.region);
+}
+
+TEST(CompareRequest, ReadsImagesAndARegionInsideTheOutput) {
+  const api::CompareRequest c = api::parse_compare_request(
+      R"({"base": {"output": {"width": 64, "height": 48}}, "reference": {}, "images": "pfm",
+          "region": {"x": 10, "y": 8, "width": 54, "height": 40}})");
+  EXPECT_EQ(c.images, api::CompareImages::pfm);
+  ASSERT_TRUE(c.region);
+  EXPECT_EQ(c.region->x, 10u);
+  EXPECT_EQ(c.region->y, 8u);
+  EXPECT_EQ(c.region->width, 54u);  // reaches the right edge exactly
+  EXPECT_EQ(c.region->height, 40u);
+  EXPECT_EQ(api::to_json(*c.region), nlohmann::json::parse(R"({"x": 10, "y": 8, "width": 54, "height": 40})"));
+  EXPECT_EQ(api::parse_compare_request(R"({"base": {}, "reference": {}, "images": "png"})").images,
+            api::CompareImages::png);
+}
+
+TEST(CompareRequest, RegionErrorsNameTheFieldAndTheSize) {
+  const auto region_error = [](const std::string& region) {
+    return field_of_compare_error(R"({"base": {"output": {"width": 64, "height": 48}}, "reference": {}, "region": )" +
+                                  region + "}");
+  };
+  EXPECT_EQ(region_error("[0, 0, 4, 4]"), "region");
+  EXPECT_EQ(region_error(R"({"x": 0, "y": 0, "width": 4})"), "region.height");
+  EXPECT_EQ(region_error(R"({"x": 0, "y": 0, "width": 4, "height": 4, "depth": 1})"), "region.depth");
+  EXPECT_EQ(region_error(R"({"x": 1.5, "y": 0, "width": 4, "height": 4})"), "region.x");
+  EXPECT_EQ(region_error(R"({"x": -1, "y": 0, "width": 4, "height": 4})"), "region.x");
+  EXPECT_EQ(region_error(R"({"x": 64, "y": 0, "width": 1, "height": 1})"), "region.x");
+  EXPECT_EQ(region_error(R"({"x": 0, "y": 48, "width": 1, "height": 1})"), "region.y");
+  EXPECT_EQ(region_error(R"({"x": 0, "y": 0, "width": 0, "height": 4})"), "region.width");
+  EXPECT_EQ(region_error(R"({"x": 60, "y": 0, "width": 5, "height": 4})"), "region.width");
+  EXPECT_EQ(region_error(R"({"x": 0, "y": 40, "width": 4, "height": 9})"), "region.height");
+  EXPECT_EQ(region_error(R"({"x": 0, "y": 0, "width": 4, "height": "4"})"), "region.height");
+  try {
+    api::parse_compare_request(R"({"base": {"output": {"width": 64, "height": 48}}, "reference": {},
+                                  "region": {"x": 60, "y": 0, "width": 5, "height": 4}})");
+    FAIL() << "accepted";
+  } catch (const api::RequestError& e) {
+    EXPECT_NE(std::string(e.what()).find("64 x 48"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("[1, 4]"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "reference": {}, "images": "exr"})"), "images");
 }
 
 TEST(CompareRequest, AgainstIsAMergePatchOfTheBase) {
@@ -110,6 +156,13 @@ TEST(SweepRequest, VariesTheBlockingToCompareTheModels) {
   EXPECT_EQ(rows[0].blocking, api::Blocking::projected);  // the LPV-off row keeps the base's
   EXPECT_EQ(api::request_for(s.base, rows[1]).lpv.blocking, api::Blocking::sh_lobe);
   EXPECT_EQ(api::request_for(s.base, rows[2]).lpv.blocking, api::Blocking::projected);
+}
+
+TEST(SweepRequest, AxisMayNameFlip) {
+  const api::SweepRequest s = api::parse_sweep_request(R"({"base": {}, "axis": {"image": "indirect", "metric": "flip"}})");
+  EXPECT_EQ(s.axis.metric, api::SweepMetric::flip);
+  EXPECT_EQ(s.axis.image, api::SweepImage::indirect);
+  EXPECT_EQ(api::to_string(s.axis.metric), "flip");
 }
 
 TEST(SweepRequest, KeepsAPlanTheBaseAsksFor) {

@@ -114,6 +114,17 @@ TEST(SweepTableRead, ATableReadBackIsTheTableNonFiniteNumbersIncluded) {
   EXPECT_TRUE(std::isnan(back.rows[0].passes[1].gpu_ms));
 }
 
+TEST(SweepTableRead, ATableFromBeforeFlipReadsItAsUnmeasured) {
+  api::SweepRow r = timed(1.0, 0.1);
+  r.final_error.flip = 0.25;
+  json table = api::to_json(api::SweepTable{{r}, {}});
+  EXPECT_EQ(api::sweep_table_from_json(table).rows[0].final_error.flip, 0.25);
+  table["rows"][0]["final_error"].erase("flip");
+  const api::SweepTable back = api::sweep_table_from_json(table);
+  EXPECT_TRUE(std::isnan(back.rows[0].final_error.flip));
+  EXPECT_EQ(back.rows[0].final_error.rmse, r.final_error.rmse) << "the other metrics still read";
+}
+
 TEST(SweepTableRead, WhatIsMissingOrWrongIsNamed) {
   json table = api::to_json(api::SweepTable{{timed(1.0, 0.1)}, {}});
   table["rows"][0]["settings"].erase("grid");

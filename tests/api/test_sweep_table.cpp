@@ -226,10 +226,11 @@ TEST(SweepCsv, HeaderHasEveryFieldOfTheRow) {
       "gpu_ms",                  "gpu_ms_min",               "gpu_ms_max",               "wall_ms",
       "final_rmse",              "final_relative_mse",       "final_psnr_db",
       "final_ssim",              "final_mean_abs_error",     "final_max_abs_error",
-      "final_mean_signed_error", "final_pixels",             "indirect_rmse",
-      "indirect_relative_mse",   "indirect_psnr_db",         "indirect_ssim",
-      "indirect_mean_abs_error", "indirect_max_abs_error",   "indirect_mean_signed_error",
-      "indirect_pixels",         "pareto",                   "pareto_uncertain"};
+      "final_mean_signed_error", "final_flip",               "final_pixels",
+      "indirect_rmse",           "indirect_relative_mse",    "indirect_psnr_db",
+      "indirect_ssim",           "indirect_mean_abs_error",  "indirect_max_abs_error",
+      "indirect_mean_signed_error", "indirect_flip",         "indirect_pixels",
+      "pareto",                  "pareto_uncertain"};
   EXPECT_EQ(csv[0], expected);
 }
 
@@ -240,8 +241,8 @@ TEST(SweepCsv, OneLinePerRowWithItsValues) {
   r.gpu_ms = 0.1;
   r.gpu_ms_range = {0.09, 0.125};
   r.wall_ms = 1.0 / 3.0;
-  r.final_error = {0.25, 0.5, 31.5, 0.875, 0.125, 2.0, -0.0625, 262144};
-  r.indirect_error = {1.25, 1.5, inf, 0.75, 1.125, 3.0, nan, 7};
+  r.final_error = {0.25, 0.5, 31.5, 0.875, 0.125, 2.0, -0.0625, 262144, 0.375};
+  r.indirect_error = {1.25, 1.5, inf, 0.75, 1.125, 3.0, nan, 7, 0.0625};
   r.pareto = true;
   r.pareto_uncertain = true;
   api::SweepRow off;
@@ -253,8 +254,8 @@ TEST(SweepCsv, OneLinePerRowWithItsValues) {
                                               "2",     "512",    "4",     "2",       "false",
                                               "cosine", "sh_lobe", "3", "0.1", "0.09", "0.125", "0.3333333333333333",         "0.25",
                                               "0.5",   "31.5",   "0.875", "0.125",   "2",
-                                              "-0.0625", "262144", "1.25", "1.5",    "inf",
-                                              "0.75",  "1.125",  "3",     "nan",     "7",
+                                              "-0.0625", "0.375", "262144", "1.25", "1.5",    "inf",
+                                              "0.75",  "1.125",  "3",     "nan",     "0.0625", "7",
                                               "true", "true"}));
   // The shortest text that reads back as the same double.
   EXPECT_EQ(std::stod(csv[1][column(csv[0], "wall_ms")]), 1.0 / 3.0);
@@ -321,9 +322,9 @@ TEST(SweepJson, EveryFieldWithItsValue) {
     "passes": [{"name": "shadow", "gpu_ms": 0.125}, {"name": "shade", "gpu_ms": 0.5}],
     "frames": 5, "gpu_ms": 0.625, "gpu_ms_range": [0.5, 0.75], "wall_ms": 2.5,
     "final_error": {"rmse": 0.25, "relative_mse": 0.5, "psnr_db": 31.5, "ssim": 0.875, "mean_abs_error": 0.125,
-                    "max_abs_error": 2.0, "mean_signed_error": -0.0625, "pixels": 262144},
+                    "max_abs_error": 2.0, "mean_signed_error": -0.0625, "pixels": 262144, "flip": 0.0},
     "indirect_error": {"rmse": 1.25, "relative_mse": 1.5, "psnr_db": 20.0, "ssim": 0.75, "mean_abs_error": 1.125,
-                       "max_abs_error": 3.0, "mean_signed_error": 0.5, "pixels": 7},
+                       "max_abs_error": 3.0, "mean_signed_error": 0.5, "pixels": 7, "flip": 0.0},
     "pareto": true, "pareto_uncertain": false, "label": "LPV off (direct light only)"})json");
   EXPECT_EQ(api::to_json(r), expected) << api::to_json(r).dump(2);
 }

@@ -1,12 +1,16 @@
-// POST /v1/compare and POST /v1/sweep over real HTTP: images that decode, the sweep's four
+// POST /v1/compare and POST /v1/sweep over real HTTP: images that decode (PNG, or PFM of the
+// linear images equal to /v1/render's), a region that restricts the metrics, the sweep's four
 // answers (JSON, CSV, SVG, a stream of events), a client that leaves mid-sweep, and the
 // reference's cost limit. The contract test sends the OpenAPI examples besides these.
 #include "http_checks.hpp"
 #include "server_process.hpp"
 
+#include "image/pfm.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <sstream>
 #include <string_view>
 #include <string>
@@ -62,6 +66,78 @@ TEST(HttpAccuracy, CompareOfIdenticalSettingsHasZeroErrorAndNullPsnr) {
   EXPECT_EQ(metrics["rmse"], 0.0);
   EXPECT_TRUE(metrics["psnr_db"].is_null());  // +inf: JSON has no infinity
   EXPECT_EQ(metrics["ssim"], 1.0);
+}
+
+image::RgbaF32Image decoded_pfm(const nlohmann::json& base64) {
+  const std::string bytes = base64_decode(base64.get<std::string>());
+  return image::decode_pfm({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
+}
+
+TEST(HttpAccuracy, CompareWithPfmImagesAnswersTheLinearRendersValues) {
+  auto http = shared_server().client();
+  const nlohmann::json base = {{"output", {{"width", 32}, {"height", 24}}}};
+  const nlohmann::json request = {{"base", base}, {"against", nlohmann::json::object()}, {"images", "pfm"}};
+  const auto r = http->Post("/v1/compare", request.dump(), "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body.substr(0, 500);
+  const auto body = nlohmann::json::parse(r->body);
+  EXPECT_EQ(body["images"], "pfm");
+  for (const auto& encoded : {body["base"]["image"], body["base"]["indirect"], body["other"]["image"],
+                              body["other"]["indirect"], body["flip"]["values"]}) {
+    const image::RgbaF32Image img = decoded_pfm(encoded);
+    EXPECT_EQ(img.width, 32u);
+    EXPECT_EQ(img.height, 24u);
+  }
+
+  // The same request rendered alone, as a PFM: the compare's base image holds its values.
+  nlohmann::json render = base;
+  render["output"]["format"] = "pfm";
+  const auto rendered = http->Post("/v1/render", render.dump(), "application/json");
+  ASSERT_TRUE(rendered);
+  ASSERT_EQ(rendered->status, 200);
+  const image::RgbaF32Image alone = image::decode_pfm(
+      {reinterpret_cast<const std::uint8_t*>(rendered->body.data()), rendered->body.size()});
+  const image::RgbaF32Image compared = decoded_pfm(body["base"]["image"]);
+  EXPECT_EQ(compared.pixels, alone.pixels);
+  EXPECT_GT(*std::max_element(compared.pixels.begin(), compared.pixels.end()), 0.0f) << "not a black image";
+
+  // Against itself: FLIP 0 everywhere, as much indirect light on both sides.
+  EXPECT_EQ(body["flip"]["mean"], 0.0);
+  EXPECT_EQ(body["metrics"]["final"]["flip"], 0.0);
+  EXPECT_EQ(body["metrics"]["indirect"]["flip"], 0.0);
+  const image::RgbaF32Image flip = decoded_pfm(body["flip"]["values"]);
+  EXPECT_EQ(*std::max_element(flip.pixels.begin(), flip.pixels.end()), 1.0f) << "alpha 1, values 0";
+  for (std::size_t i = 0; i < flip.pixels.size(); i += 4) ASSERT_EQ(flip.pixels[i], 0.0f);
+  EXPECT_EQ(body["indirect_ratio"], 1.0);
+  const auto heat = png_size(base64_decode(body["flip"]["image"].get<std::string>()));
+  ASSERT_TRUE(heat);
+  EXPECT_EQ(heat->width, 32);
+  EXPECT_NEAR(body["flip"]["viewing"]["pixels_per_degree"].get<double>(), 67.02, 0.01);
+}
+
+TEST(HttpAccuracy, ARegionRestrictsThePixelsCounted) {
+  auto http = shared_server().client();
+  const nlohmann::json region = {{"x", 4}, {"y", 2}, {"width", 10}, {"height", 6}};
+  const nlohmann::json request = {{"base", {{"output", {{"width", 32}, {"height", 24}}}, {"lpv", {{"grid", 8}}}}},
+                                  {"against", {{"lpv", {{"grid", 16}}}}},
+                                  {"mask", "all"},
+                                  {"region", region}};
+  const auto r = http->Post("/v1/compare", request.dump(), "application/json");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body.substr(0, 500);
+  const auto body = nlohmann::json::parse(r->body);
+  EXPECT_EQ(body["metrics"]["final"]["pixels"], 60);  // 10 x 6, every pixel with mask "all"
+  EXPECT_EQ(body["metrics"]["indirect"]["pixels"], 60);
+  EXPECT_EQ(body["region"], region);
+  EXPECT_EQ(body["images"], "png");
+  EXPECT_TRUE(body["indirect_ratio"].is_number());
+  EXPECT_GE(body["flip"]["mean"].get<double>(), 0.0);
+  EXPECT_EQ(body["flip"]["mean"], body["metrics"]["final"]["flip"]);
+
+  nlohmann::json outside = request;
+  outside["region"]["height"] = 23;  // rows 2..24 of 24
+  EXPECT_TRUE(is_json_error(http->Post("/v1/compare", outside.dump(), "application/json"), 400, "invalid_value",
+                            "region.height"));
 }
 
 TEST(HttpAccuracy, SweepAnswersJsonCsvAndSvg) {
