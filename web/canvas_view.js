@@ -3,7 +3,7 @@
 // difference. The view (zoom and pan) belongs to the canvas, not to a source, so it stays put
 // when the source or the frame changes. Drawing is synchronous and cheap: each source is kept
 // as an offscreen canvas already tone mapped, so a switch or a wipe step is one or two
-// drawImage calls (measured as "lpv:draw").
+// drawImage calls (the browser test times a key to its pixels drawn).
 
 import { displayImage } from './display_transfer.js';
 import { automaticScale, differenceImage, differenceValues } from './difference_maps.js';
@@ -28,6 +28,7 @@ export class CanvasView extends EventTarget {
   #flip = {};        // "x|y" -> { rgb } the server's FLIP map of x against y
   #difference = null;  // { key, canvas, scale, values } of the map on show
   #held = null;      // the source shown while Space is held
+  #warming = 0;      // the timer that makes the pair's map ahead of need
 
   constructor(canvas) {
     super();
@@ -42,8 +43,7 @@ export class CanvasView extends EventTarget {
     if (image) this.#images[name] = image;
     else delete this.#images[name];
     this.#repaint(name);
-    this.#difference = null;
-    this.draw();
+    this.#mapsChanged();
   }
 
   image(name) {
@@ -54,8 +54,16 @@ export class CanvasView extends EventTarget {
   setFlip(x, y, values) {
     if (values) this.#flip[`${x}|${y}`] = values;
     else delete this.#flip[`${x}|${y}`];
+    this.#mapsChanged();
+  }
+
+  // New pixels: the map on hand is stale. The pair's map is made again once the browser is
+  // idle, not when D is pressed, so that showing it costs a draw, not a pass over the image.
+  #mapsChanged() {
     this.#difference = null;
     this.draw();
+    clearTimeout(this.#warming);
+    this.#warming = setTimeout(() => this.difference(), 0);
   }
 
   #repaint(name) {
@@ -184,7 +192,6 @@ export class CanvasView extends EventTarget {
 
   // --- drawing ---------------------------------------------------------------------------
   draw() {
-    performance.mark('lpv:draw-start');
     const { canvas } = this;
     const ratio = window.devicePixelRatio || 1;
     const width = Math.round(canvas.clientWidth * ratio);
@@ -227,7 +234,6 @@ export class CanvasView extends EventTarget {
         ctx.strokeRect(region[0], region[1], region[2], region[3]);
       }
     }
-    performance.measure('lpv:draw', 'lpv:draw-start');
     this.dispatchEvent(new Event('drawn'));
   }
 }

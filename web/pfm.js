@@ -30,7 +30,7 @@ export function decodePfm(bytes) {
   // a time through an aligned view; anything else goes float by float.
   const hostLittleEndian = new Uint8Array(new Uint32Array([1]).buffer)[0] === 1;
   if ((scale < 0) === hostLittleEndian) {
-    const floats = new Float32Array(data.slice(at, at + count * 4).buffer);
+    const floats = new Float32Array(new Uint8Array(data.subarray(at, at + count * 4)).buffer);  // a copy: aligned
     for (let y = 0; y < height; y++) rgb.set(floats.subarray((height - 1 - y) * row, (height - y) * row), y * row);
   } else {
     const view = new DataView(data.buffer, data.byteOffset + at, count * 4);

@@ -78,9 +78,11 @@ export class ViewControls {
 
   #key(event) {
     if (event.ctrlKey || event.metaKey || event.altKey) return;
+    // Typing goes to form fields, and Space and Enter to the button in focus (a sweep's point).
     const target = event.target;
-    if (target instanceof HTMLElement && target.closest('input, select, textarea, button, [role="button"]') &&
-        !(event.key === 'Escape')) return;
+    const inField = target instanceof HTMLElement && target.closest('input, select, textarea');
+    const onButton = target instanceof Element && target.closest('button, [role="button"]');
+    if ((inField && event.key !== 'Escape') || (onButton && (event.key === ' ' || event.key === 'Enter'))) return;
     const handler = HANDLERS.get(event.key);
     if (!handler) return;
     // The camera's own keys (camera_drag.js) act on the focused canvas in camera mode.
@@ -177,14 +179,14 @@ export class ViewControls {
     }, { passive: false });
   }
 
-  // The whole pixels between two image points, clamped to the image; null if empty.
+  // The pixels whose centres lie between two image points, clamped to the image; null if none.
   #region(a, b) {
     const size = this.view.imageSize;
     const clamp = (v, max) => Math.min(max, Math.max(0, v));
-    const x0 = clamp(Math.floor(Math.min(a[0], b[0])), size.width);
-    const y0 = clamp(Math.floor(Math.min(a[1], b[1])), size.height);
-    const x1 = clamp(Math.ceil(Math.max(a[0], b[0])), size.width);
-    const y1 = clamp(Math.ceil(Math.max(a[1], b[1])), size.height);
+    const x0 = clamp(Math.round(Math.min(a[0], b[0])), size.width);
+    const y0 = clamp(Math.round(Math.min(a[1], b[1])), size.height);
+    const x1 = clamp(Math.round(Math.max(a[0], b[0])), size.width);
+    const y1 = clamp(Math.round(Math.max(a[1], b[1])), size.height);
     return x1 > x0 && y1 > y0 ? [x0, y0, x1 - x0, y1 - y0] : null;
   }
 }

@@ -139,3 +139,22 @@ export async function canvasPixels(page, points) {
     return points.map(([x, y]) => [...ctx.getImageData(Math.floor(x), Math.floor(y), 1, 1).data]);
   }, points);
 }
+
+// How long each key takes to change the canvas: the key's handler, the draw and its raster,
+// forced by reading a pixel back (a 2D canvas rasterises lazily), all in one task. Compositing
+// to the screen is the browser's and comes after.
+export async function keyToCanvasTimes(page, keys, rounds) {
+  return page.evaluate(({ keys, rounds }) => {
+    const ctx = document.getElementById('view-canvas').getContext('2d');
+    const times = [];
+    for (let round = 0; round < rounds; round++) {
+      for (const key of keys) {
+        const start = performance.now();
+        document.body.dispatchEvent(new KeyboardEvent('keydown', { key, bubbles: true }));
+        ctx.getImageData(0, 0, 1, 1);
+        times.push(performance.now() - start);
+      }
+    }
+    return times;
+  }, { keys, rounds });
+}
