@@ -11,7 +11,7 @@
 #   scripts/portable-bundle.sh [ARCHIVE [BUILD]]   # defaults: build-portable/lpv-portable.tar.xz, build
 #   # on the other machine:
 #   mkdir lpv && tar -xJf lpv-portable.tar.xz -C lpv
-#   lpv/run.sh ctest --test-dir build -E web_ui      # the suites (no browser there)
+#   lpv/run.sh ctest --test-dir build -E 'web_(ui|canvas)'  # the suites (no browser there)
 #   lpv/run.sh bench/bench-lpv.sh                  # the LPV numbers on its device
 #
 # run.sh runs its command from the bundle's root with the libraries, the layer and the test
@@ -71,7 +71,7 @@ printf '%s\n%s\n%s\n%s\n' "$build" "$root" "$corpus" "$haproxy" >"$stage/origin"
 cat >"$stage/run.sh" <<'RUN'
 #!/usr/bin/env bash
 # Runs a command from this bundle's root with its libraries, validation layer and test paths
-# (scripts/portable-bundle.sh). Example: ./run.sh ctest --test-dir build -E web_ui
+# (scripts/portable-bundle.sh). Example: ./run.sh ctest --test-dir build -E 'web_(ui|canvas)'
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 export LD_LIBRARY_PATH="$here/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"

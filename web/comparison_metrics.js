@@ -40,6 +40,8 @@ function measuredImage(request) {
 
 export class ComparisonMetrics extends EventTarget {
   #answers = new Map();  // body JSON -> answer (the latest few)
+  #last = {};            // pair -> the answer on show
+  #stale = new Set();    // pairs whose answer on show is for earlier settings
   #controller = null;
 
   constructor({ table, status, caption, errors }) {
@@ -84,24 +86,31 @@ export class ComparisonMetrics extends EventTarget {
       for (const [pair, body] of [...jobs]) jobs.push([`${pair} region`, { ...body, region: { x, y, width, height } }]);
     }
     if (!jobs.length) {
-      this.#show({}, region, b);
+      this.#last = {};
+      this.#show(region, b);
       this.status.textContent = 'Pin A (key A) or add the reference (key 3) to measure the error.';
       return;
     }
     this.errors.clear();
+    // The numbers on show stay, dimmed, until the new ones come: no flash of dashes per frame.
+    const wanted = new Set(jobs.map(([pair]) => pair));
+    for (const pair of Object.keys(this.#last)) if (!wanted.has(pair)) delete this.#last[pair];
+    this.#stale = new Set(Object.keys(this.#last));
+    this.#show(region, b);
     this.status.textContent = this.reference ? `Measuring against a ${this.reference.samples}-sample reference…` : 'Measuring A against B…';
     try {
-      const answers = {};
       // One at a time: the server renders them in turn anyway, and the first rows show sooner.
       for (const [pair, body] of jobs) {
-        answers[pair] = await this.#ask(body, signal);
+        const answer = await this.#ask(body, signal);
         if (signal.aborted) return;
-        this.#show(answers, region, b);
-        if (!pair.endsWith('region')) onImages(this.#images(pair, answers[pair], b));
+        this.#last[pair] = answer;
+        this.#stale.delete(pair);
+        this.#show(region, b);
+        if (!pair.endsWith('region')) onImages(this.#images(pair, answer, b));
       }
-      const reference = answers['b|reference']?.other.reference;
+      const reference = this.#last['b|reference']?.other.reference;
       this.status.textContent = reference
-        ? `Reference: ${reference.samples} samples, ${reference.bounces} bounce(s); its own noise is ${reference.noise_rmse.toPrecision(3)} RMSE ` +
+        ? `Reference: ${reference.samples} samples, ${reference.bounces} bounce${reference.bounces === 1 ? "" : "s"}; its own noise is ${reference.noise_rmse.toPrecision(3)} RMSE ` +
           `(${(reference.relative_noise * 100).toFixed(0)}% of its mean indirect light): smaller differences need more samples.`
         : 'A against B: no reference (key 3 adds it).';
     } catch (error) {
@@ -118,7 +127,8 @@ export class ComparisonMetrics extends EventTarget {
     return images;
   }
 
-  #show(answers, region, b) {
+  #show(region, b) {
+    const answers = this.#last;
     const image = measuredImage(b) === 'indirect' ? 'indirect' : 'final';
     const head = document.createElement('tr');
     head.append(cell('th', 'compared', 'col'), ...COLUMNS.map(([, label]) => cell('th', label, 'col')));
@@ -128,6 +138,7 @@ export class ComparisonMetrics extends EventTarget {
         const answer = answers[pair + suffix];
         const row = document.createElement('tr');
         row.dataset.pair = pair + suffix;
+        row.classList.toggle('stale', this.#stale.has(pair + suffix));
         const name = `${x} vs ${y}` + (suffix ? ` in ${region[2]}×${region[3]} at (${region[0]}, ${region[1]})` : '');
         row.append(cell('th', name, 'row'));
         for (const [key] of COLUMNS) {

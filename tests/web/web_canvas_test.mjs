@@ -11,7 +11,7 @@ import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { automaticScale, differenceColour, differenceValues } from '../../web/difference_maps.js';
 import { decodePfm, decodePfmBase64 } from '../../web/pfm.js';
-import { canvasPixels, keyToCanvasTimes, median, openPage, pngPixels, screenshot, server, setUp } from './page_harness.mjs';
+import { canvasPixels, frameShown, keyToCanvasTimes, median, openPage, pngPixels, screenshot, server, setUp } from './page_harness.mjs';
 
 await setUp('web_canvas');
 
@@ -234,6 +234,13 @@ test('zoom, pan and a measured rectangle survive source changes and a reload fro
   await page.keyboard.press('3');
   const zoom = await page.locator('#zoom-level').textContent();
   assert.equal(zoom, `${ZOOM * 100}%`, 'the zoom stays across sources');
+  // And across a new frame: B's grid changes, the view does not.
+  const before = await probe(page);
+  await page.locator('#lpv-grid').fill('12');
+  await frameShown(page, (request) => request.lpv?.grid === 12);
+  assert.equal(await page.locator('#zoom-level').textContent(), zoom, 'the zoom stays across frames');
+  await page.keyboard.press('3');
+  assert.deepEqual(await probe(page), before, 'the same reference pixels where they were (the reference does not depend on the grid)');
   await page.waitForTimeout(300);  // the URL follows the view once it rests
   const reopened = await openPage(t, new URL(page.url()).hash);
   assert.equal(await reopened.page.locator('#zoom-level').textContent(), zoom);
