@@ -110,7 +110,7 @@ export class ComparisonMetrics extends EventTarget {
       }
       const reference = this.#last['b|reference']?.other.reference;
       this.status.textContent = reference
-        ? `Reference: ${reference.samples} samples, ${reference.bounces} bounce${reference.bounces === 1 ? "" : "s"}; its own noise is ${reference.noise_rmse.toPrecision(3)} RMSE ` +
+        ? `Reference: ${reference.samples} samples, ${reference.bounces} bounce${reference.bounces === 1 ? '' : 's'}; its own noise is ${reference.noise_rmse.toPrecision(3)} RMSE ` +
           `(${(reference.relative_noise * 100).toFixed(0)}% of its mean indirect light): smaller differences need more samples.`
         : 'A against B: no reference (key 3 adds it).';
     } catch (error) {

@@ -239,14 +239,21 @@ test('zoom, pan and a measured rectangle survive source changes and a reload fro
   await page.locator('#lpv-grid').fill('12');
   await frameShown(page, (request) => request.lpv?.grid === 12);
   assert.equal(await page.locator('#zoom-level').textContent(), zoom, 'the zoom stays across frames');
+  await page.locator('#frame-area').focus();  // out of the grid's box, whose typing the keys leave alone
   await page.keyboard.press('3');
   assert.deepEqual(await probe(page), before, 'the same reference pixels where they were (the reference does not depend on the grid)');
+  // The rectangle's numbers for the grid now on show, once they are in (no longer dimmed).
+  await page.waitForFunction(() => {
+    const row = document.querySelector('#metrics tr[data-pair="b|reference region"]');
+    return row && !row.classList.contains('stale');
+  }, null, { timeout: 60_000 });
+  const partNow = Number(await page.locator('#metrics tr[data-pair="b|reference region"] td[data-metric="rmse"]').textContent());
   await page.waitForTimeout(300);  // the URL follows the view once it rests
   const reopened = await openPage(t, new URL(page.url()).hash);
   assert.equal(await reopened.page.locator('#zoom-level').textContent(), zoom);
   await metricsFilled(reopened.page, 'b|reference region');
   assert.equal(await reopened.page.locator('#source-label').textContent(), 'reference');
-  assert.equal(Number(await reopened.page.locator('#metrics tr[data-pair="b|reference region"] td[data-metric="rmse"]').textContent()), part);
+  assert.equal(Number(await reopened.page.locator('#metrics tr[data-pair="b|reference region"] td[data-metric="rmse"]').textContent()), partNow);
   await screenshot(reopened.page, '12-canvas-region');
   assert.deepEqual([...errors, ...reopened.errors], []);
 });
