@@ -23,7 +23,9 @@ constexpr std::array<std::string_view, 3> reference_keys{"samples", "bounces", "
 constexpr std::array<std::string_view, 7> compare_keys{"base",          "against", "reference", "mask",
                                                        "heatmap_scale", "images",  "region"};
 constexpr std::array<std::string_view, 4> region_keys{"x", "y", "width", "height"};
-constexpr std::array<std::string_view, 6> sweep_keys{"base", "parameters", "lpv_off_row", "reference", "axis", "mask"};
+constexpr std::array<std::string_view, 7> sweep_keys{"base",      "parameters", "lpv_off_row", "path_traced",
+                                                     "reference", "axis",       "mask"};
+constexpr std::array<std::string_view, 1> path_traced_keys{"samples"};
 constexpr std::array<std::string_view, 2> axis_keys{"image", "metric"};
 constexpr std::array masks{MetricMask::all, MetricMask::surfaces, MetricMask::interior};
 constexpr std::array compare_images{CompareImages::png, CompareImages::pfm};
@@ -128,7 +130,7 @@ SweepSettings settings_of(const Lpv& lpv) {
 
 // The combinations must each be a valid request, and not too many.
 void check_configurations(const SweepRequest& sweep) {
-  std::size_t count = sweep.lpv_off_row ? 1 : 0;
+  std::size_t count = (sweep.lpv_off_row ? 1 : 0) + sweep.path_traced_samples.size();
   std::size_t combinations = 1;
   for (const std::size_t n : {sweep.parameters.grid.size(), sweep.parameters.iterations.size(),
                               sweep.parameters.cascades.size(), sweep.parameters.rsm.size(),
@@ -201,6 +203,11 @@ SweepRequest parse_sweep_request(std::string_view json_text) {
   if (!document.at("base").contains("repeat")) sweep.base.repeat = sweep_default_repeat;
   if (auto v = obj.get("parameters")) sweep.parameters = read_parameters(*v);
   if (auto v = obj.get("lpv_off_row")) sweep.lpv_off_row = as_bool(*v);
+  if (auto v = obj.get("path_traced")) {
+    const Object path_traced(*v, path_traced_keys);
+    sweep.path_traced_samples = read_values<std::uint32_t>(path_traced.require("samples", "a list of samples per pixel"),
+        [](const Field& e) { return as_uint<std::uint32_t>(e, 1, limits::max_reference_samples); });
+  }
   if (auto v = obj.get("reference")) sweep.reference = read_reference(*v);
   if (auto v = obj.get("axis")) sweep.axis = reader::read_pareto_axis(*v);
   if (auto v = obj.get("mask")) sweep.mask = as_enum(*v, masks);
@@ -243,6 +250,12 @@ std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep) {
   // Each row names the transfer it ran.
   for (SweepSettings& s : grid) s.transfer = resolved_transfer({s.grid[0], s.grid[1], s.grid[2]}, s.transfer);
   configurations.insert(configurations.end(), grid.begin(), grid.end());
+  for (const std::uint32_t samples : sweep.path_traced_samples) {
+    SweepSettings traced = base;
+    traced.lpv = false;
+    traced.path_traced_samples = samples;
+    configurations.push_back(traced);
+  }
   return configurations;
 }
 

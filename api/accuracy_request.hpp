@@ -75,6 +75,10 @@ struct SweepRequest {
   RenderRequest base;
   SweepParameters parameters;
   bool lpv_off_row = true;  // a row without LPV (direct light only): the error LPV starts from
+  // "path_traced": {"samples": [...]}: a row of the reference path tracer at each of these
+  // samples per pixel, with the reference's bounces and a seed of its own, timed on the CPU:
+  // brute force on the same front as the LPV settings.
+  std::vector<std::uint32_t> path_traced_samples;
   ReferenceSettings reference;
   ParetoAxis axis;
   MetricMask mask = MetricMask::surfaces;
@@ -100,7 +104,7 @@ inline constexpr std::array<std::string_view, 9> sweep_parameter_keys{
     "grid", "iterations", "cascades", "rsm", "vpl_downsample", "bounces", "occlusion", "transfer", "blocking"};
 
 // Every combination of the parameters (the first of sweep_parameter_keys varies slowest),
-// after the LPV-off row when asked for.
+// after the LPV-off row when asked for, then the path-traced rows.
 std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep);
 // The base request with one configuration's settings.
 RenderRequest request_for(const RenderRequest& base, const SweepSettings& settings);

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace api {
@@ -104,7 +105,8 @@ std::string short_number(double x) {
 }
 
 std::string tooltip(const SweepRow& row, double error, const ParetoAxis& axis) {
-  std::string text = describe(row.settings) + "\nGPU " + short_number(row.gpu_ms) + " ms per frame (";
+  const char* device = row.settings.path_traced_samples > 0 ? "CPU " : "GPU ";
+  std::string text = describe(row.settings) + "\n" + device + short_number(row.gpu_ms) + " ms per frame (";
   if (row.frames > 1)
     text += "median of " + std::to_string(row.frames) + ", " + short_number(row.gpu_ms_range.first) + "–" +
             short_number(row.gpu_ms_range.second) + "; ";
@@ -161,22 +163,37 @@ void draw_axes(SvgWriter& svg, const LogAxis& x, const LogAxis& y, const ParetoA
   svg.close();
   draw_frame(svg);
   svg.element("text", {{"x", svg_number((left + right) / 2)}, {"y", svg_number(bottom + 38)}, {"text-anchor", "middle"}},
-              "GPU time per frame, ms, log scale");
+              "time per frame, ms, log scale (on the GPU; path-traced rows on the CPU)");
   const std::string y_middle = svg_number((top + bottom) / 2);
   svg.element("text", {{"x", "18"}, {"y", y_middle}, {"text-anchor", "middle"},
                        {"transform", "rotate(-90 18 " + y_middle + ")"}},
               error_axis_label(axis));
 }
 
-// A disc drawn as a rounded square, so that every <circle> in the document is a row.
+// A disc drawn as a rounded square, so that every <circle> in the document is a raster row.
 void legend_disc(SvgWriter& svg, double cx, double cy, double r, const char* colour) {
   svg.element("rect", {{"x", svg_number(cx - r)}, {"y", svg_number(cy - r)}, {"width", svg_number(2 * r)},
                        {"height", svg_number(2 * r)}, {"rx", svg_number(r)}, {"fill", colour}});
 }
 
-void draw_legend(SvgWriter& svg) {
+// A row drawn as a diamond: a path-traced row, in the plot and its legend.
+std::string diamond_path(double cx, double cy, double r) {
+  std::string d;
+  for (const auto& [command, x, y] : {std::tuple{"M", cx, cy - r}, std::tuple{" L", cx + r, cy},
+                                      std::tuple{" L", cx, cy + r}, std::tuple{" L", cx - r, cy}}) {
+    d.append(command).append(svg_number(x)).append(" ").append(svg_number(y));
+  }
+  return d.append(" Z");
+}
+
+void draw_legend(SvgWriter& svg, bool path_traced) {
   const double y = top - 12;
   svg.open("g", {{"class", "legend"}});
+  if (path_traced) {
+    // Drawn as a plain path without data-row: only the rows' markers are rows.
+    svg.element("path", {{"d", diamond_path(right - 330, y, row_radius + 1.5)}, {"fill", row_colour}});
+    svg.element("text", {{"x", svg_number(right - 320)}, {"y", svg_number(y + 4)}}, "path traced");
+  }
   legend_disc(svg, right - 210, y, row_radius, row_colour);
   svg.element("text", {{"x", svg_number(right - 200)}, {"y", svg_number(y + 4)}}, "setting");
   svg.element("line", {{"x1", svg_number(right - 130)}, {"y1", svg_number(y)}, {"x2", svg_number(right - 106)},
@@ -199,18 +216,27 @@ void draw_whisker(SvgWriter& svg, const Point& point, const LogAxis& x, const Lo
                          {"stroke-opacity", "0.6"}});
 }
 
-// A row's circle, the only thing in the plot that takes the pointer (the document takes none).
-void draw_circle(SvgWriter& svg, const Point& point, const LogAxis& x, const LogAxis& y, const ParetoAxis& axis) {
+// A row's marker, the only thing in the plot that takes the pointer (the document takes none):
+// a circle for a raster frame, a diamond for a path-traced row.
+void draw_marker(SvgWriter& svg, const Point& point, const LogAxis& x, const LogAxis& y, const ParetoAxis& axis) {
   const bool pareto = point.row->pareto;
-  svg.open("circle", {{"class", pareto ? "row pareto" : "row"},
-                      {"cx", svg_number(x.pixel(point.time))},
-                      {"cy", svg_number(y.pixel(point.error))},
-                      {"r", svg_number(pareto ? pareto_radius : row_radius)},
-                      {"fill", pareto ? pareto_colour : row_colour},
-                      {"fill-opacity", pareto ? "1" : "0.7"},
-                      {"stroke", "#fff"},
-                      {"data-row", std::to_string(point.index)},
-                      {"pointer-events", "visiblePainted"}});
+  const bool path_traced = point.row->settings.path_traced_samples > 0;
+  const double cx = x.pixel(point.time), cy = y.pixel(point.error);
+  const double r = pareto ? pareto_radius : row_radius;
+  std::vector<std::pair<std::string, std::string>> shape;
+  if (path_traced) shape = {{"d", diamond_path(cx, cy, r + 1.5)}};
+  else shape = {{"cx", svg_number(cx)}, {"cy", svg_number(cy)}, {"r", svg_number(r)}};
+  std::string classes = pareto ? "row pareto" : "row";
+  if (path_traced) classes.append(" path-traced");
+  shape.insert(shape.begin(), {"class", classes});
+  for (auto attribute : std::initializer_list<std::pair<std::string, std::string>>{
+           {"fill", pareto ? pareto_colour : row_colour},
+           {"fill-opacity", pareto ? "1" : "0.7"},
+           {"stroke", "#fff"},
+           {"data-row", std::to_string(point.index)},
+           {"pointer-events", "visiblePainted"}})
+    shape.push_back(attribute);
+  svg.open(path_traced ? "path" : "circle", shape);
   svg.element("title", {}, tooltip(*point.row, point.error, axis));
   svg.close();
 }
@@ -258,7 +284,7 @@ std::string to_svg_plot(const SweepTable& table, const std::string& title) {
       points.push_back(point);
   }
 
-  // No text, line or legend takes the pointer: only the rows' circles do (draw_circle).
+  // No text, line or legend takes the pointer: only the rows' markers do (draw_marker).
   SvgWriter svg(width, height, {{"font-family", "sans-serif"}, {"font-size", "12"}, {"pointer-events", "none"}});
   svg.element("title", {}, title);
   svg.element("rect", {{"width", "100%"}, {"height", "100%"}, {"fill", "#fff"}});
@@ -291,7 +317,7 @@ std::string to_svg_plot(const SweepTable& table, const std::string& title) {
   const LogAxis y = fit_log_axis(min_error->error, max_error->error, bottom, top);  // up is smaller pixels
 
   draw_axes(svg, x, y, table.axis);
-  draw_legend(svg);
+  draw_legend(svg, std::ranges::any_of(table.rows, [](const SweepRow& row) { return row.settings.path_traced_samples > 0; }));
   // Every circle can be clicked wherever it lies: the lines (whiskers, the front's staircase)
   // lie under all circles and take no pointer, and the front's larger circles lie under the
   // other rows' smaller ones, so a row drawn on a front circle still shows and takes the
@@ -301,8 +327,8 @@ std::string to_svg_plot(const SweepTable& table, const std::string& title) {
   svg.open("g", {{"class", "rows"}});
   for (const Point& point : points) draw_whisker(svg, point, x, y);
   draw_staircase(svg, front, x, y);
-  for (const Point& point : front) draw_circle(svg, point, x, y, table.axis);
-  for (const Point& point : others) draw_circle(svg, point, x, y, table.axis);
+  for (const Point& point : front) draw_marker(svg, point, x, y, table.axis);
+  for (const Point& point : others) draw_marker(svg, point, x, y, table.axis);
   svg.close();
   return svg.finish();
 }

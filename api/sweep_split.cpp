@@ -25,7 +25,10 @@ std::vector<nlohmann::json> split_sweep(const nlohmann::json& request, std::size
     const std::size_t end = begin + values.size() / n + (k < values.size() % n ? 1 : 0);
     nlohmann::json part = request;
     part["parameters"][key] = nlohmann::json(values.begin() + std::ptrdiff_t(begin), values.begin() + std::ptrdiff_t(end));
-    if (k > 0) part["lpv_off_row"] = false;
+    if (k > 0) {  // the rows that vary nothing go with the first part only
+      part["lpv_off_row"] = false;
+      part.erase("path_traced");
+    }
     split.push_back(std::move(part));
     begin = end;
   }

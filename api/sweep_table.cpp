@@ -67,9 +67,10 @@ std::vector<std::string> pass_names(const std::vector<SweepRow>& rows) {
 }
 
 std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
-  std::vector<std::string> header = {"lpv",      "grid_x", "grid_y",         "grid_z",  "iterations",
-                                     "cascades", "rsm",    "vpl_downsample", "bounces", "occlusion", "transfer", "blocking",
-                                     "frames",   "gpu_ms", "gpu_ms_min",     "gpu_ms_max", "wall_ms"};
+  std::vector<std::string> header = {"lpv",      "path_traced_samples", "grid_x",  "grid_y",    "grid_z",
+                                     "iterations", "cascades",          "rsm",     "vpl_downsample", "bounces",
+                                     "occlusion", "transfer",           "blocking", "device",    "frames",
+                                     "gpu_ms",   "gpu_ms_min",          "gpu_ms_max", "wall_ms"};
   for (const char* image : {"final_", "indirect_"}) {
     for (const auto& [name, field] : error_metric_fields) header.push_back(std::string(image) + name);
     header.push_back(std::string(image) + "pixels");
@@ -83,6 +84,7 @@ std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
 std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::string>& passes) {
   const SweepSettings& s = row.settings;
   std::vector<std::string> fields = {bool_text(s.lpv),
+                                     std::to_string(s.path_traced_samples),
                                      std::to_string(s.grid[0]),
                                      std::to_string(s.grid[1]),
                                      std::to_string(s.grid[2]),
@@ -94,6 +96,7 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
                                      bool_text(s.occlusion),
                                      to_string(s.transfer),
                                      to_string(s.blocking),
+                                     row.device,
                                      std::to_string(row.frames),
                                      number_text(row.gpu_ms),
                                      number_text(row.gpu_ms_range.first),
@@ -129,6 +132,7 @@ json number_json(double x) { return std::isfinite(x) ? json(x) : json(nullptr); 
 
 json settings_json(const SweepSettings& s) {
   return {{"lpv", s.lpv},
+          {"path_traced_samples", s.path_traced_samples},
           {"grid", s.grid},
           {"iterations", s.iterations},
           {"cascades", s.cascades},
@@ -143,6 +147,7 @@ json settings_json(const SweepSettings& s) {
 }  // namespace
 
 std::string describe(const SweepSettings& s) {
+  if (s.path_traced_samples > 0) return "path traced, " + counted(s.path_traced_samples, "sample") + " per pixel";
   if (!s.lpv) return "LPV off (direct light only)";
   return "LPV " + std::to_string(s.grid[0]) + "x" + std::to_string(s.grid[1]) + "x" + std::to_string(s.grid[2]) +
          ", " + counted(s.iterations, "iteration") + ", " + counted(s.cascades, "cascade") + ", RSM " +
@@ -241,6 +246,7 @@ nlohmann::json to_json(const SweepRow& row) {
   for (const PassTime& pass : row.passes) passes.push_back({{"name", pass.name}, {"gpu_ms", number_json(pass.gpu_ms)}});
   return {{"settings", settings_json(row.settings)},
           {"label", describe(row.settings)},
+          {"device", row.device},
           {"passes", std::move(passes)},
           {"frames", row.frames},
           {"gpu_ms", number_json(row.gpu_ms)},

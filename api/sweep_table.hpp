@@ -17,14 +17,18 @@
 
 namespace api {
 
-// The LPV settings a sweep varies (the rest of the request is the sweep's base).
+// The LPV settings a sweep varies (the rest of the request is the sweep's base), or a row of
+// the reference path tracer at a number of samples per pixel.
 struct SweepSettings {
-  bool lpv = true;  // false: the LPV-off row (direct light only)
+  bool lpv = true;  // false: the LPV-off row (direct light only), or a path-traced row
   std::array<std::uint32_t, 3> grid{32, 32, 32};
   std::uint32_t iterations = 8, cascades = 1, rsm = 256, vpl_downsample = 1, bounces = 1;
   bool occlusion = true;
   Transfer transfer = Transfer::sharpened;
   Blocking blocking = Blocking::projected;
+  // > 0: not a raster frame but the reference path tracer (reference/path_tracer.hpp) at this
+  // many paths per pixel, with the reference's bounces and a seed of its own; lpv is false.
+  std::uint32_t path_traced_samples = 0;
 };
 
 // The settings in words, as the plot's tooltips and the web page's sweep table show them:
@@ -38,9 +42,13 @@ struct PassTime {
 
 struct SweepRow {
   SweepSettings settings;
+  // What the row ran on, in words: the GPU device's name for a raster frame, "CPU: N threads
+  // (path tracer)" for a path-traced row. Its times (gpu_ms and the rest) are on that device:
+  // a path-traced row's are the trace's wall time on the CPU.
+  std::string device;
   std::vector<PassTime> passes;  // the passes that ran, in order
   std::uint32_t frames = 0;      // timed frames (0: none yet, the times are NaN)
-  double gpu_ms = 0.0;           // median frame GPU time (sum of passes)
+  double gpu_ms = 0.0;           // median frame time on `device` (a GPU's: the sum of passes)
   // The fastest and slowest of the frames' GPU times: how far the median can be trusted.
   // With 3 frames the median lies in it with 75% confidence, with 5 with 94%.
   std::pair<double, double> gpu_ms_range{0.0, 0.0};
@@ -92,8 +100,9 @@ std::string error_label(const ParetoAxis& axis);
 void mark_pareto(SweepTable& table);
 
 // RFC 4180 (CRLF line ends, fields with a comma, quote or line break quoted): a header and
-// one line per row with every field of the row: lpv, grid_x, grid_y, grid_z, iterations,
-// cascades, rsm, vpl_downsample, bounces, occlusion, transfer, blocking, frames, gpu_ms, gpu_ms_min,
+// one line per row with every field of the row: lpv, path_traced_samples, grid_x, grid_y,
+// grid_z, iterations, cascades, rsm, vpl_downsample, bounces, occlusion, transfer, blocking,
+// device, frames, gpu_ms, gpu_ms_min,
 // gpu_ms_max, wall_ms, final_<metric> and indirect_<metric> for every ErrorMetrics field,
 // pareto, pareto_uncertain, then one "<pass>_gpu_ms" column
 // per pass name (the union over the rows, in pipeline order; empty where the pass did not
@@ -102,8 +111,9 @@ void mark_pareto(SweepTable& table);
 // mark_pareto first.
 std::string to_csv(const SweepTable& table);
 
-// {"settings": {"lpv", "grid": [x, y, z], "iterations", "cascades", "rsm", "vpl_downsample",
-//  "bounces", "occlusion", "transfer", "blocking"}, "passes": [{"name", "gpu_ms"}], "frames", "gpu_ms",
+// {"settings": {"lpv", "path_traced_samples", "grid": [x, y, z], "iterations", "cascades", "rsm",
+//  "vpl_downsample", "bounces", "occlusion", "transfer", "blocking"}, "label", "device",
+//  "passes": [{"name", "gpu_ms"}], "frames", "gpu_ms",
 //  "gpu_ms_range": [min, max], "wall_ms", "final_error": {every ErrorMetrics field},
 //  "indirect_error": {...}, "pareto", "pareto_uncertain"}.
 // JSON has no infinity or NaN: a non-finite number (e.g. psnr_db of identical images, +inf)
@@ -112,16 +122,18 @@ nlohmann::json to_json(const SweepRow& row);
 // {"axis": {"image": "final", "metric": "rmse"}, "rows": [to_json(row), ...]}
 nlohmann::json to_json(const SweepTable& table);
 // The inverse of to_json (a null number is NaN, but a null psnr_db is +inf, as in
-// to_json(ErrorMetrics), and a missing flip, from a table older than FLIP, is NaN); members it
+// to_json(ErrorMetrics), and a missing flip, from a table older than FLIP, is NaN; a missing
+// path_traced_samples is 0 and a missing device empty, from a table older than both); members it
 // does not know are ignored. Throws RequestError naming
 // the field that is missing or wrong, with `path` before it. Defined in sweep_table_read.cpp.
 SweepTable sweep_table_from_json(const nlohmann::json& json, const std::string& path = "table");
 
-// A self-contained SVG (no script, no external font or link), 720x480: GPU time against
-// error_of, both on log scales, every row a circle with a tooltip, the rows marked pareto
+// A self-contained SVG (no script, no external font or link), 720x480: frame time against
+// error_of, both on log scales, every raster row a circle and every path-traced row a diamond
+// (a legend says which), each with a tooltip, the rows marked pareto
 // highlighted and joined by the front's staircase. Rows a log scale cannot place (a time or
 // error that is zero, negative or not finite) are left out and counted in a note under the
-// plot. The title is escaped like every text. Each row's circle names the row's index in the
+// plot. The title is escaped like every text. Each row's marker names the row's index in the
 // table (data-row), so a page that shows the plot can tell which row was picked: the web
 // page shows this plot, it draws none of its own. Call mark_pareto first.
 std::string to_svg_plot(const SweepTable& table, const std::string& title);

@@ -41,6 +41,8 @@ ErrorMetrics read_errors(const Field& f) {
 SweepSettings read_settings(const Field& f) {
   SweepSettings s;
   s.lpv = as_bool(f.member("lpv"));
+  // Tables written before path-traced rows have no count: raster rows.
+  if (auto samples = f.optional_member("path_traced_samples")) s.path_traced_samples = as_uint(*samples, 0u, kMaxCount);
   const glm::uvec3 grid = read_grid(f.member("grid"));
   s.grid = {grid.x, grid.y, grid.z};
   s.iterations = as_uint(f.member("iterations"), 0u, kMaxCount);
@@ -57,6 +59,7 @@ SweepSettings read_settings(const Field& f) {
 SweepRow read_row(const Field& f) {
   SweepRow row;
   row.settings = read_settings(f.member("settings"));
+  if (auto device = f.optional_member("device")) row.device = as_string(*device, 256);
   for (const Field& pass : as_array(f.member("passes"), kMaxCount))
     row.passes.push_back({as_string(pass.member("name"), 64), nullable(pass.member("gpu_ms"), NAN)});
   row.frames = as_uint(f.member("frames"), 0u, kMaxCount);

@@ -33,11 +33,12 @@ void check_embedded(const api::RenderRequest& request, const RenderLimits& limit
   }
 }
 
+// `field` names the samples: "reference.samples", "path_traced.samples[2]".
 void check_reference(const api::ReferenceSettings& reference, const api::Output& output, const RenderLimits& limits,
-                     const std::string& path) {
+                     const std::string& field) {
   const std::uint64_t paths = std::uint64_t(reference.samples) * output.width * output.height;
   if (paths > limits.max_reference_paths)
-    throw LimitExceeded(path + ".samples", "samples x pixels is " + std::to_string(paths) +
+    throw LimitExceeded(field, "samples x pixels is " + std::to_string(paths) +
                                                " paths; this server allows at most " +
                                                std::to_string(limits.max_reference_paths));
 }
@@ -47,14 +48,20 @@ void check_reference(const api::ReferenceSettings& reference, const api::Output&
 void check_limits(const api::CompareRequest& request, const RenderLimits& limits) {
   check_embedded(request.base, limits, "base");
   if (request.other) check_embedded(*request.other, limits, "against");
-  if (request.reference) check_reference(*request.reference, request.base.output, limits, "reference");
+  if (request.reference) check_reference(*request.reference, request.base.output, limits, "reference.samples");
 }
 
 void check_limits(const api::SweepRequest& request, const RenderLimits& limits) {
   check_embedded(request.base, limits, "base");
   for (const api::SweepSettings& settings : api::sweep_configurations(request))
-    check_embedded(api::request_for(request.base, settings), limits, "parameters");
-  check_reference(request.reference, request.base.output, limits, "reference");
+    if (settings.path_traced_samples == 0) check_embedded(api::request_for(request.base, settings), limits, "parameters");
+  check_reference(request.reference, request.base.output, limits, "reference.samples");
+  // A path-traced row costs what a reference of its samples costs.
+  for (std::size_t i = 0; i < request.path_traced_samples.size(); ++i) {
+    api::ReferenceSettings row = request.reference;
+    row.samples = request.path_traced_samples[i];
+    check_reference(row, request.base.output, limits, "path_traced.samples[" + std::to_string(i) + "]");
+  }
 }
 
 void check_limits(const api::BenchSuite& suite, const RenderLimits& limits) {

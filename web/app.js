@@ -289,10 +289,16 @@ $('help-close').addEventListener('click', toggleHelp);
 // --- the rest of the page -------------------------------------------------------------------
 new SweepPanel({
   state,
+  // A path-traced row is not a setting of B: it loads as the reference at its samples.
+  onPathTraced: (samples) => {
+    $('reference-samples').value = String(samples);
+    traceReference();
+    show('reference');
+  },
   errors: errorsFor($('sweep-panel'), $('sweep-error'), ['base.']),
   elements: {
     form: $('sweep-form'), run: $('sweep-run'), stop: $('sweep-stop'), size: $('sweep-size'), samples: $('sweep-samples'),
-    metric: $('sweep-metric'), image: $('sweep-image'), lpvOff: $('sweep-lpv-off'),
+    metric: $('sweep-metric'), image: $('sweep-image'), lpvOff: $('sweep-lpv-off'), pathTraced: $('sweep-path-traced'),
     occlusionOn: $('sweep-occlusion-on'), occlusionOff: $('sweep-occlusion-off'), iterationsControl: $('sweep-iterations-control'),
     lists: {
       grid: $('sweep-grid'), iterations: $('sweep-iterations'), cascades: $('sweep-cascades'), rsm: $('sweep-rsm'),

@@ -21,8 +21,8 @@ export class SweepPanel {
   #rows = [];
   #plot = null;  // the server's SVG plot, once the sweep is done
 
-  constructor({ elements, state, errors }) {
-    Object.assign(this, { elements, state, errors });
+  constructor({ elements, state, errors, onPathTraced }) {
+    Object.assign(this, { elements, state, errors, onPathTraced });
     elements.form.addEventListener('submit', (event) => {
       event.preventDefault();
       this.run();
@@ -53,6 +53,7 @@ export class SweepPanel {
     if (elements.occlusionOn.checked) occlusion.push(true);
     if (elements.occlusionOff.checked) occlusion.push(false);
     if (occlusion.length) parameters.occlusion = occlusion;
+    const pathTraced = parseList(elements.pathTraced.value);
     const base = this.state.request;
     const side = Number(elements.size.value);
     base.output = { ...base.output, width: side, height: side };
@@ -60,6 +61,7 @@ export class SweepPanel {
       base,
       parameters,
       lpv_off_row: elements.lpvOff.checked,
+      ...(pathTraced.length ? { path_traced: { samples: pathTraced } } : {}),
       reference: { samples: Number(elements.samples.value) },
       axis: { image: elements.image.value, metric: elements.metric.value },
     };
@@ -126,14 +128,14 @@ export class SweepPanel {
     const table = this.elements.table;
     const caption = Object.assign(document.createElement('caption'), { textContent: 'The rows: load one into the settings' });
     const head = document.createElement('tr');
-    for (const title of ['configuration', 'GPU ms', `${axis.metric} (${axis.image})`, 'Pareto', ''])
+    for (const title of ['configuration', 'ms', `${axis.metric} (${axis.image})`, 'Pareto', 'device', ''])
       head.append(Object.assign(document.createElement('th'), { textContent: title, scope: 'col' }));
     const body = rows.map((row) => {
       const tr = document.createElement('tr');
       const load = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Load' });
       load.addEventListener('click', () => this.load(row));
       const error = row[`${axis.image}_error`][axis.metric];
-      for (const text of [row.label, timeText(row), error === null ? '∞' : error.toPrecision(3), paretoText(row)])
+      for (const text of [row.label, timeText(row), error === null ? '∞' : error.toPrecision(3), paretoText(row), row.device])
         tr.append(Object.assign(document.createElement('td'), { textContent: text }));
       const cell = document.createElement('td');
       cell.append(load);
@@ -147,12 +149,15 @@ export class SweepPanel {
   #hover(row, axis) {
     const error = row[`${axis.image}_error`][axis.metric];
     this.elements.hover.textContent = `${row.label}: ${axis.metric} of the ${axis.image} image ${error === null ? '∞' : error.toPrecision(3)}, ` +
-      `${timeText(row)} ms on the device. Click or Enter loads it as B.`;
+      `${timeText(row)} ms on ${row.device}. Click or Enter loads it ` +
+      (row.settings.path_traced_samples > 0 ? 'as the reference.' : 'as B.');
   }
 
   // A row's settings into the request's LPV fields (the rest of the settings stay): that is B.
+  // A path-traced row is traced as the reference instead.
   load(row) {
     const { settings } = row;
+    if (settings.path_traced_samples > 0) return this.onPathTraced(settings.path_traced_samples);
     if (!settings.lpv) return this.state.setAll({ 'lpv.enabled': false });
     const cubic = settings.grid.every((cells) => cells === settings.grid[0]);
     const values = { 'lpv.enabled': true, 'lpv.grid': cubic ? settings.grid[0] : settings.grid };

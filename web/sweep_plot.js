@@ -1,7 +1,7 @@
 // The sweep's plot is the server's own (api::to_svg_plot, the `plot` of the stream's done
 // event, the same document as ?format=svg): the page draws none of its own, it only makes
-// the plot's points buttons. Each circle names its row (data-row); clicking one (or Enter or
-// Space on it) loads that row's configuration.
+// the plot's points buttons. Each marker (a circle, or a diamond for a path-traced row) names
+// its row (data-row); clicking one (or Enter or Space on it) loads that row's configuration.
 
 // svgText: the server's SVG; rows: the table's rows; onPick(row) loads a row; onHover(row)
 // says what the row under the pointer or the focus is.
@@ -14,7 +14,7 @@ export function sweepPlot(svgText, rows, onPick, onHover) {
   svg.removeAttribute('height');
   svg.setAttribute('class', 'sweep');
   svg.setAttribute('role', 'group');
-  for (const point of svg.querySelectorAll('circle[data-row]')) {
+  for (const point of svg.querySelectorAll('[data-row]')) {
     const row = rows[Number(point.dataset.row)];
     if (!row) continue;
     // The tooltip's lines after the first (which is the row's label) say its time and error.

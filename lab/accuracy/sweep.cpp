@@ -7,11 +7,15 @@
 #include "lab/accuracy/displayed_flip.hpp"
 #include "lab/accuracy/rendered_views.hpp"
 
+#include "reference/scene_bvh.hpp"
+
 #include <cmath>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <random>
+#include <thread>
 
 namespace accuracy {
 namespace {
@@ -50,6 +54,33 @@ void set_times(api::SweepRow& row, const RowFrames& frames) {
   for (const std::string& name : frames.pass_order) row.passes.push_back({name, median_of(frames.pass_ms.at(name))});
 }
 
+// What a path-traced row runs on, for the table's device column.
+std::string path_tracer_device() {
+  return "CPU: " + std::to_string(std::max(1u, std::thread::hardware_concurrency())) + " threads (path tracer)";
+}
+
+// A path-traced row's settings: the reference's bounces, a seed of its own (the reference's
+// plus one plus the row's place among them), so that its noise is not the reference's.
+reference::Settings traced_settings(const api::SweepRequest& request, std::uint32_t samples, std::size_t index) {
+  return {.samples = samples, .bounces = request.reference.bounces, .seed = request.reference.seed + 1 + index};
+}
+
+// The ground truth a row is measured against, and what it takes to trace a row.
+struct Truth {
+  const reference::Result& result;
+  const image::Rgba8Image& display;
+  const image::Mask& mask;
+  api::Tonemap tonemap;
+};
+
+void measure_errors(api::SweepRow& row, const image::RgbaF32Image& final_image, const image::RgbaF32Image& indirect,
+                    const image::Rgba8Image& display, const Truth& truth) {
+  row.final_error = image::compare_images(final_image, truth.result.final_image, truth.mask);
+  row.indirect_error = image::compare_images(indirect, truth.result.indirect, truth.mask);
+  row.final_error.flip = image::mean_flip(image::flip_map(display, truth.display), truth.mask);
+  row.indirect_error.flip = image::mean_flip(displayed_flip(indirect, truth.result.indirect, truth.tonemap), truth.mask);
+}
+
 // Fisher-Yates with the generator's own numbers: std::shuffle's use of them is the library's
 // choice, and the order should be the same wherever the sweep runs.
 void shuffle(std::vector<std::size_t>& order, std::mt19937& generator) {
@@ -72,6 +103,13 @@ SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const Swee
   const image::Mask mask = metric_mask(*truth.result, request.mask);
   const api::Tonemap tonemap = request.base.output.tonemap;
   const image::Rgba8Image truth_display = display_image(truth.result->final_image, tonemap);
+  const Truth measure{*truth.result, truth_display, mask, tonemap};
+  // Path-traced rows share one BVH, built once like the rasteriser's scene upload: their time
+  // is the trace's.
+  std::optional<reference::SceneBvh> bvh;
+  const reference::View view = reference_view(scene, request.base);
+  std::size_t traced_rows = 0;
+  std::vector<std::optional<reference::Settings>> traced(configurations.size());  // of path-traced rows
 
   // Each row once, untimed: its errors, and its warm-up.
   std::vector<api::RenderRequest> requests;
@@ -80,18 +118,24 @@ SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const Swee
       result.complete = false;
       break;
     }
-    requests.push_back(api::request_for(request.base, configurations[i]));
-    api::RenderRequest once = requests.back();
-    once.repeat = 1;
-    const RenderedViews views = render_views(bench.renderer, once);
     api::SweepRow row;
     row.settings = configurations[i];
     row.gpu_ms = row.wall_ms = kUnmeasured;
     row.gpu_ms_range = {kUnmeasured, kUnmeasured};
-    row.final_error = image::compare_images(views.final_image, truth.result->final_image, mask);
-    row.indirect_error = image::compare_images(views.indirect, truth.result->indirect, mask);
-    row.final_error.flip = image::mean_flip(image::flip_map(views.display, truth_display), mask);
-    row.indirect_error.flip = image::mean_flip(displayed_flip(views.indirect, truth.result->indirect, tonemap), mask);
+    requests.push_back(api::request_for(request.base, configurations[i]));
+    if (const std::uint32_t samples = configurations[i].path_traced_samples; samples > 0) {
+      if (!bvh) bvh.emplace(scene);
+      traced[i] = traced_settings(request, samples, traced_rows++);
+      const reference::Result image = reference::render(*bvh, view, *traced[i]);
+      row.device = path_tracer_device();
+      measure_errors(row, image.final_image, image.indirect, display_image(image.final_image, tonemap), measure);
+    } else {
+      api::RenderRequest once = requests.back();
+      once.repeat = 1;
+      const RenderedViews views = render_views(bench.renderer, once);
+      row.device = views.stats.device;
+      measure_errors(row, views.final_image, views.indirect, views.display, measure);
+    }
     result.table.rows.push_back(row);
     if (observer.row_measured) observer.row_measured(i, configurations.size(), row);
   }
@@ -110,6 +154,13 @@ SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const Swee
       if (stopped()) {
         result.complete = false;
         break;
+      }
+      if (traced[i]) {  // a trace reallocates nothing: no untimed run before it
+        const double trace_ms = reference::render(*bvh, view, *traced[i]).trace_ms;
+        frames[i].gpu_ms.push_back(trace_ms);
+        frames[i].wall_ms.push_back(trace_ms);
+        if (observer.timing_progress) observer.timing_progress(++done, rows * rounds);
+        continue;
       }
       api::RenderRequest frame = requests[i];
       frame.output.view = api::View::final_;

@@ -165,6 +165,21 @@ TEST(SweepRequest, AxisMayNameFlip) {
   EXPECT_EQ(api::to_string(s.axis.metric), "flip");
 }
 
+TEST(SweepRequest, PathTracedRowsComeLastOnePerSampleCount) {
+  const api::SweepRequest s = api::parse_sweep_request(
+      R"({"base": {}, "parameters": {"grid": [8, 16]}, "path_traced": {"samples": [1, 16]}})");
+  EXPECT_EQ(s.path_traced_samples, (std::vector<std::uint32_t>{1, 16}));
+  const auto rows = api::sweep_configurations(s);
+  ASSERT_EQ(rows.size(), 1u + 2u + 2u);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(rows[i].path_traced_samples, 0u) << "raster rows first";
+  EXPECT_EQ(rows[3].path_traced_samples, 1u);
+  EXPECT_EQ(rows[4].path_traced_samples, 16u);
+  EXPECT_FALSE(rows[4].lpv);
+  EXPECT_EQ(api::describe(rows[3]), "path traced, 1 sample per pixel");
+  EXPECT_EQ(api::describe(rows[4]), "path traced, 16 samples per pixel");
+  EXPECT_TRUE(api::parse_sweep_request(R"({"base": {}})").path_traced_samples.empty()) << "none unless asked for";
+}
+
 TEST(SweepRequest, KeepsAPlanTheBaseAsksFor) {
   EXPECT_EQ(api::parse_sweep_request(R"({"base": {"plan": "auto"}})").base.plan, api::PlanMode::auto_);
   const auto rows = api::sweep_configurations(api::parse_sweep_request(R"({"base": {}, "lpv_off_row": false})"));
@@ -191,6 +206,11 @@ TEST(SweepRequest, ErrorsNameTheirField) {
             "parameters.blocking[0]");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"speed": [1]}})"), "parameters.speed");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "axis": {"metric": "psnr"}})"), "axis.metric");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "path_traced": {"samples": [4, 0]}})"), "path_traced.samples[1]");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "path_traced": {"samples": []}})"), "path_traced.samples");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "path_traced": {}})"), "path_traced.samples");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "path_traced": {"samples": [4], "seed": 2}})"), "path_traced.seed");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "path_traced": [4]})"), "path_traced");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {"output": {"width": 0}}})"), "base.output.width");
   // 16 x 16 x 4 = 1024 combinations: over the limit, refused before any is made.
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {

@@ -54,6 +54,16 @@ TEST(SweepSplit, ValuesAreSharedAsEvenlyAsTheyGoAndTheOffRowStaysInTheFirst) {
   EXPECT_EQ(split[1]["parameters"]["grid"], kSweep["parameters"]["grid"]);
 }
 
+TEST(SweepSplit, PathTracedRowsGoWithTheFirstPartOnly) {
+  json sweep = kSweep;
+  sweep["path_traced"] = {{"samples", {1, 4}}};
+  const std::vector<json> split = api::split_sweep(sweep, 3);
+  ASSERT_EQ(split.size(), 3u);
+  EXPECT_EQ(split[0]["path_traced"], sweep["path_traced"]);
+  EXPECT_FALSE(split[1].contains("path_traced"));
+  EXPECT_FALSE(split[2].contains("path_traced"));
+}
+
 TEST(SweepSplit, TheSlowestVaryingParameterWithChoicesIsCut) {
   json two_axes = kSweep;
   two_axes["parameters"]["grid"] = json::parse("[8, 16]");

@@ -219,10 +219,10 @@ TEST(SweepCsv, HeaderHasEveryFieldOfTheRow) {
   const auto csv = read_csv(api::to_csv(table_of({row(1.0, 0.1)})));
   ASSERT_EQ(csv.size(), 2u);
   const std::vector<std::string> expected = {
-      "lpv",                     "grid_x",                   "grid_y",
+      "lpv",                     "path_traced_samples",      "grid_x",                   "grid_y",
       "grid_z",                  "iterations",               "cascades",
       "rsm",                     "vpl_downsample",           "bounces",
-      "occlusion",               "transfer",                 "blocking",                 "frames",
+      "occlusion",               "transfer",                 "blocking",  "device",      "frames",
       "gpu_ms",                  "gpu_ms_min",               "gpu_ms_max",               "wall_ms",
       "final_rmse",              "final_relative_mse",       "final_psnr_db",
       "final_ssim",              "final_mean_abs_error",     "final_max_abs_error",
@@ -250,9 +250,9 @@ TEST(SweepCsv, OneLinePerRowWithItsValues) {
   const auto csv = read_csv(api::to_csv(table_of({r, off, r})));
   ASSERT_EQ(csv.size(), 4u);
   for (const auto& record : csv) EXPECT_EQ(record.size(), csv[0].size());
-  EXPECT_EQ(csv[1], (std::vector<std::string>{"true",  "16",     "24",    "48",      "12",
+  EXPECT_EQ(csv[1], (std::vector<std::string>{"true",  "0", "16",     "24",    "48",      "12",
                                               "2",     "512",    "4",     "2",       "false",
-                                              "cosine", "sh_lobe", "3", "0.1", "0.09", "0.125", "0.3333333333333333",         "0.25",
+                                              "cosine", "sh_lobe", "", "3", "0.1", "0.09", "0.125", "0.3333333333333333",         "0.25",
                                               "0.5",   "31.5",   "0.875", "0.125",   "2",
                                               "-0.0625", "0.375", "262144", "1.25", "1.5",    "inf",
                                               "0.75",  "1.125",  "3",     "nan",     "0.0625", "7",
@@ -318,7 +318,8 @@ TEST(SweepJson, EveryFieldWithItsValue) {
   const json expected = json::parse(R"json({
     "settings": {"lpv": false, "grid": [16, 24, 48], "iterations": 12, "cascades": 2, "rsm": 512,
                  "vpl_downsample": 4, "bounces": 2, "occlusion": false, "transfer": "sharpened",
-                 "blocking": "projected"},
+                 "blocking": "projected", "path_traced_samples": 0},
+    "device": "",
     "passes": [{"name": "shadow", "gpu_ms": 0.125}, {"name": "shade", "gpu_ms": 0.5}],
     "frames": 5, "gpu_ms": 0.625, "gpu_ms_range": [0.5, 0.75], "wall_ms": 2.5,
     "final_error": {"rmse": 0.25, "relative_mse": 0.5, "psnr_db": 31.5, "ssim": 0.875, "mean_abs_error": 0.125,
@@ -507,6 +508,36 @@ TEST(SweepSvg, EveryPlottableRowIsACircleAndTheFrontIsHighlighted) {
   EXPECT_EQ(count(svg, "class=\"note\""), 0u) << "a note although every row is shown";
 }
 
+TEST(SweepSvg, PathTracedRowsAreDiamondsThatNameTheirRowsWithALegend) {
+  api::SweepTable table = table_of({row(1.0, 0.5), row(2.0, 0.2), row(4.0, 0.1)});
+  table.rows[2].settings.lpv = false;
+  table.rows[2].settings.path_traced_samples = 16;
+  table.rows[2].device = "CPU: 2 threads (path tracer)";
+  api::mark_pareto(table);
+  const std::string svg = api::to_svg_plot(table, "t");
+  EXPECT_EQ(count(svg, "<circle"), 2u) << "raster rows only";
+  static const std::regex diamond(R"re(<path class="row pareto path-traced" d="M[-0-9.]+ [-0-9.]+ L[-0-9.]+ [-0-9.]+ L[-0-9.]+ [-0-9.]+ L[-0-9.]+ [-0-9.]+ Z"[^>]* data-row="2" pointer-events="visiblePainted")re");
+  EXPECT_TRUE(std::regex_search(svg, diamond)) << svg;
+  EXPECT_TRUE(has_text(svg, "path traced")) << "the legend names the diamond";
+  EXPECT_NE(svg.find("path traced, 16 samples per pixel\nCPU 4 ms per frame"), std::string::npos);
+  // Without one, no legend entry.
+  EXPECT_FALSE(has_text(api::to_svg_plot(table_of({row(1.0, 0.5)}), "t"), "path traced"));
+}
+
+TEST(SweepJson, APathTracedRowSaysSoAndWhereItRan) {
+  api::SweepRow r = row(4.0, 0.1);
+  r.settings.lpv = false;
+  r.settings.path_traced_samples = 16;
+  r.device = "CPU: 2 threads (path tracer)";
+  const nlohmann::json j = api::to_json(r);
+  EXPECT_EQ(j["settings"]["path_traced_samples"], 16);
+  EXPECT_EQ(j["device"], "CPU: 2 threads (path tracer)");
+  EXPECT_EQ(j["label"], "path traced, 16 samples per pixel");
+  const auto csv = read_csv(api::to_csv(table_of({r})));
+  EXPECT_EQ(csv[1][1], "16");
+  EXPECT_EQ(csv[1][13], "CPU: 2 threads (path tracer)");
+}
+
 TEST(SweepSvg, OnlyTheCirclesTakeThePointerAndTheyLieOverEveryLine) {
   // Row 1 lies on the staircase's step from row 0 to row 2 (equal error, slower), and every
   // row has a whisker: none of it may cover a circle (issue 42: a click on row 1 hit the line).
@@ -561,7 +592,7 @@ TEST(SweepSvg, DecadeTicksAndTheirTwosAndFivesOnANarrowRange) {
 
 TEST(SweepSvg, AxisLabelsSayWhatIsPlotted) {
   const api::SweepTable rmse = table_of({row(1.0, 0.1)});
-  EXPECT_TRUE(has_text(api::to_svg_plot(rmse, "t"), "GPU time per frame, ms, log scale"));
+  EXPECT_TRUE(has_text(api::to_svg_plot(rmse, "t"), "time per frame, ms, log scale (on the GPU; path-traced rows on the CPU)"));
   EXPECT_TRUE(has_text(api::to_svg_plot(rmse, "t"), "RMSE (final), W/(m\u00b2\u00b7sr), log scale"));
   api::SweepRow r = row(1.0, 0.1);
   r.indirect_error.ssim = 0.5;

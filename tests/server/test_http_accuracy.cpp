@@ -157,7 +157,7 @@ TEST(HttpAccuracy, SweepAnswersJsonCsvAndSvg) {
   ASSERT_EQ(csv->status, 200) << csv->body;
   EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
   EXPECT_EQ(std::count(csv->body.begin(), csv->body.end(), '\n'), 6);  // header + 5 rows
-  EXPECT_EQ(csv->body.rfind("lpv,grid_x,", 0), 0u) << csv->body.substr(0, 80);
+  EXPECT_EQ(csv->body.rfind("lpv,path_traced_samples,grid_x,", 0), 0u) << csv->body.substr(0, 80);
 
   const auto svg = http->Post("/v1/sweep?format=svg", kSmallSweep.dump(), "application/json");
   ASSERT_TRUE(svg);
@@ -278,6 +278,40 @@ TEST(HttpAccuracy, ASweepPastItsDeadlineAnswersTheRowsDone) {
   EXPECT_LT(body["table"]["rows"].size(), 65u);
 }
 
+TEST(HttpAccuracy, PathTracedRowsShareTheFrontTimedOnTheCpu) {
+  auto http = shared_server().client();
+  nlohmann::json request = kSmallSweep;
+  request["parameters"] = {{"grid", {8}}};
+  request["path_traced"] = {{"samples", {1, 16}}};
+  request["reference"] = {{"samples", 64}};
+  const auto answer = http->Post("/v1/sweep", request.dump(), "application/json");
+  ASSERT_TRUE(answer);
+  ASSERT_EQ(answer->status, 200) << answer->body;
+  const auto rows = nlohmann::json::parse(answer->body)["table"]["rows"];
+  ASSERT_EQ(rows.size(), 4u);  // LPV off, 8^3, then 1 and 16 samples per pixel
+  for (std::size_t i : {0u, 1u}) {
+    EXPECT_EQ(rows[i]["settings"]["path_traced_samples"], 0);
+    EXPECT_EQ(rows[i]["device"].get<std::string>().rfind("CPU", 0), std::string::npos) << "a raster row ran on the GPU device";
+  }
+  for (std::size_t i : {2u, 3u}) {
+    EXPECT_EQ(rows[i]["device"].get<std::string>().rfind("CPU: ", 0), 0u) << rows[i]["device"];
+    EXPECT_EQ(rows[i]["frames"], 3);
+    EXPECT_GT(rows[i]["gpu_ms"].get<double>(), 0.0);
+    EXPECT_TRUE(rows[i]["passes"].empty()) << "a trace has no raster passes";
+  }
+  EXPECT_EQ(rows[2]["label"], "path traced, 1 sample per pixel");
+  // Noise falls as samples rise: 16 samples against 64 leave far less error than 1 does (and
+  // a seed of its own: at the reference's seed and samples, the error would be 0).
+  const double one = rows[2]["indirect_error"]["rmse"].get<double>(), sixteen = rows[3]["indirect_error"]["rmse"].get<double>();
+  EXPECT_GT(sixteen, 0.0);
+  EXPECT_LT(sixteen, 0.5 * one) << one << " vs " << sixteen;
+  EXPECT_GT(rows[3]["gpu_ms"].get<double>(), rows[2]["gpu_ms"].get<double>()) << "16 paths a pixel take longer than 1";
+
+  const auto svg = http->Post("/v1/sweep?format=svg", request.dump(), "application/json");
+  ASSERT_TRUE(svg);
+  EXPECT_NE(svg->body.find("path-traced\" d=\"M"), std::string::npos) << "a diamond of their own";
+}
+
 TEST(HttpAccuracy, ErrorsNameTheFieldUnderTheEmbeddedRequest) {
   auto http = shared_server().client();
   EXPECT_TRUE(is_json_error(http->Post("/v1/compare", R"({"base": {"scene": "atlantis"}, "reference": {}})",
@@ -290,6 +324,11 @@ TEST(HttpAccuracy, ErrorsNameTheFieldUnderTheEmbeddedRequest) {
                                        "application/json"),
                             400, "invalid_value", "against.output"));
   EXPECT_TRUE(is_json_error(http->Get("/v1/sweep"), 405, "method_not_allowed", ""));
+  // A path-traced row costs what a reference of its samples costs, and is refused the same way.
+  EXPECT_TRUE(is_json_error(http->Post("/v1/sweep", R"({"base": {"output": {"width": 1024, "height": 1024}},
+                                                        "reference": {"samples": 1}, "path_traced": {"samples": [1, 65536]}})",
+                                       "application/json"),
+                            422, "limit_exceeded", "path_traced.samples[1]"));
 }
 
 }  // namespace

@@ -287,10 +287,13 @@ test('the error against the reference, and a sweep whose points load their setti
   assert.equal(await page.locator('#sweep-run').isDisabled(), false, 'Run is back');
   assert.equal(await page.locator('#sweep-stop').isDisabled(), true, 'nothing to stop');
   assert.equal(await page.locator('#sweep-plot circle').count(), 3, 'LPV off, 4³ and 8³');
-  assert.ok(await page.locator('#sweep-plot circle.pareto').count() >= 1, 'the Pareto front is marked');
-  // Each row timed over 3 frames (the default repeat): the median and its range.
+  assert.equal(await page.locator('#sweep-plot path.path-traced').count(), 3, 'and the path tracer at 1, 4 and 16 samples');
+  assert.ok(await page.locator('#sweep-plot .row.pareto').count() >= 1, 'the Pareto front is marked');
+  // Each row timed over 3 frames (the default repeat): the median and its range, and where.
   const times = await page.locator('#sweep-table tr td:nth-child(2)').allTextContents();
-  assert.equal(times.length, 3);
+  assert.equal(times.length, 6);
+  const devices = await page.locator('#sweep-table tr td:nth-child(5)').allTextContents();
+  assert.deepEqual(devices.map((d) => d.startsWith('CPU: ')), [false, false, false, true, true, true], devices.join('; '));
   for (const text of times) assert.match(text, /^[\d.]+ \([\d.]+–[\d.]+\)$/, `GPU ms with its range: ${text}`);
   await screenshot(page, '07-sweep');
 
@@ -299,8 +302,14 @@ test('the error against the reference, and a sweep whose points load their setti
     /^LPV 8x8x8, 4 iterations, 1 cascade, RSM \d+, VPL downsample \d+, 1 bounce, occlusion (on|off), transfer [a-z]+, blocking [a-z_]+: /,
     'counted in good English, the transfer and the blocking named');
   await page.locator('#sweep-plot circle[aria-label^="LPV 8x8x8"]').hover();
-  assert.match(await page.locator('#sweep-hover').textContent(), /^LPV 8x8x8, 4 iterations.*: rmse of the final image [\d.]+, [\d.]+ \(.*\) ms on the device/,
+  assert.match(await page.locator('#sweep-hover').textContent(), /^LPV 8x8x8, 4 iterations.*: rmse of the final image [\d.]+, [\d.]+ \(.*\) ms on (?!CPU).+\. Click or Enter loads it as B\.$/,
     'the point under the pointer says its settings, error and time');
+  // A path-traced row loads as the reference at its samples.
+  const traced = page.waitForRequest((r) => r.url().endsWith('/v1/compare') && JSON.parse(r.postData()).reference?.samples === 4);
+  await page.locator('#sweep-plot path[aria-label^="path traced, 4 samples"]').click();
+  await traced;
+  assert.equal(await page.locator('#reference-samples').inputValue(), '4');
+  assert.equal(await page.locator('#source-label').textContent(), 'reference');
   await page.locator('#sweep-plot circle[aria-label^="LPV 8x8x8"]').click();
   const loaded = await frameShown(page, (request) => request.lpv?.grid === 8 && request.lpv?.iterations === 4);
   assert.equal(loaded.output.width, 128, 'only the LPV settings change');
