@@ -69,7 +69,7 @@ std::vector<std::string> pass_names(const std::vector<SweepRow>& rows) {
 std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
   std::vector<std::string> header = {"lpv",      "path_traced_samples", "grid_x",  "grid_y",    "grid_z",
                                      "iterations", "cascades",          "rsm",     "vpl_downsample", "bounces",
-                                     "occlusion", "transfer",           "blocking", "device",    "frames",
+                                     "occlusion", "transfer",           "blocking", "frames",
                                      "gpu_ms",   "gpu_ms_min",          "gpu_ms_max", "wall_ms"};
   for (const char* image : {"final_", "indirect_"}) {
     for (const auto& [name, field] : error_metric_fields) header.push_back(std::string(image) + name);
@@ -77,6 +77,9 @@ std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
   }
   header.push_back("pareto");
   header.push_back("pareto_uncertain");
+  // After every fixed column: a device's name holds commas (quoted, as RFC 4180 says), and a
+  // script that splits lines at commas still finds every column before it where it belongs.
+  header.push_back("device");
   for (const std::string& pass : passes) header.push_back(pass + "_gpu_ms");
   return header;
 }
@@ -96,7 +99,6 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
                                      bool_text(s.occlusion),
                                      to_string(s.transfer),
                                      to_string(s.blocking),
-                                     row.device,
                                      std::to_string(row.frames),
                                      number_text(row.gpu_ms),
                                      number_text(row.gpu_ms_range.first),
@@ -108,6 +110,7 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
   }
   fields.push_back(bool_text(row.pareto));
   fields.push_back(bool_text(row.pareto_uncertain));
+  fields.push_back(row.device);
   for (const std::string& name : passes) {
     // A name twice in one row (the renderer emits each pass once) is summed, so that the
     // pass columns still add up to gpu_ms.

@@ -102,9 +102,10 @@ void mark_pareto(SweepTable& table);
 // RFC 4180 (CRLF line ends, fields with a comma, quote or line break quoted): a header and
 // one line per row with every field of the row: lpv, path_traced_samples, grid_x, grid_y,
 // grid_z, iterations, cascades, rsm, vpl_downsample, bounces, occlusion, transfer, blocking,
-// device, frames, gpu_ms, gpu_ms_min,
+// frames, gpu_ms, gpu_ms_min,
 // gpu_ms_max, wall_ms, final_<metric> and indirect_<metric> for every ErrorMetrics field,
-// pareto, pareto_uncertain, then one "<pass>_gpu_ms" column
+// pareto, pareto_uncertain, device (last of the fixed columns: a device's name holds commas),
+// then one "<pass>_gpu_ms" column
 // per pass name (the union over the rows, in pipeline order; empty where the pass did not
 // run). Booleans are true/false, numbers the shortest text that reads back the same value,
 // non-finite numbers inf, -inf and nan. The pareto column is the flag as it is: call

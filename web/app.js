@@ -62,7 +62,7 @@ const loop = new RenderLoop({
     $('frame').dataset.request = JSON.stringify(request);
     $('frame').classList.remove('outdated');
     renderErrors.clear();
-    if (answer.image) updateMetrics();
+    if (answer.image) updateMetricsSoon();
   },
   onBusy: (busy) => {
     $('frame').setAttribute('aria-busy', String(busy));
@@ -149,6 +149,16 @@ function updateMetrics() {
     for (const [pair, values] of Object.entries(flips)) view.setFlip(...pair.split('|'), values);
     showLabel();
   });
+}
+
+// After a frame, the metrics wait until the frames rest: a compare occupies the server for
+// several frames' time (it renders both sides again and runs FLIP), so asking for one per
+// frame of a dragged slider would queue the next frame behind it.
+const METRICS_REST_MS = 250;
+let metricsTimer = 0;
+function updateMetricsSoon() {
+  clearTimeout(metricsTimer);
+  metricsTimer = setTimeout(updateMetrics, METRICS_REST_MS);
 }
 
 function traceReference() {
@@ -339,6 +349,7 @@ function renderIfChanged() {
   const json = JSON.stringify(request);
   if (json !== scheduled) {
     scheduled = json;
+    clearTimeout(metricsTimer);  // the metrics wait for the frame this change brings
     loop.schedule(request);
   }
   showChanges();
