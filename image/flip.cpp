@@ -40,6 +40,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
+#include <future>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -374,8 +376,11 @@ FlipMap flip_map(const Rgba8Image& test, const Rgba8Image& reference, const Flip
     seen.features = features(achromatic, kernels);
     return seen;
   };
-  const Seen t = see(test);
+  // The two images are seen independently: the test's on a thread of its own while this one
+  // sees the reference, which halves the time on two cores (the filters are most of it).
+  std::future<Seen> test_seen = std::async(std::launch::async, see, std::cref(test));
   const Seen r = see(reference);
+  const Seen t = test_seen.get();
 
   FlipMap map{test.width, test.height, std::vector<float>(std::size_t{test.width} * test.height)};
   for (std::size_t i = 0; i < map.values.size(); ++i) {

@@ -14,8 +14,7 @@ import { FieldErrors } from './field_errors.js';
 import { bindInputs } from './form_binding.js';
 import { LightsEditor } from './lights_editor.js';
 import { RenderLoop } from './render_loop.js';
-import { clone, describeChanges } from './request_state.js';
-import { RequestState } from './request_state.js';
+import { RequestState, clone, describeChanges } from './request_state.js';
 import { ScenePicker } from './scene_picker.js';
 import { attachShareButtons } from './share.js';
 import { passTimeChart, showStats } from './stats_view.js';
@@ -44,7 +43,7 @@ function errorsFor(panel, fallback, prefixes) {
 
 const renderErrors = errorsFor(settings, $('render-error'), []);
 const pinned = { request: null, stats: null };  // A
-let currentStats = null;                        // B's
+let current = { stats: null, queueMs: 0 };      // B's
 let pointerPixel = null;
 
 // --- B: the render loop ---------------------------------------------------------------------
@@ -52,7 +51,7 @@ const loop = new RenderLoop({
   render,
   show: async (answer, request) => {
     const { stats } = answer;
-    currentStats = stats;
+    current = { stats, queueMs: answer.queueMs };
     if (answer.image) view.setImage('b', answer.image);
     $('view-canvas').hidden = !answer.image;  // a dry run has none
     showFrameStats();
@@ -84,13 +83,14 @@ const loop = new RenderLoop({
 });
 
 function showFrameStats() {
-  if (!currentStats) return;
-  showStats(currentStats, 0, {
+  const { stats, queueMs } = current;
+  if (!stats) return;
+  showStats(stats, queueMs, {
     chart: $('pass-chart'), totals: $('frame-totals'), passes: $('plan-passes'),
     decisions: $('plan-decisions'), warnings: $('warnings'), warningsBlock: $('warnings-block'),
   });
-  if (pinned.stats && currentStats.passes.some((pass) => pass.ran)) {
-    $('pass-chart').replaceChildren(passTimeChart([pinned.stats, currentStats], {
+  if (pinned.stats && stats.passes.some((pass) => pass.ran)) {
+    $('pass-chart').replaceChildren(passTimeChart([pinned.stats, stats], {
       title: 'GPU time per pass of A and B (median, ms)',
       legend: [{ series: 'series-0', label: 'A' }, { series: 'series-1', label: 'B' }],
     }));
@@ -123,7 +123,7 @@ async function pin(request, { image = null, stats = null } = {}) {
 function pinCurrent() {
   const shown = $('frame').dataset.request;
   if (!shown || !view.image('b')) return;
-  pin(JSON.parse(shown), { image: view.image('b'), stats: currentStats });
+  pin(JSON.parse(shown), { image: view.image('b'), stats: current.stats });
 }
 
 function showChanges() {
@@ -158,6 +158,8 @@ const METRICS_REST_MS = 250;
 let metricsTimer = 0;
 function updateMetricsSoon() {
   clearTimeout(metricsTimer);
+  const b = JSON.parse($('frame').dataset.request ?? 'null');
+  if (b) metrics.markStale(view.view.region, b);
   metricsTimer = setTimeout(updateMetrics, METRICS_REST_MS);
 }
 

@@ -8,8 +8,6 @@
 import { displayImage } from './display_transfer.js';
 import { automaticScale, differenceImage, differenceValues } from './difference_maps.js';
 
-export const SOURCES = ['b', 'a', 'reference', 'wipe', 'difference'];
-export const IMAGE_SOURCES = ['b', 'a', 'reference'];
 const NAMES = { b: 'B (current)', a: 'A (pinned)', reference: 'reference' };
 const MIN_ZOOM = 1 / 32;
 const MAX_ZOOM = 64;  // a pixel 64 screen pixels wide: single pixels and their readout

@@ -13,12 +13,12 @@ import { decodePfmBase64 } from './pfm.js';
 import { clone, mergePatch } from './request_state.js';
 
 // [pair, x, y]: x tested against y.
-export const ROWS = [
+const ROWS = [
   ['a|reference', 'A', 'reference'],
   ['b|reference', 'B', 'reference'],
   ['a|b', 'A', 'B'],
 ];
-export const COLUMNS = [
+const COLUMNS = [
   ['rmse', 'RMSE'],
   ['relative_mse', 'rel. MSE (ε 0.01)'],
   ['psnr_db', 'PSNR dB'],
@@ -68,6 +68,13 @@ export class ComparisonMetrics extends EventTarget {
     return this.#answers.get(key);
   }
 
+  // The rows on show answer earlier settings: dimmed until update brings theirs. Called as
+  // soon as the settings change, before the update itself, which waits for the frames to rest.
+  markStale(region, b) {
+    this.#stale = new Set(Object.keys(this.#last));
+    this.#show(region, b);
+  }
+
   // Recomputes every row for B = `b`, A = `a` (null: none pinned) and `region` (null: none),
   // aborting the previous update. onImages({ reference, flips }) gets the pixels for the canvas.
   async update({ a, b, region }, onImages) {
@@ -95,8 +102,7 @@ export class ComparisonMetrics extends EventTarget {
     // The numbers on show stay, dimmed, until the new ones come: no flash of dashes per frame.
     const wanted = new Set(jobs.map(([pair]) => pair));
     for (const pair of Object.keys(this.#last)) if (!wanted.has(pair)) delete this.#last[pair];
-    this.#stale = new Set(Object.keys(this.#last));
-    this.#show(region, b);
+    this.markStale(region, b);
     this.status.textContent = this.reference ? `Measuring against a ${this.reference.samples}-sample reference…` : 'Measuring A against B…';
     try {
       // One at a time: the server renders them in turn anyway, and the first rows show sooner.

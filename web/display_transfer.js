@@ -21,7 +21,7 @@ function srgbEncode(c) {
 }
 
 // One channel's 8-bit display level. Negative and NaN values are black, as on the server.
-export function displayLevel(value, gain, tonemap) {
+function displayLevel(value, gain, tonemap) {
   const x = value * gain > 0 ? value * gain : 0;
   const mapped = Math.min(Math.max(toneCurve(x, tonemap), 0), 1);
   return Math.min(Math.max(srgbEncode(mapped), 0), 1) * 255 + 0.5 | 0;

@@ -9,17 +9,16 @@ import { DIFFERENCE_KINDS } from './difference_maps.js';
 import { TONEMAPS } from './display_transfer.js';
 
 export const PAIRS = [['b', 'reference'], ['a', 'reference'], ['a', 'b']];
-export const DRAG_MODES = ['camera', 'view', 'region'];
 
 const next = (list, value) => list[(list.indexOf(value) + 1) % list.length];
 
 // [keys as shown, what they do, handler(controls, event)]; the handler runs on keydown.
 const SHORTCUTS = [
-  ['1', 'show B, the current frame', (c) => c.show('b')],
-  ['2', 'show A, the pinned frame', (c) => c.show('a')],
-  ['3', 'show the reference (traced the first time)', (c) => c.show('reference')],
-  ['W', 'wipe between the pair: the first left, the second right', (c) => c.show('wipe')],
-  ['D', 'the difference of the pair', (c) => c.show('difference')],
+  ['1', 'show B, the current frame', (c) => c.actions.show('b')],
+  ['2', 'show A, the pinned frame', (c) => c.actions.show('a')],
+  ['3', 'show the reference (traced the first time)', (c) => c.actions.show('reference')],
+  ['W', 'wipe between the pair: the first left, the second right', (c) => c.actions.show('wipe')],
+  ['D', 'the difference of the pair', (c) => c.actions.show('difference')],
   ['Space (hold)', 'flip to the reference, or to A when there is none', (c, e) => c.hold(e)],
   ['P', 'next pair: B vs reference, A vs reference, A vs B', (c) => c.view.set({ pair: next(PAIRS, PAIRS.find((p) => p.join() === c.view.view.pair.join())) })],
   ['K', 'next difference: absolute, signed, relative, FLIP', (c) => c.view.set({ kind: next(DIFFERENCE_KINDS, c.view.view.kind) })],
@@ -33,9 +32,9 @@ const SHORTCUTS = [
   ['Esc', 'clear the rectangle; close this list', (c) => c.escape()],
   ['E and Shift+E', 'exposure up and down by half a stop (the display only)', (c, e) => c.view.set({ exposure: c.view.view.exposure + (e.shiftKey ? -0.5 : 0.5) })],
   ['T', 'next tone map: none, reinhard, aces (the display only)', (c) => c.view.set({ tonemap: next(TONEMAPS, c.view.view.tonemap) })],
-  ['A', 'pin the current settings and frame as A', (c) => c.pin()],
-  ['S', 'show or hide the settings', (c) => c.toggleDrawer()],
-  ['?', 'this list', (c) => c.toggleHelp()],
+  ['A', 'pin the current settings and frame as A', (c) => c.actions.pin()],
+  ['S', 'show or hide the settings', (c) => c.actions.toggleDrawer()],
+  ['?', 'this list', (c) => c.actions.toggleHelp()],
 ];
 
 // event.key -> the shortcut's handler
@@ -59,7 +58,8 @@ export function fillHelp(table) {
 }
 
 // view: the CanvasView; area: the element the pointer acts on; actions: { show(source),
-// pin(), toggleDrawer(), toggleHelp(), closeHelp(), onPointer(pixel | null), onRegion() }.
+// pin(), toggleDrawer(), toggleHelp(), closeHelp() -> whether it was open, onPointer(pixel |
+// null), onRegion(), onShown() (the source on show changed without a view change) }.
 export class ViewControls {
   constructor({ view, area, actions, dragModeInputs }) {
     Object.assign(this, { view, area, actions, dragModeInputs });
@@ -92,10 +92,6 @@ export class ViewControls {
     handler(this, event);
   }
 
-  show(source) {
-    this.actions.show(source);
-  }
-
   hold(event) {
     if (event.repeat) return;
     this.held = true;
@@ -126,18 +122,6 @@ export class ViewControls {
       this.view.set({ region: null });
       this.actions.onRegion();
     }
-  }
-
-  pin() {
-    this.actions.pin();
-  }
-
-  toggleDrawer() {
-    this.actions.toggleDrawer();
-  }
-
-  toggleHelp() {
-    this.actions.toggleHelp();
   }
 
   #pointer() {
