@@ -126,10 +126,14 @@ export class ComparisonMetrics extends EventTarget {
     }
   }
 
+  // The canvas's pixels of an answer, decoded once: a cached answer (A's row against the
+  // reference, while B changes) comes back with every update and costs no second decoding.
   #images(pair, answer, b) {
     const which = measuredImage(b);
-    const images = { flips: { [pair]: answer.flip?.values ? decodePfmBase64(answer.flip.values) : null } };
-    if (pair === 'b|reference') images.reference = decodePfmBase64(which === 'indirect' ? answer.other.indirect : answer.other.image);
+    answer.decoded ??= {};
+    const decode = (key, base64) => (answer.decoded[key] ??= base64 ? decodePfmBase64(base64) : null);
+    const images = { flips: { [pair]: decode('flip', answer.flip?.values) } };
+    if (pair === 'b|reference') images.reference = decode(which, which === 'indirect' ? answer.other.indirect : answer.other.image);
     return images;
   }
 

@@ -122,7 +122,7 @@ SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const Swee
     row.settings = configurations[i];
     row.gpu_ms = row.wall_ms = kUnmeasured;
     row.gpu_ms_range = {kUnmeasured, kUnmeasured};
-    requests.push_back(api::request_for(request.base, configurations[i]));
+    requests.push_back(api::request_for(request.base, configurations[i]));  // a traced row's stays unused
     if (const std::uint32_t samples = configurations[i].path_traced_samples; samples > 0) {
       if (!bvh) bvh.emplace(scene);
       traced[i] = traced_settings(request, samples, traced_rows++);
