@@ -43,8 +43,19 @@ ReferenceSettings read_reference(const Field& f) {
   return reference;
 }
 
+// A compare or sweep measures the settings it names: a budget would choose them anew for
+// each render, so it is refused where it would be read.
+void refuse_budget(const RenderRequest& request, const std::string& path) {
+  if (request.budget_ms)
+    throw RequestError(member_path(path, "budget_ms"),
+                       "is not taken here: a compare or sweep measures the settings it names (render with the "
+                       "budget, then measure the settings its stats name as \"budget.chosen\")");
+}
+
 RenderRequest read_base(const Object& obj) {
-  return read_render_request(obj.require("base", "the render request to measure"));
+  RenderRequest base = read_render_request(obj.require("base", "the render request to measure"));
+  refuse_budget(base, "base");
+  return base;
 }
 
 // "against": the base document with these fields changed (RFC 7386 merge patch: null removes
@@ -54,6 +65,7 @@ RenderRequest read_against(const Field& against, const Field& base) {
   json merged = *base.value;
   merged.merge_patch(*against.value);
   RenderRequest other = read_render_request(Field{&merged, against.path});
+  refuse_budget(other, against.path);
   const RenderRequest original = read_render_request(base);
   if (other.output.width != original.output.width || other.output.height != original.output.height)
     throw RequestError(member_path(against.path, "output"), "must keep the base's image size (" +
@@ -111,21 +123,6 @@ SweepParameters read_parameters(const Field& f) {
   if (auto v = obj.get("transfer")) p.transfer = read_values<Transfer>(*v, read_transfer);
   if (auto v = obj.get("blocking")) p.blocking = read_values<Blocking>(*v, read_blocking);
   return p;
-}
-
-SweepSettings settings_of(const Lpv& lpv) {
-  SweepSettings s;
-  s.lpv = lpv.enabled;
-  s.grid = {lpv.grid.x, lpv.grid.y, lpv.grid.z};
-  s.iterations = lpv.iterations;
-  s.cascades = lpv.cascades;
-  s.rsm = lpv.rsm_resolution;
-  s.vpl_downsample = lpv.vpl_downsample;
-  s.bounces = lpv.bounces;
-  s.occlusion = lpv.occlusion;
-  s.transfer = lpv.transfer;
-  s.blocking = lpv.blocking;
-  return s;
 }
 
 // The combinations must each be a valid request, and not too many.
@@ -257,6 +254,21 @@ std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep) {
     configurations.push_back(traced);
   }
   return configurations;
+}
+
+SweepSettings settings_of(const Lpv& lpv) {
+  SweepSettings s;
+  s.lpv = lpv.enabled;
+  s.grid = {lpv.grid.x, lpv.grid.y, lpv.grid.z};
+  s.iterations = lpv.iterations;
+  s.cascades = lpv.cascades;
+  s.rsm = lpv.rsm_resolution;
+  s.vpl_downsample = lpv.vpl_downsample;
+  s.bounces = lpv.bounces;
+  s.occlusion = lpv.occlusion;
+  s.transfer = lpv.transfer;
+  s.blocking = lpv.blocking;
+  return s;
 }
 
 RenderRequest request_for(const RenderRequest& base, const SweepSettings& settings) {

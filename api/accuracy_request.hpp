@@ -108,6 +108,8 @@ inline constexpr std::array<std::string_view, 9> sweep_parameter_keys{
 std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep);
 // The base request with one configuration's settings.
 RenderRequest request_for(const RenderRequest& base, const SweepSettings& settings);
+// The settings a sweep varies, as `lpv` has them (the inverse of request_for).
+SweepSettings settings_of(const Lpv& lpv);
 
 nlohmann::json to_json(const ReferenceSettings& reference);
 nlohmann::json to_json(const PixelRegion& region);

@@ -50,7 +50,7 @@ BenchImage read_image(const Field& f) {
   return image;
 }
 
-BenchCaseResult read_case(const Field& f) {
+BenchCaseResult read_case_result(const Field& f) {
   BenchCaseResult c;
   c.name = as_string(f.member("name"), limits::max_bench_name_bytes);
   c.kind = as_enum(f.member("kind"), kBenchCaseKinds);
@@ -204,7 +204,7 @@ BenchResults parse_bench_results(std::string_view json_text) {
     r.noise = BenchNoise{read_metric(noise->member("probe")).samples, as_double(load.element(0), 0.0, 1e6),
                          as_double(load.element(1), 0.0, 1e6), as_double(noise->member("steal"), 0.0, 1.0)};
   }
-  for (const Field& c : as_array(root.member("cases"), limits::max_bench_cases)) r.cases.push_back(read_case(c));
+  for (const Field& c : as_array(root.member("cases"), limits::max_bench_cases)) r.cases.push_back(read_case_result(c));
   return r;
 }
 

@@ -49,6 +49,8 @@ BenchCase read_case(const Field& f) {
     if (c.scene_file->empty()) v->reject("a path to a .gltf or .glb file");
     if (request.value->is_object() && request.value->contains("scene"))
       throw RequestError(obj.path_of("scene_file"), "give one of scene_file and request.scene");
+    if (c.request.budget_ms)  // a budget's calibration sweeps find the scene by name
+      throw RequestError(obj.path_of("scene_file"), "give one of scene_file and request.budget_ms");
   }
   return c;
 }

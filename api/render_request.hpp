@@ -144,6 +144,10 @@ struct RenderRequest {
   std::vector<PlanRule> plan_keep;  // rules of "auto" that do not apply to this request
   bool dry_run = false;      // plan only: the stats say what would run, nothing is rendered
   std::uint32_t repeat = 1;  // frames to render and time
+  // "budget_ms": the most accurate LPV configuration this device is expected to render within
+  // this many ms of frame time (gpu_ms), chosen by measurement (docs/budget.md); it replaces the
+  // LPV settings a budget varies. Absent: the request's own settings.
+  std::optional<float> budget_ms;
 };
 
 // Limits enforced by validation; exported so clients and docs can quote them.
@@ -153,6 +157,8 @@ inline constexpr std::uint64_t max_image_pixels = 4096ull * 4096ull;
 inline constexpr std::uint32_t min_shadow_resolution = 16;
 inline constexpr std::uint32_t max_shadow_resolution = 8192;
 inline constexpr std::uint32_t max_repeat = 1000;
+inline constexpr float min_budget_ms = 0.1f;
+inline constexpr float max_budget_ms = 600000.0f;  // ten minutes a frame
 inline constexpr std::size_t max_lights = 64;
 inline constexpr float max_abs_exposure = 64.0f;
 inline constexpr float max_abs_coordinate = 1.0e7f;

@@ -2,6 +2,8 @@
 // returns in X-Render-Stats. All times in milliseconds.
 #pragma once
 
+#include "api/sweep_table.hpp"
+
 #include <array>
 #include <cstdint>
 #include <map>
@@ -49,6 +51,28 @@ struct LpvStats {
   std::vector<LpvCascadeStats> cascades;
 };
 
+// One configuration a budget weighed, with what the calibration predicts of it.
+struct BudgetCandidate {
+  SweepSettings settings;       // the LPV settings a budget varies (the rest are the request's)
+  double predicted_ms = 0.0;    // frame time (gpu_ms) at the request's size
+  double predicted_error = 0.0; // final image RMSE against the calibration's reference
+  bool fits = false;            // predicted_ms <= the budget
+};
+
+// How a request's budget_ms was spent (docs/budget.md).
+struct BudgetStats {
+  double budget_ms = 0.0;
+  std::vector<BudgetCandidate> candidates;  // in the order of budget_candidates()
+  std::size_t chosen = 0;                   // index into candidates
+  std::optional<std::size_t> runner_up;     // the most accurate of the others
+  std::string runner_up_lost;               // why it was not chosen
+  std::optional<double> actual_ms;          // the chosen frame's median gpu_ms (absent in a dry run)
+  // The calibration the predictions come from: measured by this request (false: cached).
+  bool calibrated_now = false;
+  double calibration_ms = 0.0;  // what measuring it took (0 when cached)
+  std::string calibration;      // what was measured, in words
+};
+
 struct RenderStats {
   std::string scene;
   std::uint32_t width = 0;
@@ -65,6 +89,7 @@ struct RenderStats {
   std::string plan;                    // "auto" or "exact"
   std::vector<std::string> decisions;  // what the planner changed from the request, and why
   std::vector<std::string> warnings;
+  std::optional<BudgetStats> budget;  // present when the request named budget_ms
 };
 
 }  // namespace api

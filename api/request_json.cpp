@@ -81,8 +81,9 @@ constexpr std::array plan_rules{PlanRule::lights, PlanRule::shadows,  PlanRule::
                                 PlanRule::rsm,    PlanRule::cascades, PlanRule::iterations, PlanRule::convergence};
 
 using Keys = std::string_view;
-constexpr std::array<Keys, 11> request_keys{"scene", "camera", "lights",    "light_edits", "output", "shadows",
-                                            "lpv",   "plan",   "plan_keep", "dry_run",     "repeat"};
+constexpr std::array<Keys, 12> request_keys{"scene",     "camera",  "lights", "light_edits", "output",
+                                            "shadows",   "lpv",     "plan",   "plan_keep",   "dry_run",
+                                            "repeat",    "budget_ms"};
 constexpr std::array<Keys, 6> camera_keys{"position", "target", "up", "fov_y_deg", "near", "far"};
 constexpr std::array<Keys, 8> light_keys{"type",      "position", "direction",      "color",
                                          "intensity", "range",    "inner_cone_deg", "outer_cone_deg"};
@@ -387,6 +388,34 @@ json lpv_stats_json(const LpvStats& lpv) {
           {"cascades", std::move(cascades)}};
 }
 
+json budget_candidate_json(const BudgetCandidate& c) {
+  return {{"settings", to_json(c.settings)},
+          {"description", describe(c.settings)},
+          {"predicted_ms", c.predicted_ms},
+          {"predicted_error", c.predicted_error},
+          {"fits", c.fits}};
+}
+
+json budget_stats_json(const BudgetStats& b) {
+  json candidates = json::array();
+  for (const BudgetCandidate& c : b.candidates) candidates.push_back(budget_candidate_json(c));
+  json j = {{"budget_ms", shortest(static_cast<float>(b.budget_ms))},  // the request's float, as it was sent
+            {"chosen", budget_candidate_json(b.candidates.at(b.chosen))},
+            {"calibration", {{"measured_now", b.calibrated_now}, {"ms", b.calibration_ms}, {"what", b.calibration}}},
+            {"candidates", std::move(candidates)}};
+  if (b.runner_up) {
+    j["runner_up"] = budget_candidate_json(b.candidates.at(*b.runner_up));
+    j["runner_up"]["lost_because"] = b.runner_up_lost;
+  }
+  if (b.actual_ms) {
+    const double predicted = b.candidates.at(b.chosen).predicted_ms;
+    j["actual_ms"] = *b.actual_ms;
+    // How far the prediction was off: actual / predicted - 1 (0.1: the frame took 10% longer).
+    j["prediction_error"] = predicted > 0.0 ? *b.actual_ms / predicted - 1.0 : 0.0;
+  }
+  return j;
+}
+
 }  // namespace
 
 RenderRequest reader::read_render_request(const Field& field) {
@@ -415,6 +444,14 @@ RenderRequest reader::read_render_request(const Field& field) {
   }
   if (auto v = obj.get("dry_run")) request.dry_run = as_bool(*v);
   if (auto v = obj.get("repeat")) request.repeat = as_uint<std::uint32_t>(*v, 1, limits::max_repeat);
+  if (auto v = obj.get("budget_ms")) {
+    request.budget_ms = as_float(*v, limits::min_budget_ms, limits::max_budget_ms);
+    // A budget chooses the LPV's settings, weighing their error in the final image.
+    const View view = request.output.view;
+    if (view != View::final_ && view != View::indirect && view != View::lpv)
+      v->fail("is not taken with view " + quote(to_string(view)) +
+              ": it shows no LPV light, so a budget has nothing to choose (leave budget_ms out)");
+  }
   return request;
 }
 
@@ -458,6 +495,7 @@ nlohmann::json to_json(const RenderRequest& request) {
   }
   if (request.dry_run) j["dry_run"] = true;
   j["repeat"] = request.repeat;
+  if (request.budget_ms) j["budget_ms"] = shortest(*request.budget_ms);
   return j;
 }
 
@@ -489,6 +527,7 @@ nlohmann::json to_json(const RenderStats& stats) {
           {"plan", {{"mode", stats.plan}, {"decisions", stats.decisions}}},
           {"warnings", stats.warnings}};
   if (stats.lpv) result["lpv"] = lpv_stats_json(*stats.lpv);
+  if (stats.budget) result["budget"] = budget_stats_json(*stats.budget);
   return result;
 }
 

@@ -132,8 +132,9 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
 // the value is made null here and reads the same in memory and in text.
 json number_json(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
+}  // namespace
 
-json settings_json(const SweepSettings& s) {
+json to_json(const SweepSettings& s) {
   return {{"lpv", s.lpv},
           {"path_traced_samples", s.path_traced_samples},
           {"grid", s.grid},
@@ -146,8 +147,6 @@ json settings_json(const SweepSettings& s) {
           {"transfer", to_string(s.transfer)},
           {"blocking", to_string(s.blocking)}};
 }
-
-}  // namespace
 
 std::string describe(const SweepSettings& s) {
   if (s.path_traced_samples > 0) return "path traced, " + counted(s.path_traced_samples, "sample") + " per pixel";
@@ -247,7 +246,7 @@ std::string to_csv(const SweepTable& table) {
 nlohmann::json to_json(const SweepRow& row) {
   json passes = json::array();
   for (const PassTime& pass : row.passes) passes.push_back({{"name", pass.name}, {"gpu_ms", number_json(pass.gpu_ms)}});
-  return {{"settings", settings_json(row.settings)},
+  return {{"settings", to_json(row.settings)},
           {"label", describe(row.settings)},
           {"device", row.device},
           {"passes", std::move(passes)},

@@ -34,6 +34,7 @@ struct SweepSettings {
 // The settings in words, as the plot's tooltips and the web page's sweep table show them:
 // "LPV 16x16x16, 32 iterations, 1 cascade, ..., transfer sharpened, blocking projected".
 std::string describe(const SweepSettings& settings);
+nlohmann::json to_json(const SweepSettings& settings);
 
 struct PassTime {
   std::string name;

@@ -1,6 +1,7 @@
 #include "scene/gltf_accessors.hpp"
 
 #include "api/counted.hpp"
+#include "scene/gltf_convert.hpp"
 #include "scene/gltf_loader.hpp"
 
 #include <algorithm>
@@ -8,8 +9,6 @@
 
 namespace scene::gltf {
 namespace {
-
-[[noreturn]] void invalid(const std::string& message) { throw LoadError(LoadError::Kind::invalid, message); }
 
 std::size_t component_size(int type) {
   switch (type) {

@@ -8,7 +8,7 @@ namespace server {
 void BenchJob::run(accuracy::Workbench& bench) {
   // No scene files (what the server renders is uploaded), and no round trips: measuring the
   // server's HTTP from inside the server would measure nothing a client sees.
-  bench::RendererCaseRunner renders(bench.renderer, device, false);
+  bench::RendererCaseRunner renders(bench, device, false);
   bench::RunObserver observer;
   observer.stop_requested = [this] { return should_stop(); };
   result = bench::run_suite(suite,

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "api/render_request.hpp"
+#include "lab/accuracy/budget.hpp"
 #include "lab/accuracy/workbench.hpp"
 #include "renderer/renderer.hpp"
 #include "server/metrics.hpp"
@@ -89,7 +90,10 @@ class RenderJob : public Job {
   std::optional<renderer::RenderResult> result;
 
  protected:
-  void run(accuracy::Workbench& bench) override { result = bench.renderer.render(request); }
+  void run(accuracy::Workbench& bench) override {
+    result = request.budget_ms ? accuracy::render_within_budget(bench, request, renderer::readback_for(request.output))
+                               : bench.renderer.render(request);
+  }
 };
 
 // Makes an uploaded scene resident on a worker and warms it up (Renderer::prepare), so that

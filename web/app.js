@@ -13,6 +13,7 @@ import { legendGradient } from './difference_maps.js';
 import { FieldErrors } from './field_errors.js';
 import { bindInputs } from './form_binding.js';
 import { LightsEditor } from './lights_editor.js';
+import { requestThatRan } from './lpv_settings.js';
 import { RenderLoop } from './render_loop.js';
 import { RequestState, clone, describeChanges } from './request_state.js';
 import { ScenePicker } from './scene_picker.js';
@@ -57,8 +58,10 @@ const loop = new RenderLoop({
     showFrameStats();
     $('frame-caption').textContent = `${stats.scene}, ${stats.width}×${stats.height}, view ${stats.view}: ` + (answer.image
       ? `${stats.gpu_ms.median.toFixed(1)} ms on the device (${stats.device})`
-      : 'a dry run, the plan alone: no image, nothing timed (see the passes under "Cost and plan")');
-    $('frame').dataset.request = JSON.stringify(request);
+      : 'a dry run, the plan alone: no image, nothing timed (see the passes under "Cost and plan")') + budgetText(stats.budget);
+    // What the frame ran with: under a budget, its choice (what A, the metrics and a pin measure).
+    $('frame').dataset.request = JSON.stringify(requestThatRan(request, stats));
+    sweepPanel.showBudgetChoice(stats.budget?.chosen.description ?? null);
     $('frame').classList.remove('outdated');
     renderErrors.clear();
     if (answer.image) updateMetricsSoon();
@@ -81,6 +84,14 @@ const loop = new RenderLoop({
     if (error.status === 503) setTimeout(() => retryRender(), 1000);
   },
 });
+
+// "; budget 60 ms: LPV 12x12x12, ... (predicted 41.0 ms)": what a time budget chose.
+function budgetText(budget) {
+  if (!budget) return '';
+  const { chosen } = budget;
+  return `; budget ${budget.budget_ms} ms chose ${chosen.description} (predicted ${chosen.predicted_ms.toFixed(1)} ms` +
+    `${chosen.fits ? '' : ', over the budget: nothing fits'})`;
+}
 
 function showFrameStats() {
   const { stats, queueMs } = current;
@@ -299,7 +310,7 @@ $('help-open').addEventListener('click', toggleHelp);
 $('help-close').addEventListener('click', toggleHelp);
 
 // --- the rest of the page -------------------------------------------------------------------
-new SweepPanel({
+const sweepPanel = new SweepPanel({
   state,
   // A path-traced row is not a setting of B: it loads as the reference at its samples.
   onPathTraced: (samples) => {

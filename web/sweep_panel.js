@@ -8,6 +8,7 @@ import { sweep } from './api_client.js';
 import { sweepPlot } from './sweep_plot.js';
 import { formatMs } from './svg.js';
 import { LatestRun } from './latest_run.js';
+import { lpvFieldsOf } from './lpv_settings.js';
 
 const LIST_PARAMETERS = ['grid', 'iterations', 'cascades', 'rsm', 'vpl_downsample', 'bounces'];
 
@@ -20,6 +21,8 @@ export class SweepPanel {
   #run = new LatestRun();
   #rows = [];
   #plot = null;  // the server's SVG plot, once the sweep is done
+  #budgetChoice = null;  // the label of the row a time budget chose for the frame on show
+  #axis = null;          // the plot's, once drawn
 
   constructor({ elements, state, errors, onPathTraced }) {
     Object.assign(this, { elements, state, errors, onPathTraced });
@@ -55,6 +58,7 @@ export class SweepPanel {
     if (occlusion.length) parameters.occlusion = occlusion;
     const pathTraced = parseList(elements.pathTraced.value);
     const base = this.state.request;
+    delete base.budget_ms;  // a sweep measures the settings it names: the request's own
     const side = Number(elements.size.value);
     base.output = { ...base.output, width: side, height: side };
     return {
@@ -118,10 +122,19 @@ export class SweepPanel {
 
   #draw(axis) {
     const rows = this.#rows.filter(Boolean);
+    this.#axis = axis;
     this.elements.plot.replaceChildren(this.#plot
-      ? sweepPlot(this.#plot, this.#rows, (row) => this.load(row), (row) => this.#hover(row, axis))
+      ? sweepPlot(this.#plot, this.#rows, (row) => this.load(row), (row) => this.#hover(row, axis), this.#budgetChoice)
       : Object.assign(document.createElement('p'), { className: 'hint', textContent: 'The plot of error against GPU time comes when the rows are timed.' }));
     this.#table(rows, axis);
+  }
+
+  // Rings the row whose settings a time budget chose for the frame on show (its label, as the
+  // stats' budget.chosen.description says it); null: none.
+  showBudgetChoice(label) {
+    if (label === this.#budgetChoice) return;
+    this.#budgetChoice = label;
+    if (this.#axis) this.#draw(this.#axis);
   }
 
   #table(rows, axis) {
@@ -158,11 +171,7 @@ export class SweepPanel {
   load(row) {
     const { settings } = row;
     if (settings.path_traced_samples > 0) return this.onPathTraced(settings.path_traced_samples);
-    if (!settings.lpv) return this.state.setAll({ 'lpv.enabled': false });
-    const cubic = settings.grid.every((cells) => cells === settings.grid[0]);
-    const values = { 'lpv.enabled': true, 'lpv.grid': cubic ? settings.grid[0] : settings.grid };
-    for (const name of ['iterations', 'cascades', 'rsm', 'vpl_downsample', 'bounces', 'occlusion', 'transfer', 'blocking'])
-      values[`lpv.${name}`] = settings[name];
+    const values = Object.fromEntries(Object.entries(lpvFieldsOf(settings)).map(([name, value]) => [`lpv.${name}`, value]));
     this.state.setAll(values);
   }
 }

@@ -4,8 +4,9 @@
 // its row (data-row); clicking one (or Enter or Space on it) loads that row's configuration.
 
 // svgText: the server's SVG; rows: the table's rows; onPick(row) loads a row; onHover(row)
-// says what the row under the pointer or the focus is.
-export function sweepPlot(svgText, rows, onPick, onHover) {
+// says what the row under the pointer or the focus is; chosenLabel: the label of the row a
+// time budget chose (ringed, class "budget-choice"), or null.
+export function sweepPlot(svgText, rows, onPick, onHover, chosenLabel = null) {
   const parsed = new DOMParser().parseFromString(svgText, 'image/svg+xml').documentElement;
   if (parsed.nodeName !== 'svg') throw new Error('the sweep plot is not an SVG document');
   const svg = document.importNode(parsed, true);
@@ -21,7 +22,9 @@ export function sweepPlot(svgText, rows, onPick, onHover) {
     const details = point.querySelector('title')?.textContent.split('\n').slice(1).join(', ') ?? '';
     point.setAttribute('tabindex', '0');
     point.setAttribute('role', 'button');
-    point.setAttribute('aria-label', `${row.label}: ${details}. Load these settings.`);
+    const chosen = row.label === chosenLabel;
+    point.classList.toggle('budget-choice', chosen);
+    point.setAttribute('aria-label', `${row.label}: ${details}.${chosen ? ' The time budget chose it.' : ''} Load these settings.`);
     point.addEventListener('click', () => onPick(row));
     point.addEventListener('pointerenter', () => onHover(row));
     point.addEventListener('focus', () => onHover(row));

@@ -90,9 +90,13 @@ void shuffle(std::vector<std::size_t>& order, std::mt19937& generator) {
 }  // namespace
 
 SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const SweepObserver& observer) {
+  return sweep(bench, request, api::sweep_configurations(request), observer);
+}
+
+SweepResult sweep(Workbench& bench, const api::SweepRequest& request,
+                  const std::vector<api::SweepSettings>& configurations, const SweepObserver& observer) {
   SweepResult result;
   result.table.axis = request.axis;
-  const std::vector<api::SweepSettings> configurations = api::sweep_configurations(request);
   const auto stopped = [&] { return observer.stop_requested && observer.stop_requested(); };
 
   const scene::Scene& scene = bench.renderer.scene(request.base.scene);

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace accuracy {
 
@@ -43,5 +44,9 @@ inline constexpr std::uint32_t kSweepOrderSeed = 20261125;
 
 // Throws api::NotFound or api::DoesNotFit as a render does.
 SweepResult sweep(Workbench& bench, const api::SweepRequest& request, const SweepObserver& observer = {});
+// The same over a list of configurations of the caller's, in place of the request's
+// parameters, LPV-off row and path-traced rows (a budget's calibration: budget_model.hpp).
+SweepResult sweep(Workbench& bench, const api::SweepRequest& request,
+                  const std::vector<api::SweepSettings>& configurations, const SweepObserver& observer = {});
 
 }  // namespace accuracy

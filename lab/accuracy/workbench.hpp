@@ -1,7 +1,8 @@
-// What the accuracy measurements work with: the renderer of one device and the references
-// computed so far. One per render worker, used by one thread at a time, like the renderer.
+// What the accuracy measurements work with: the renderer of one device, the references
+// computed so far and the time budgets' calibrations (budget_model.hpp). One per render worker, used by one thread at a time, like the renderer.
 #pragma once
 
+#include "lab/accuracy/budget_model.hpp"
 #include "lab/accuracy/reference_runs.hpp"
 #include "renderer/renderer.hpp"
 
@@ -12,6 +13,7 @@ struct Workbench {
 
   renderer::Renderer& renderer;
   ReferenceCache references;
+  BudgetCache budgets;
 };
 
 }  // namespace accuracy

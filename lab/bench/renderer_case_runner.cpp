@@ -1,6 +1,7 @@
 #include "lab/bench/renderer_case_runner.hpp"
 
 #include "api/request_json.hpp"
+#include "lab/accuracy/budget.hpp"
 #include "lab/bench/image_fingerprint.hpp"
 #include "scene/gltf_loader.hpp"
 
@@ -10,11 +11,12 @@
 
 namespace bench {
 
-RendererCaseRunner::RendererCaseRunner(renderer::Renderer& renderer, api::BenchDevice device, bool allow_scene_files)
-    : renderer_(renderer), device_(std::move(device)), allow_scene_files_(allow_scene_files) {}
+RendererCaseRunner::RendererCaseRunner(accuracy::Workbench& bench, api::BenchDevice device, bool allow_scene_files)
+    : bench_(bench), device_(std::move(device)), allow_scene_files_(allow_scene_files) {}
 
 renderer::RenderResult RendererCaseRunner::render(const api::BenchCase& c, unsigned readback) {
-  if (!c.scene_file) return renderer_.render(c.request, readback);
+  if (c.request.budget_ms) return accuracy::render_within_budget(bench_, c.request, readback);  // never a file's
+  if (!c.scene_file) return bench_.renderer.render(c.request, readback);
   if (!allow_scene_files_) throw std::runtime_error("scene_file: not available here; upload the scene and name its id");
   auto it = scene_files_.find(*c.scene_file);
   if (it == scene_files_.end()) {
@@ -24,7 +26,7 @@ renderer::RenderResult RendererCaseRunner::render(const api::BenchCase& c, unsig
       throw std::runtime_error(*c.scene_file + ": " + e.what());
     }
   }
-  return renderer_.render(it->second, c.request, readback);
+  return bench_.renderer.render(it->second, c.request, readback);
 }
 
 Measurement RendererCaseRunner::render_timed(const api::BenchCase& c) {

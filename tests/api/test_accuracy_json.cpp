@@ -110,6 +110,12 @@ TEST(CompareRequest, ErrorsNameTheirField) {
   EXPECT_EQ(field_of_compare_error(R"({"base": {}, "reference": {}, "colour": 1})"), "colour");
 }
 
+TEST(AccuracyRequests, RefuseABudgetWhereTheyMeasureTheSettingsTheyName) {
+  EXPECT_EQ(field_of_compare_error(R"({"base": {"budget_ms": 50}, "reference": {}})"), "base.budget_ms");
+  EXPECT_EQ(field_of_compare_error(R"({"base": {}, "against": {"budget_ms": 50}})"), "against.budget_ms");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {"budget_ms": 50}})"), "base.budget_ms");
+}
+
 TEST(SweepRequest, ExpandsEveryCombinationAfterTheLpvOffRow) {
   const api::SweepRequest s = api::parse_sweep_request(
       R"({"base": {"lpv": {"rsm": 128}}, "parameters": {"grid": [8, 16], "iterations": [2, 4, 8], "occlusion": [true, false]}})");

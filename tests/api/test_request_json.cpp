@@ -113,6 +113,7 @@ void expect_same(const api::RenderRequest& a, const api::RenderRequest& b) {
   EXPECT_EQ(a.plan, b.plan);
   EXPECT_EQ(a.plan_keep, b.plan_keep);
   EXPECT_EQ(a.repeat, b.repeat);
+  EXPECT_EQ(a.budget_ms, b.budget_ms);
 }
 
 // ---- enums ----
@@ -309,6 +310,23 @@ TEST(ParseRequest, AcceptsValuesAtTheLimits) {
     const auto error = error_of(std::string(text));
     EXPECT_FALSE(error.has_value()) << text << " -> " << (error ? error->what() : "");
   }
+}
+
+TEST(ParseRequest, BudgetMsIsATimeInItsRangeForAViewWithLpvLight) {
+  EXPECT_EQ(api::parse_render_request(R"({"budget_ms": 50})").budget_ms, 50.0f);
+  EXPECT_FALSE(api::parse_render_request("{}").budget_ms.has_value());
+  EXPECT_EQ(api::parse_render_request(R"({"budget_ms": 0.1, "output": {"view": "indirect"}})").budget_ms, 0.1f);
+  for (const char* bad : {R"({"budget_ms": 0})", R"({"budget_ms": -5})", R"({"budget_ms": 600001})",
+                          R"({"budget_ms": "fast"})", R"({"budget_ms": null})"}) {
+    const auto error = error_of(std::string(bad));
+    ASSERT_TRUE(error.has_value()) << bad;
+    EXPECT_EQ(error->field(), "budget_ms") << bad;
+  }
+  const auto albedo = error_of(std::string(R"({"budget_ms": 50, "output": {"view": "albedo"}})"));
+  ASSERT_TRUE(albedo.has_value());
+  EXPECT_EQ(albedo->field(), "budget_ms");
+  EXPECT_NE(std::string(albedo->what()).find("view \"albedo\": it shows no LPV light"), std::string::npos)
+      << albedo->what();
 }
 
 TEST(ParseRequest, NumberFieldsAcceptIntegers) {
@@ -702,7 +720,7 @@ api::RenderRequest full_request() {
   r.output.width = 1920;
   r.output.height = 1080;
   r.output.format = api::ImageFormat::pfm;
-  r.output.view = api::View::depth;
+  r.output.view = api::View::indirect;  // a view a budget can choose for (budget_ms below)
   r.output.exposure = -2.3f;
   r.output.tonemap = api::Tonemap::reinhard;
   r.shadows.enabled = false;
@@ -724,6 +742,7 @@ api::RenderRequest full_request() {
   r.plan = api::PlanMode::exact;
   r.plan_keep = {api::PlanRule::grid, api::PlanRule::convergence};
   r.repeat = 7;
+  r.budget_ms = 42.5f;
   return r;
 }
 

@@ -263,6 +263,40 @@ test('"copy as curl" gives the command that renders the same frame', async (t) =
   assert.deepEqual(errors, []);
 });
 
+test('a time budget renders its choice, says so, and rings it on a sweep', async (t) => {
+  // A budget nothing fits: the cheapest frame (LPV off, on the forward path), with a warning.
+  const request = { output: { width: 64, height: 64 }, budget_ms: 0.1 };
+  const { page, errors } = await openPage(t, '#request=' + encodeURIComponent(JSON.stringify(request)), { frame: false });
+  const ran = await frameShown(page, () => true, 120_000);
+  assert.equal(ran.budget_ms, undefined, 'the frame on show is what ran: the choice, not the budget');
+  assert.equal(ran.lpv?.enabled, false, 'and nothing is cheaper than LPV off');
+  assert.equal(await page.locator('#budget-ms').inputValue(), '0.1');
+  assert.match(await page.locator('#frame-caption').textContent(), /budget 0\.1 ms chose LPV off \(direct light only\) \(predicted [\d.]+ ms, over the budget: nothing fits\)$/);
+  assert.match(await page.locator('#plan-decisions li').first().textContent(), /^budget_ms 0\.1 ms: LPV off/);
+  assert.match(await page.locator('#warnings').textContent(), /budget_ms 0\.1 ms is below the cheapest frame this device renders/);
+
+  // A sweep of the same view rings the row the budget chose.
+  await page.locator('#tab-sweep').click();
+  await page.locator('#sweep-grid').fill('8');
+  await page.locator('#sweep-path-traced').fill('');
+  await page.locator('#sweep-size').fill('64');
+  await page.locator('#sweep-samples').fill('16');
+  await page.locator('#sweep-run').click();
+  await page.waitForFunction(() => document.getElementById('sweep-progress-label').textContent.startsWith('Done'), null, { timeout: 120_000 });
+  const ringed = page.locator('#sweep-plot .row.budget-choice');
+  assert.equal(await ringed.count(), 1);
+  assert.match(await ringed.getAttribute('aria-label'), /^LPV off \(direct light only\): .*The time budget chose it\./);
+  await screenshot(page, '11-budget');
+
+  // Without a budget the ring goes: the frame ran the settings themselves.
+  await page.locator('#tab-settings').click();
+  await page.locator('#budget-ms').fill('');
+  await frameShown(page, (r) => r.lpv?.enabled !== false);
+  await page.locator('#tab-sweep').click();
+  assert.equal(await page.locator('#sweep-plot .row.budget-choice').count(), 0);
+  assert.deepEqual(errors, []);
+});
+
 test('the error against the reference, and a sweep whose points load their settings', async (t) => {
   // Propagation, whose iterations the sweep below varies (the gather has none).
   const request = '{"output":{"width":128,"height":128},"lpv":{"transfer":"sharpened"}}';

@@ -18,6 +18,7 @@ std::string usage(const std::vector<std::string>& suites) {
        lpv-bench compare BASELINE.json CANDIDATE.json [options]
        lpv-bench ab --a LPV_BENCH_A --b LPV_BENCH_B SUITE [options]
        lpv-bench worker SUITE [options]
+       lpv-bench budget [SCENE...] [options]
 
 sweep    renders the reference once, then every configuration of LPV settings the
          request lists (the schema of POST /v1/sweep), and writes the accuracy-versus-
@@ -41,6 +42,12 @@ ab       runs the suite with two builds' lpv-bench taking turns render by render
          results).
 worker   one build's side of ab: renders the suite's cases when told to on standard input
          and answers on standard output (the build must have it: ab starts it).
+budget   how well requests with budget_ms meet their budgets: per scene (every built-in
+         one by default), the default frame's time T, then requests with budgets of T/2,
+         T, 2T and 4T, each against a full sweep of the same frame: whether the chosen
+         frame took at most 1.1 times its budget, and whether its error is within 10% of
+         the most accurate sweep row that fits the budget. Writes budget.json and
+         budget.md (docs/budget.md).
 See docs/perf-regression.md.
 
 options:
@@ -84,6 +91,9 @@ compare, ab:
                          gpu_ms, wall_ms and round_trip_ms, are; passes are reported)
   --max-probe-spread F   a run whose CPU noise probe scattered more (MAD / median) gets no
                          verdict on its times: inconclusive, exit 4 (default: 0.05)
+budget:
+  --size N               the frames' width and height (default: 128)
+  --samples N            the full sweeps' reference paths per pixel (default: 512)
 ab:
   --a PATH, --b PATH     lpv-bench of the baseline (A) and of the candidate (B)
   --rounds N             pairs of timed renders per case (default: the suite's repetitions)
@@ -102,11 +112,11 @@ namespace {
 
 constexpr unsigned bit(Command c) { return 1u << static_cast<unsigned>(c); }
 constexpr unsigned kAll = bit(Command::sweep) | bit(Command::diff) | bit(Command::run) | bit(Command::compare) |
-                          bit(Command::ab) | bit(Command::worker);
+                          bit(Command::ab) | bit(Command::worker) | bit(Command::budget);
 constexpr unsigned kSuites = bit(Command::run) | bit(Command::ab);
 constexpr unsigned kLocalRuns = kSuites | bit(Command::worker);  // where this build renders
 constexpr unsigned kVerdicts = bit(Command::compare) | bit(Command::ab);
-constexpr unsigned kRenders = bit(Command::sweep) | bit(Command::diff) | kLocalRuns;
+constexpr unsigned kRenders = bit(Command::sweep) | bit(Command::diff) | kLocalRuns | bit(Command::budget);
 
 const char* name_of(Command c) {
   switch (c) {
@@ -116,6 +126,7 @@ const char* name_of(Command c) {
     case Command::compare: return "compare";
     case Command::ab: return "ab";
     case Command::worker: return "worker";
+    case Command::budget: return "budget";
   }
   return "?";
 }
@@ -178,18 +189,23 @@ const std::vector<Flag>& flags() {
       {"--a", "", bit(Command::ab), [](Options& o, S v) { o.build_a = v; }},
       {"--b", "", bit(Command::ab), [](Options& o, S v) { o.build_b = v; }},
       {"--rounds", "", bit(Command::ab), [](Options& o, S v) { o.rounds = number<std::uint32_t>("--rounds", v, 1, 1000); }},
+      {"--size", "", bit(Command::budget), [](Options& o, S v) { o.size = number<std::uint32_t>("--size", v, 16, 2048); }},
+      {"--samples", "", bit(Command::budget),
+       [](Options& o, S v) { o.reference_samples = number<std::uint32_t>("--samples", v, 1, 65536); }},
   };
   return table;
 }
 
 Command command_named(const std::string& name) {
-  for (const Command c : {Command::sweep, Command::diff, Command::run, Command::compare, Command::ab, Command::worker})
+  for (const Command c : {Command::sweep, Command::diff, Command::run, Command::compare, Command::ab, Command::worker,
+                          Command::budget})
     if (name == name_of(c)) return c;
-  throw UsageError("unknown command '" + name + "' (sweep, diff, run, compare, ab or worker)");
+  throw UsageError("unknown command '" + name + "' (sweep, diff, run, compare, ab, worker or budget)");
 }
 
 // The positional arguments each command takes, and what they are.
 void check_inputs(const Options& o) {
+  if (o.command == Command::budget) return;  // any number of scenes
   const std::size_t wanted = o.command == Command::compare ? 2 : 1;
   if (o.inputs.size() < wanted) {
     switch (o.command) {
@@ -199,6 +215,7 @@ void check_inputs(const Options& o) {
       case Command::ab:
       case Command::worker: throw UsageError("missing the suite (a file, or a name in bench/suites)");
       case Command::compare: throw UsageError("compare needs two results files: BASELINE.json CANDIDATE.json");
+      case Command::budget: break;  // returned above
     }
   }
   if (o.inputs.size() > wanted) throw UsageError("unexpected argument '" + o.inputs[wanted] + "'");
@@ -228,7 +245,7 @@ Options parse(int argc, char** argv) {
     else
       o.inputs.push_back(item.value);
   }
-  if (!command) throw UsageError("missing the command (sweep, diff, run, compare, ab or worker)");
+  if (!command) throw UsageError("missing the command (sweep, diff, run, compare, ab, worker or budget)");
   o.command = *command;
   for (const auto& [flag, value] : given) {
     if (!(flag->commands & bit(o.command)))

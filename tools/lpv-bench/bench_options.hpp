@@ -12,12 +12,12 @@
 
 namespace bench {
 
-enum class Command { sweep, diff, run, compare, ab, worker };
+enum class Command { sweep, diff, run, compare, ab, worker, budget };
 
 struct Options {
   Command command = Command::sweep;
   std::vector<std::string> inputs;     // sweep, diff: the request ("-": stdin); run, ab, worker: the suite;
-                                       // compare: two results
+                                       // compare: two results; budget: scenes (none: every built-in)
   std::optional<std::string> out;      // -o: the directory (sweep, diff, ab) or the file (run, compare)
   std::optional<std::string> device;   // overrides LPV_DEVICE
   bool quiet = false;                  // no progress or summary
@@ -42,6 +42,10 @@ struct Options {
   std::optional<std::string> build_a;  // lpv-bench of the baseline
   std::optional<std::string> build_b;  // lpv-bench of the candidate
   std::optional<std::uint32_t> rounds;  // pairs of renders per case (default: the suite's repetitions)
+
+  // budget
+  std::uint32_t size = 128;              // the frames' width and height
+  std::uint32_t reference_samples = 512;  // the full sweeps' reference
 };
 
 class UsageError : public tools::UsageError {

@@ -16,6 +16,7 @@ int run_command(const Options& options);      // lpv-bench run
 int compare_command(const Options& options);  // lpv-bench compare
 int ab_command(const Options& options);       // lpv-bench ab
 int worker_command(const Options& options);   // lpv-bench worker: one side of ab
+int budget_command(const Options& options);   // lpv-bench budget: budgets met (docs/budget.md)
 
 // What compare and ab end with: the comparison as JSON (when `json_file` is given) and as
 // Markdown (--report), printed unless --quiet; 1 for a regression or when no case could be

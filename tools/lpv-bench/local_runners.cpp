@@ -40,6 +40,6 @@ api::BenchDevice device_of(const renderer::DeviceReport& report) { return {repor
 LocalRunners::LocalRunners(const Options& options, const api::BenchSuite& suite)
     : round_trips_(options, suite),
       lab_(options),
-      renders_(lab_.renderer, device_of(lab_.device.report()), true) {}
+      renders_(lab_.bench, device_of(lab_.device.report()), true) {}
 
 }  // namespace bench

@@ -142,6 +142,7 @@ int run(int argc, char** argv) {
     case bench::Command::compare: return bench::compare_command(options);
     case bench::Command::ab: return bench::ab_command(options);
     case bench::Command::worker: return bench::worker_command(options);
+    case bench::Command::budget: return bench::budget_command(options);
     case bench::Command::sweep: return run_sweep(options, read_request_text(options.inputs[0]));
     case bench::Command::diff: return run_diff(options, read_request_text(options.inputs[0]));
   }

@@ -5,6 +5,8 @@
 #include "cli_options.hpp"
 #include "core/elapsed.hpp"
 #include "image/file_io.hpp"
+#include "lab/accuracy/budget.hpp"
+#include "lab/accuracy/workbench.hpp"
 #include "renderer/gpu_device.hpp"
 #include "renderer/output.hpp"
 #include "renderer/renderer.hpp"
@@ -90,6 +92,8 @@ void print_summary(const api::RenderStats& s, const std::string& file) {
   for (const auto& p : s.passes)
     if (p.ran) std::fprintf(stderr, " %s %.3f", p.name.c_str(), p.gpu_ms.median);
   std::fprintf(stderr, "\n  wall %.3f ms per frame, encode %.3f ms\n", s.wall_ms.median, s.cpu_ms.at("encode").median);
+  if (s.budget)  // the plan's first decision says the choice: what, predicted, the runner-up
+    std::fprintf(stderr, "  %s\n", s.decisions.front().c_str());
   for (const auto& warning : s.warnings) std::fprintf(stderr, "  warning: %s\n", warning.c_str());
 }
 
@@ -146,9 +150,25 @@ int run(int argc, char** argv) {
     renderer_options.progress = [&](const renderer::RenderProgress& p) {
       bar.update("render", p.done, "frame " + std::to_string(p.frame) + "/" + std::to_string(p.frames) + " " + p.pass);
     };
+  // A budget measures its models with sweeps, which find the scene by name: a scene file is
+  // then served under a name no built-in scene has.
+  if (request.budget_ms && file_scene) {
+    request.scene = "file:" + file_scene->name;
+    renderer_options.scenes = [&](const std::string& name) -> std::optional<scene::Scene> {
+      if (name == request.scene) return *file_scene;
+      return std::nullopt;
+    };
+  }
   renderer::Renderer renderer(device.vulkan(), std::move(renderer_options));
   renderer::RenderResult result;
-  if (file_scene) {
+  if (request.budget_ms) {
+    accuracy::Workbench bench(renderer);
+    try {
+      result = accuracy::render_within_budget(bench, request, renderer::readback_for(request.output));
+    } catch (const scene::LoadError& e) {
+      throw SceneFileError(options.scene_file.value_or(request.scene), e.what());
+    }
+  } else if (file_scene) {
     try {
       result = renderer.render(*file_scene, request, renderer::readback_for(request.output));
     } catch (const scene::LoadError& e) {
