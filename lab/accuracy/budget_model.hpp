@@ -2,7 +2,7 @@
 // choice: the candidate configurations, and the cost and accuracy models, both measured on
 // this device and scene, never set by hand.
 //
-// The accuracy model is a sweep of the candidates at a small size against the path-traced
+// The accuracy model is a sweep of the candidates at up to 128 pixels wide against the path-traced
 // reference of the same view (sweep.hpp): each candidate's final image RMSE. The cost model
 // splits a frame's passes in two:
 //  - the LPV's passes (rsm, inject, geometry_volume, propagate, gather) work on the grid and
@@ -31,10 +31,10 @@ namespace accuracy {
 struct Workbench;
 
 // The configurations a budget weighs, from the request's LPV settings (the fields a budget
-// does not vary keep the request's values): LPV off; the gather (transfer "auto") at 8^3 to
-// 24^3 cells, at 16^3 with a quarter of the VPLs or with two cascades; and propagation
-// (sharpened) at 16^3.
-// Cheapest first, roughly: the order of the stats' candidates.
+// does not vary keep the request's values): LPV off; the gather (transfer "auto") at 8^3,
+// 12^3, 16^3, 20^3 and 24^3 cells, each with the requested RSM and with half its side; at
+// 16^3 with two cascades; and propagation (sharpened) at 16^3. Cheapest first, roughly: the
+// order of the stats' candidates.
 std::vector<api::SweepSettings> budget_candidates(const api::Lpv& requested);
 
 // The accuracy model and the LPV passes' cost, of one scene, lights and view on this device.
@@ -57,7 +57,8 @@ struct FrameCosts {
 // Whether a pass is one of the LPV's (its time does not follow the output's size).
 bool is_lpv_pass(const std::string& pass);
 
-// The calibration size for an output of width x height: 64 pixels wide, the same shape.
+// The calibration size for an output of width x height: the output's width within [32, 128]
+// pixels, the same shape (at most 4:1).
 std::pair<std::uint32_t, std::uint32_t> calibration_size(std::uint32_t width, std::uint32_t height);
 
 // Measures a calibration for `request` (its scene, camera, lights, view and LPV settings).

@@ -71,7 +71,7 @@ TEST(BudgetCandidates, CoverLpvOffGridsCascadesVplsAndTransfers) {
   EXPECT_TRUE(any([](const api::SweepSettings& s) { return s.lpv && s.grid[0] == 8; }));
   EXPECT_TRUE(any([](const api::SweepSettings& s) { return s.lpv && s.grid[0] == 24; }));
   EXPECT_TRUE(any([](const api::SweepSettings& s) { return s.cascades == 2; }));
-  EXPECT_TRUE(any([](const api::SweepSettings& s) { return s.vpl_downsample == 2; }));
+  EXPECT_TRUE(any([](const api::SweepSettings& s) { return s.lpv && s.grid[0] == 12 && s.rsm == 128; }));
   EXPECT_TRUE(any([](const api::SweepSettings& s) { return s.transfer == api::Transfer::sharpened; }));
   for (const api::SweepSettings& s : c) {
     if (!s.lpv) continue;
@@ -81,9 +81,10 @@ TEST(BudgetCandidates, CoverLpvOffGridsCascadesVplsAndTransfers) {
 }
 
 TEST(BudgetCandidates, TheCalibrationKeepsTheOutputsShape) {
-  EXPECT_EQ(accuracy::calibration_size(512, 512), std::make_pair(64u, 64u));
-  EXPECT_EQ(accuracy::calibration_size(1024, 512), std::make_pair(64u, 32u));
-  EXPECT_EQ(accuracy::calibration_size(100, 8000), std::make_pair(64u, 256u));  // at most 4:1
+  EXPECT_EQ(accuracy::calibration_size(512, 512), std::make_pair(128u, 128u));
+  EXPECT_EQ(accuracy::calibration_size(1024, 512), std::make_pair(128u, 64u));
+  EXPECT_EQ(accuracy::calibration_size(100, 8000), std::make_pair(100u, 400u));  // at most 4:1
+  EXPECT_EQ(accuracy::calibration_size(8, 8), std::make_pair(32u, 32u));  // an interior to measure
 }
 
 class Budget : public GpuTest {
