@@ -67,9 +67,11 @@ struct BudgetStats {
   std::optional<std::size_t> runner_up;     // the most accurate of the others
   std::string runner_up_lost;               // why it was not chosen
   std::optional<double> actual_ms;          // the chosen frame's median gpu_ms (absent in a dry run)
-  // The calibration the predictions come from: measured by this request (false: cached).
+  // The models the predictions come from, measured by this request (false: reused): the
+  // candidates' sweep (errors and LPV passes), and the frame passes at the request's size.
   bool calibrated_now = false;
-  double calibration_ms = 0.0;  // what measuring it took (0 when cached)
+  bool frame_costs_measured_now = false;
+  double calibration_ms = 0.0;  // what measuring them took now (0 when both were reused)
   std::string calibration;      // what was measured, in words
 };
 

@@ -401,7 +401,11 @@ json budget_stats_json(const BudgetStats& b) {
   for (const BudgetCandidate& c : b.candidates) candidates.push_back(budget_candidate_json(c));
   json j = {{"budget_ms", shortest(static_cast<float>(b.budget_ms))},  // the request's float, as it was sent
             {"chosen", budget_candidate_json(b.candidates.at(b.chosen))},
-            {"calibration", {{"measured_now", b.calibrated_now}, {"ms", b.calibration_ms}, {"what", b.calibration}}},
+            {"calibration",
+             {{"measured_now", b.calibrated_now},
+              {"frame_costs_measured_now", b.frame_costs_measured_now},
+              {"ms", b.calibration_ms},
+              {"what", b.calibration}}},
             {"candidates", std::move(candidates)}};
   if (b.runner_up) {
     j["runner_up"] = budget_candidate_json(b.candidates.at(*b.runner_up));

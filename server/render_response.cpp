@@ -11,6 +11,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace server {
 namespace {
@@ -26,18 +28,32 @@ std::string timing_entry(const std::string& name, double ms, const char* descrip
 }  // namespace
 
 std::string stats_header_value(const nlohmann::json& stats, std::string& omitted) {
-  omitted.clear();
-  std::string value = ascii_json(stats);
-  if (value.size() <= kMaxStatsHeaderBytes || !stats.contains("lpv")) return value;
   nlohmann::json shorter = stats;
-  if (shorter["lpv"].contains("cascades"))
+  std::string value = ascii_json(shorter);
+  std::vector<std::string> parts;
+  const auto too_long = [&] { return value.size() > kMaxStatsHeaderBytes; };
+  const auto dropped = [&](const std::string& what) {
+    parts.push_back(what);
+    value = ascii_json(shorter);
+  };
+  // What goes while the header is too long, least useful first: the LPV's per-iteration flux,
+  // a budget's list of candidates (its choice and runner-up stay), then the LPV stats whole.
+  if (too_long() && shorter.contains("lpv") && shorter["lpv"].contains("cascades")) {
     for (auto& cascade : shorter["lpv"]["cascades"]) cascade.erase("propagated_flux");
-  omitted = "lpv.cascades[].propagated_flux";
-  value = ascii_json(shorter);
-  if (value.size() <= kMaxStatsHeaderBytes) return value;
-  shorter.erase("lpv");
-  omitted = "lpv";
-  return ascii_json(shorter);
+    dropped("lpv.cascades[].propagated_flux");
+  }
+  if (too_long() && shorter.contains("budget")) {
+    shorter["budget"].erase("candidates");
+    dropped("budget.candidates");
+  }
+  if (too_long() && shorter.contains("lpv")) {
+    shorter.erase("lpv");
+    std::erase(parts, "lpv.cascades[].propagated_flux");  // it went with the rest
+    dropped("lpv");
+  }
+  omitted.clear();
+  for (const std::string& part : parts) omitted += (omitted.empty() ? "" : ", ") + part;
+  return value;
 }
 
 std::string server_timing_value(const api::RenderStats& stats, double queue_ms, double encode_ms, double total_ms) {

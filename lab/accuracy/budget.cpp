@@ -88,7 +88,8 @@ renderer::RenderResult render_within_budget(Workbench& bench, const api::RenderR
   budget.chosen = choice.chosen;
   budget.runner_up = choice.runner_up;
   budget.runner_up_lost = choice.runner_up_lost;
-  budget.calibrated_now = calibrated_now || frame_measured_now;
+  budget.calibrated_now = calibrated_now;
+  budget.frame_costs_measured_now = frame_measured_now;
   budget.calibration_ms = (calibrated_now ? calibration->measure_ms : 0.0) +
                           (frame_measured_now ? frame_costs->measure_ms : 0.0);
   budget.calibration = "errors and LPV pass times from a sweep of the " +
@@ -105,8 +106,10 @@ renderer::RenderResult render_within_budget(Workbench& bench, const api::RenderR
 
   const api::BudgetCandidate& picked = budget.candidates[choice.chosen];
   api::RenderStats& stats = result.stats;
+  // What the frame took, after the prediction: a dry run renders none.
+  const std::string took = request.dry_run ? "" : ", took " + ms_text(stats.gpu_ms.median);
   std::string decision = "budget_ms " + ms_text(budget_ms) + ": " + api::describe(picked.settings) + " (predicted " +
-                         ms_text(picked.predicted_ms) + ", error " + error_text(picked.predicted_error) + ")";
+                         ms_text(picked.predicted_ms) + took + ", error " + error_text(picked.predicted_error) + ")";
   if (choice.runner_up)
     decision += "; runner-up " + api::describe(budget.candidates[*choice.runner_up].settings) + ": " +
                 choice.runner_up_lost;
@@ -114,7 +117,7 @@ renderer::RenderResult render_within_budget(Workbench& bench, const api::RenderR
   if (!picked.fits)
     stats.warnings.push_back("budget_ms " + ms_text(budget_ms) + " is below the cheapest frame this device renders: " +
                              api::describe(picked.settings) + ", predicted " + ms_text(picked.predicted_ms) +
-                             "; that frame was rendered");
+                             "; that frame was rendered" + (request.dry_run ? "" : " (it took " + ms_text(stats.gpu_ms.median) + ")"));
   if (budget.calibration_ms > 0.0) stats.cpu_ms["budget_calibration"] = api::TimeSummary::of({budget.calibration_ms});
   if (!request.dry_run) {
     budget.actual_ms = stats.gpu_ms.median;

@@ -39,5 +39,22 @@ TEST(StatsHeader, SmallStatsGoWholeAndLargeOnesLoseTheLpvDetailFirst) {
   EXPECT_LE(shortened.dump().size(), kMaxStatsHeaderBytes);
 }
 
+TEST(StatsHeader, ABudgetKeepsItsChoiceAndLosesItsCandidatesBeforeTheLpvStats) {
+  nlohmann::json stats = {{"scene", "cornell-box"}, {"lpv", {{"vpl_count", 42}}}};
+  const nlohmann::json candidate = {{"description", std::string(600, 'x')}, {"predicted_ms", 1.5}};
+  stats["budget"] = {{"budget_ms", 50}, {"chosen", candidate}, {"candidates", std::vector<nlohmann::json>(13, candidate)}};
+  std::string omitted;
+  const auto shortened = nlohmann::json::parse(stats_header_value(stats, omitted));
+  EXPECT_EQ(omitted, "budget.candidates");
+  EXPECT_EQ(shortened["budget"]["chosen"], candidate);
+  EXPECT_FALSE(shortened["budget"].contains("candidates"));
+  EXPECT_EQ(shortened["lpv"]["vpl_count"], 42);
+
+  stats["warnings"] = std::vector<std::string>(20, std::string(400, 'w'));  // too long even then
+  const auto shortest = nlohmann::json::parse(stats_header_value(stats, omitted));
+  EXPECT_EQ(omitted, "budget.candidates, lpv");
+  EXPECT_FALSE(shortest.contains("lpv"));
+}
+
 }  // namespace
 }  // namespace server
