@@ -333,4 +333,6 @@ std::string to_svg_plot(const SweepTable& table, const std::string& title) {
   return svg.finish();
 }
 
+std::string sweep_plot_title(const std::string& scene) { return "Error against time per frame: " + scene; }
+
 }  // namespace api

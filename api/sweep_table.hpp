@@ -139,6 +139,9 @@ SweepTable sweep_table_from_json(const nlohmann::json& json, const std::string& 
 // table (data-row), so a page that shows the plot can tell which row was picked: the web
 // page shows this plot, it draws none of its own. Call mark_pareto first.
 std::string to_svg_plot(const SweepTable& table, const std::string& title);
+// The plot's title for a sweep of `scene`, as the server and lpv-bench give it: its rows may be
+// raster frames (GPU time) or path-traced ones (CPU time), so it says neither.
+std::string sweep_plot_title(const std::string& scene);
 
 std::string to_string(SweepMetric m);  // "rmse", "relative_mse", "psnr_db", "ssim", "mean_abs_error", "flip"
 std::string to_string(SweepImage i);   // "final", "indirect"

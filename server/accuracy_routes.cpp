@@ -76,7 +76,7 @@ nlohmann::json sweep_json(const accuracy::SweepResult& result) {
 }
 
 std::string sweep_plot(const SweepJob& job) {
-  return api::to_svg_plot(job.result->table, "LPV error against GPU time: " + job.request.base.scene);
+  return api::to_svg_plot(job.result->table, api::sweep_plot_title(job.request.base.scene));
 }
 
 enum class SweepFormat { json, csv, svg, ndjson };

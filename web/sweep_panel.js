@@ -125,7 +125,7 @@ export class SweepPanel {
     this.#axis = axis;
     this.elements.plot.replaceChildren(this.#plot
       ? sweepPlot(this.#plot, this.#rows, (row) => this.load(row), (row) => this.#hover(row, axis), this.#budgetChoice)
-      : Object.assign(document.createElement('p'), { className: 'hint', textContent: 'The plot of error against GPU time comes when the rows are timed.' }));
+      : Object.assign(document.createElement('p'), { className: 'hint', textContent: 'The plot of error against time per frame comes when the rows are timed.' }));
     this.#table(rows, axis);
   }
 

@@ -212,7 +212,7 @@ TEST(HttpAccuracy, SweepStreamsItsEventsInOrder) {
   // names its row.
   const std::string plot = events.back().value("plot", "");
   EXPECT_TRUE(plot.starts_with("<svg ")) << plot.substr(0, 40);
-  EXPECT_NE(plot.find("LPV error against GPU time: cornell-box"), std::string::npos);
+  EXPECT_NE(plot.find("Error against time per frame: cornell-box"), std::string::npos);
   for (int row = 0; row < 5; ++row)
     EXPECT_NE(plot.find("data-row=\"" + std::to_string(row) + "\""), std::string::npos) << "row " << row;
 }

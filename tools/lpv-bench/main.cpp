@@ -88,7 +88,7 @@ int run_sweep(const bench::Options& options, const std::string& text) {
   bench::write_text_file(dir / "sweep.csv", api::to_csv(result.table));
   const std::string markdown = bench::sweep_markdown(result.table, result.reference);
   bench::write_text_file(dir / "sweep.md", markdown);
-  bench::write_text_file(dir / "sweep.svg", api::to_svg_plot(result.table, "LPV error against GPU time: " + request.base.scene));
+  bench::write_text_file(dir / "sweep.svg", api::to_svg_plot(result.table, api::sweep_plot_title(request.base.scene)));
   if (!options.quiet) std::fputs(markdown.c_str(), stdout);
   return 0;
 }
