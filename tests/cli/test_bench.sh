@@ -37,6 +37,23 @@ check "difference.png is 24 high" test "$(u32be d/difference.png 20)" -eq 24
 check "compare.json has metrics" grep -q '"rmse"' d/compare.json
 check "quiet prints nothing" test ! -s out.txt
 
+# budget: the lone plane (its planner skips the LPV: every frame is cheap), small and noisy,
+# for the files and their shape; how well budgets are met is docs/budget.md's full run.
+run budget lone-plane --size 32 --samples 4 -o b
+check "budget exits 0" test "$rc" -eq 0
+for f in budget.json budget.md; do check "budget writes $f" test -s "b/$f"; done
+check "budget: four budgets of the scene (T/2, T, 2T, 4T)" test "$(grep -c '"scene": "lone-plane"' b/budget.json)" -eq 4
+check "budget: each with its choice, prediction and time" \
+  test "$(grep -c -e '"chosen":' -e '"predicted_ms":' -e '"actual_ms":' b/budget.json)" -eq 12
+check "budget: the summary counts the budgets met" grep -q "^- frame time within 1.1x the budget: [0-4] of 4" b/budget.md
+check "budget: a table row per budget" test "$(grep -c '^| lone-plane |' b/budget.md)" -eq 4
+run budget atlantis -o nowhere
+check "budget of an unknown scene exits 2" test "$rc" -eq 2
+check "budget of an unknown scene names it" grep -q "unknown scene 'atlantis'" err.txt
+check "nothing written for an unknown scene" test ! -e nowhere
+run budget --size 8
+check "budget --size below 16 exits 2" test "$rc" -eq 2
+
 echo '{"base": {}, "parameters": {"grid": [0]}}' >bad.json
 run sweep bad.json -o bad
 check "bad request exits 2" test "$rc" -eq 2
