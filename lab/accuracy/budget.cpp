@@ -106,8 +106,9 @@ renderer::RenderResult render_within_budget(Workbench& bench, const api::RenderR
 
   const api::BudgetCandidate& picked = budget.candidates[choice.chosen];
   api::RenderStats& stats = result.stats;
-  // What the frame took, after the prediction: a dry run renders none.
-  const std::string took = request.dry_run ? "" : ", took " + ms_text(stats.gpu_ms.median);
+  // What the frame took, beside its prediction: a dry run renders none.
+  if (!request.dry_run) budget.actual_ms = stats.gpu_ms.median;
+  const std::string took = budget.actual_ms ? ", took " + ms_text(*budget.actual_ms) : "";
   std::string decision = "budget_ms " + ms_text(budget_ms) + ": " + api::describe(picked.settings) + " (predicted " +
                          ms_text(picked.predicted_ms) + took + ", error " + error_text(picked.predicted_error) + ")";
   if (choice.runner_up)
@@ -117,10 +118,10 @@ renderer::RenderResult render_within_budget(Workbench& bench, const api::RenderR
   if (!picked.fits)
     stats.warnings.push_back("budget_ms " + ms_text(budget_ms) + " is below the cheapest frame this device renders: " +
                              api::describe(picked.settings) + ", predicted " + ms_text(picked.predicted_ms) +
-                             "; that frame was rendered" + (request.dry_run ? "" : " (it took " + ms_text(stats.gpu_ms.median) + ")"));
+                             "; that frame was rendered" +
+                             (budget.actual_ms ? " (it took " + ms_text(*budget.actual_ms) + ")" : ""));
   if (budget.calibration_ms > 0.0) stats.cpu_ms["budget_calibration"] = api::TimeSummary::of({budget.calibration_ms});
-  if (!request.dry_run) {
-    budget.actual_ms = stats.gpu_ms.median;
+  if (budget.actual_ms) {
     if (picked.fits && *budget.actual_ms > budget_ms * (1.0 + kOverBudgetFraction))
       stats.warnings.push_back("the frame took " + ms_text(*budget.actual_ms) + ", over the budget of " +
                                ms_text(budget_ms) + " (predicted " + ms_text(picked.predicted_ms) + ")");

@@ -2,6 +2,7 @@
 
 #include "api/accuracy_request.hpp"
 #include "api/request_json.hpp"
+#include "core/elapsed.hpp"
 #include "lab/accuracy/sweep.hpp"
 #include "lab/accuracy/workbench.hpp"
 
@@ -16,10 +17,6 @@ namespace accuracy {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // The calibration's size and reference: large enough that a finer grid's sharper indirect
 // light shows in the error (at 64 pixels 16^3 and 20^3 tie on sun-courtyard, where at 128 the
@@ -161,7 +158,7 @@ BudgetCalibration calibrate(Workbench& bench, const api::RenderRequest& request)
       if (is_lpv_pass(pass.name)) lpv_ms += pass.gpu_ms;
     calibration.lpv_ms.push_back(lpv_ms);
   }
-  calibration.measure_ms = ms_since(start);
+  calibration.measure_ms = core::ms_since(start);
   return calibration;
 }
 
@@ -182,7 +179,7 @@ FrameCosts measure_frame_costs(Workbench& bench, const api::RenderRequest& reque
     off_frames.push_back(bench.renderer.render(off, readback).stats);
     on_frames.push_back(bench.renderer.render(on, readback).stats);
   }
-  return {median_passes(off_frames, false), median_passes(on_frames, false), ms_since(start)};
+  return {median_passes(off_frames, false), median_passes(on_frames, false), core::ms_since(start)};
 }
 
 std::pair<std::shared_ptr<const BudgetCalibration>, bool> BudgetCache::calibration(Workbench& bench,
