@@ -119,7 +119,7 @@ struct Lpv {
   bool occlusion_from_rsm = false;     // "occlusion_sources": surfels of the RSMs ...
   bool occlusion_from_camera = false;  // ... of the camera's depth and normal buffer ...
   bool occlusion_from_scene = true;    // ... and of the scene's surfaces themselves
-  std::uint32_t bounces = 1;           // 2: light the geometry volume blocks is reflected on
+  std::uint32_t bounces = 1;           // of the indirect light (gather: each one more gather; propagation: 2 reflects what its blockers stop)
   Injection injection = Injection::trilinear;
   Transfer transfer = Transfer::auto_;
   Blocking blocking = Blocking::projected;
@@ -174,7 +174,7 @@ inline constexpr std::uint32_t max_iterations = 1024;
 inline constexpr std::uint64_t max_gather_cells = 24 * 24 * 24;
 inline constexpr std::uint32_t max_rsm_resolution = 4096;
 inline constexpr std::uint32_t max_vpl_downsample = 16;  // a power of two, at most the RSM resolution
-inline constexpr std::uint32_t max_bounces = 2;
+inline constexpr std::uint32_t max_bounces = 8;  // the reference's too (max_reference_bounces)
 inline constexpr float max_injection_offset = 2.0f;  // cells
 inline constexpr float max_lpv_intensity = 1.0e6f;
 }  // namespace limits

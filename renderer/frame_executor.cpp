@@ -78,7 +78,9 @@ FrameExecutor::Outcome FrameExecutor::run(const Frame& frame, const Controls& co
       // A stop check is asked between chunks too. The chunks' results are the same bits as one
       // submission's: the same dispatches in the same order.
       const std::uint32_t steps =
-          p == kPropagate ? frame.iterations[c] : p == kGather ? LpvGatherPass::slabs(*frame.resources.volumes) : 1;
+          p == kPropagate ? frame.iterations[c]
+          : p == kGather  ? LpvGatherPass::steps(*frame.resources.volumes, frame.request.lpv.bounces)
+                          : 1;
       const bool stoppable = bool(controls.stop_check);
       const bool chunked = (p == kPropagate && (plan.convergence > 0.0f || stoppable)) || (p == kGather && stoppable);
       const std::uint32_t chunk = !chunked ? steps : p == kGather ? 1 : kConvergenceChunk;
@@ -177,8 +179,9 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
                        *frame.resources.volumes);
       break;
     case kGather:
-      gather_.record(cmd, cascade, steps.first - 1, steps.count, frame.lpv.occlusion, frame.resources.lpv_uniforms,
-                    *frame.resources.volumes);
+      gather_.record(cmd, cascade, steps.first - 1, steps.count, frame.lpv.occlusion,
+                     {lpv.bounces, &frame.gpu.blockers, frame.gpu.blocker_count, lpv.injection}, frame.resources.lpv_uniforms,
+                     *frame.resources.volumes);
       break;
     case kForward:
       forward_.record(cmd, frame.gpu, frame.draw_order, *frame.resources.targets, direct_light(frame), indirect_light(frame),

@@ -356,8 +356,10 @@ LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene
   auto fit = [&] {
     LpvSetup setup = setup_lpv(lpv.settings, scene.bounds, lpv.grid_bounds, lights, views, frame.emitted_flux,
                                frame.camera, frame.fov_y_deg, frame.image_height);
-    // Without a geometry volume this frame (no occluders), propagation does not read one.
+    // Without a geometry volume this frame (no occluders), propagation does not read one. The
+    // gather's bounces reflect from the scene's surfels, not from the blockers' albedo.
     if (!plan.run[kGeometryVolume]) setup.occlusion = setup.bounces = false;
+    if (plan.run[kGather]) setup.bounces = false;
     return setup;
   };
   // The grid covers only what the camera sees and the lights reach (unless placed by hand).
@@ -382,14 +384,12 @@ LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene
       lpv.settings.grid = shaped;
     }
   }
-  // The gather carries the injected light once, to every cell: a second bounce would be a
-  // second gather from the lit surfaces, which it does not do (yet). Said, not done silently;
-  // the geometry volume then skips the blockers' albedo, which only propagation reflects.
-  if (plan.run[kGather] && request.lpv.bounces > 1) {
+  // Propagation reflects the light its blockers stop at every step: 2 is all it can do.
+  if (plan.run[kPropagate] && request.lpv.bounces > 2) {
     plan.decisions.push_back("lpv.bounces " + std::to_string(request.lpv.bounces) +
-                             ": 1 ran, the gather carries one bounce (transfer \"sharpened\" or \"cosine\" "
-                             "reflects a second as it propagates)");
-    lpv.settings.bounces = 1;
+                             ": 2 ran, propagation reflects the light its blockers stop as it goes (the gather runs "
+                             "one gather a bounce)");
+    lpv.settings.bounces = 2;
   }
   lpv.setup = fit();
 

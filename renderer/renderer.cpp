@@ -241,7 +241,7 @@ api::RenderStats Renderer::Impl::plan_stats(const scene::Scene& scene, const api
   if (request.lpv.intensity != 1.0f && needs_indirect_light(request.output.view))
     stats.warnings.push_back("lpv.intensity is " + std::to_string(request.lpv.intensity) +
                              ": the indirect light is scaled and no longer physically based");
-  if (request.lpv.bounces > 1 && !request.lpv.occlusion && plan.run[kInject])
+  if (request.lpv.bounces > 1 && !request.lpv.occlusion && plan.run[kPropagate])
     stats.warnings.push_back("lpv.bounces > 1 needs occlusion: light is reflected where the geometry volume blocks it");
   return stats;
 }

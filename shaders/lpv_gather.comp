@@ -20,9 +20,12 @@ layout(std140, set = 0, binding = GATHER_LPV) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = GATHER_INJECTED, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
 layout(set = 0, binding = GATHER_FACES, rgba32f) uniform readonly imageBuffer faces;          // lpv_face_texel
 layout(set = 0, binding = GATHER_SOURCES, rgba32f) uniform readonly imageBuffer sources;      // lpv_gather_sources.comp's pyramid
-layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_R) writeonly buffer AccumulatedR { u64vec2 accumulated_r[]; };
-layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_G) writeonly buffer AccumulatedG { u64vec2 accumulated_g[]; };
-layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_B) writeonly buffer AccumulatedB { u64vec2 accumulated_b[]; };
+layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_R) buffer AccumulatedR { u64vec2 accumulated_r[]; };
+layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_G) buffer AccumulatedG { u64vec2 accumulated_g[]; };
+layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_B) buffer AccumulatedB { u64vec2 accumulated_b[]; };
+layout(std430, set = 0, binding = GATHER_BOUNCE_STORE_R) writeonly buffer BounceR { u64vec2 bounce_r[]; };
+layout(std430, set = 0, binding = GATHER_BOUNCE_STORE_G) writeonly buffer BounceG { u64vec2 bounce_g[]; };
+layout(std430, set = 0, binding = GATHER_BOUNCE_STORE_B) writeonly buffer BounceB { u64vec2 bounce_b[]; };
 layout(push_constant) uniform Push { LpvGatherPush push; };
 
 // The geometry volume blocks the light (a frame with occlusion).
@@ -102,10 +105,25 @@ void main() {
   }
   // Two texels a cell and channel: (+x, -x, +y, -y) and (+z, -z, 0, 0).
   int first = 2 * lpv_accumulated_texel(cell, push.cascade, dims);
-  accumulated_r[first] = texel_bits(vec4(cube[0].r, cube[1].r, cube[2].r, cube[3].r));
-  accumulated_r[first + 1] = texel_bits(vec4(cube[4].r, cube[5].r, 0.0, 0.0));
-  accumulated_g[first] = texel_bits(vec4(cube[0].g, cube[1].g, cube[2].g, cube[3].g));
-  accumulated_g[first + 1] = texel_bits(vec4(cube[4].g, cube[5].g, 0.0, 0.0));
-  accumulated_b[first] = texel_bits(vec4(cube[0].b, cube[1].b, cube[2].b, cube[3].b));
-  accumulated_b[first + 1] = texel_bits(vec4(cube[4].b, cube[5].b, 0.0, 0.0));
+  vec4 texels[6] = vec4[6](vec4(cube[0].r, cube[1].r, cube[2].r, cube[3].r), vec4(cube[4].r, cube[5].r, 0.0, 0.0),
+                           vec4(cube[0].g, cube[1].g, cube[2].g, cube[3].g), vec4(cube[4].g, cube[5].g, 0.0, 0.0),
+                           vec4(cube[0].b, cube[1].b, cube[2].b, cube[3].b), vec4(cube[4].b, cube[5].b, 0.0, 0.0));
+  if (push.keep != 0u) {
+    for (int k = 0; k < 2; ++k) {
+      bounce_r[first + k] = texel_bits(texels[k]);
+      bounce_g[first + k] = texel_bits(texels[2 + k]);
+      bounce_b[first + k] = texel_bits(texels[4 + k]);
+    }
+  }
+  for (int k = 0; k < 2; ++k) {
+    // Later bounces add to the light of those before, in the order they ran.
+    if (push.bounce != 0u) {
+      texels[k] += texel_value(accumulated_r[first + k]);
+      texels[2 + k] += texel_value(accumulated_g[first + k]);
+      texels[4 + k] += texel_value(accumulated_b[first + k]);
+    }
+    accumulated_r[first + k] = texel_bits(texels[k]);
+    accumulated_g[first + k] = texel_bits(texels[2 + k]);
+    accumulated_b[first + k] = texel_bits(texels[4 + k]);
+  }
 }

@@ -21,10 +21,7 @@ layout(set = 0, binding = GATHER_SOURCES_INJECTED, rgba32ui) uniform readonly ui
 layout(std430, set = 0, binding = GATHER_SOURCES_STORE) coherent buffer Sources { u64vec2 sources[]; };
 layout(push_constant) uniform Push { LpvGatherPush push; };
 
-vec4 texel_at(int texel) {
-  u64vec2 bits = sources[texel];
-  return uintBitsToFloat(uvec4(unpackUint2x32(bits.x), unpackUint2x32(bits.y)));
-}
+vec4 texel_at(int texel) { return texel_value(sources[texel]); }
 
 void store_record(int record, vec4 sh, vec3 flux, vec3 centre) {
   sources[LPV_GATHER_RECORD_TEXELS * record] = texel_bits(sh);

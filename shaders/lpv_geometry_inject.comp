@@ -9,6 +9,7 @@
 // its own slot of sums, so the same wall held by two is not counted twice (the resolve takes
 // the strongest source per corner).
 #extension GL_GOOGLE_include_directive : require
+#include "shared/albedo_code.h"
 #include "shared/geometry_volume_interface.h"
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
@@ -35,12 +36,6 @@ layout(push_constant) uniform Push { GeometryInjectPush push; };
 const float MIN_AREA_COSINE = 0.25;
 // One surfel blocks at most this many cell faces (keeps the fixed point far from overflow).
 const float MAX_POTENTIAL = 64.0;
-
-// The albedo a surfel carries as shared/albedo_code.h encodes it.
-vec3 decode_albedo(float code) {
-  uint q = uint(code);
-  return vec3(q & 255u, (q >> 8) & 255u, (q >> 16) & 255u) / 255.0;
-}
 
 // The blockers' albedo serves bounces only: without them it is neither summed nor splatted.
 layout(constant_id = 1) const bool BOUNCES = true;
@@ -95,7 +90,7 @@ void main() {
       position = p.xyz;
       normal = n.xyz;
       area = imageLoad(rsm_flux, texel).w * float(stride * stride);
-      albedo = decode_albedo(n.w);
+      albedo = albedo_decode(n.w);
     }
   } else if (push.source == LPV_GV_SOURCE_SCENE) {
     // A piece of a scene surface: consecutive ones lie close together (pieces of one triangle),
@@ -107,7 +102,7 @@ void main() {
       position = b.position.xyz;
       normal = b.normal.xyz;
       area = b.position.w;
-      albedo = decode_albedo(b.normal.w);
+      albedo = albedo_decode(b.normal.w);
     }
   } else {
     // A texel of the camera's surfel G-buffer, standing for stride^2 pixels of the image.

@@ -52,7 +52,7 @@ std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades, std::ui
                                 std::uint32_t accumulated_texels) {
   const std::uint64_t cells = cell_count(dims);
   return cells * (kInjectedBytesPerCell + kFaceBytesPerCell + kFaceAlbedoBytesPerCell +
-                  kAccumulatedBytesPerTexel * accumulated_texels * cascades) +
+                  2 * kAccumulatedBytesPerTexel * accumulated_texels * cascades) +
          grid_texels(dims) * vkx::TexelBuffer::kTexelBytes +
          cell_count(dims + 1u) * (kCornerBytes + geometry_slots * kCornerSumBytesPerSlot);
 }
@@ -76,6 +76,8 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c,
       grids(device, grid_texels(d)),
       accumulated{vkx::TexelBuffer(device, cell_count(d) * c * texels), vkx::TexelBuffer(device, cell_count(d) * c * texels),
                   vkx::TexelBuffer(device, cell_count(d) * c * texels)},
+      bounce_light{vkx::TexelBuffer(device, cell_count(d) * c * texels), vkx::TexelBuffer(device, cell_count(d) * c * texels),
+                   vkx::TexelBuffer(device, cell_count(d) * c * texels)},
       corners(device, cell_count(d + 1u) * kCornerTexels),
       faces(device, cell_count(d) * kFaceTexelsPerCell),
       face_albedo(device, cell_count(d) * kFaceAlbedoTexelsPerCell) {

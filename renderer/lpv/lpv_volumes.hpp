@@ -94,6 +94,8 @@ struct LpvVolumes {
   // texel accumulated_texels * (cascade * cells + cell) + k. Propagation accumulates SH (one
   // texel), the gather an irradiance cube (two: +x, -x, +y, -y, then +z, -z; lpv_gather.h).
   vkx::TexelBuffer accumulated[3];
+  // The gather's last bounce alone (accumulated's layout), which the next one reflects.
+  vkx::TexelBuffer bounce_light[3];
   // Geometry volume per cell corner, the strongest source: texel 3 corner + k (corners in
   // x-fastest order on the (dims + 1)^3 lattice), k = 0 blocking SH, k = 1 the spread of its
   // normals (lpv_closed_blocking), k = 2 albedo-weighted sum (rgb) and weight (a).

@@ -3,8 +3,10 @@
 #include "renderer/gpu_types.hpp"
 #include "shaders/shared/lpv_gather_interface.h"
 #include "shaders/lpv_gather.comp.h"
+#include "shaders/lpv_gather_bounce.comp.h"
 #include "shaders/lpv_gather_sources.comp.h"
 
+#include <algorithm>
 #include <array>
 
 namespace renderer {
@@ -31,8 +33,18 @@ LpvGatherPass::LpvGatherPass(const vkx::Device& device)
                                  {gpu::GATHER_ACCUMULATED_STORE_R, kStorage},
                                  {gpu::GATHER_ACCUMULATED_STORE_G, kStorage},
                                  {gpu::GATHER_ACCUMULATED_STORE_B, kStorage},
-                                 {gpu::GATHER_SOURCES, kTexels}},
+                                 {gpu::GATHER_SOURCES, kTexels},
+                                 {gpu::GATHER_BOUNCE_STORE_R, kStorage},
+                                 {gpu::GATHER_BOUNCE_STORE_G, kStorage},
+                                 {gpu::GATHER_BOUNCE_STORE_B, kStorage}},
                                 sizeof(gpu::LpvGatherPush));
+  bounce_layout_ = vkx::compute_layout({{gpu::GATHER_BOUNCE_LPV, kUniform},
+                                        {gpu::GATHER_BOUNCE_BLOCKERS, kStorage},
+                                        {gpu::GATHER_BOUNCE_LIGHT_R, kTexels},
+                                        {gpu::GATHER_BOUNCE_LIGHT_G, kTexels},
+                                        {gpu::GATHER_BOUNCE_LIGHT_B, kTexels},
+                                        {gpu::GATHER_BOUNCE_INJECTED, kStorage}},
+                                       sizeof(gpu::LpvGatherBouncePush));
 }
 
 std::uint32_t LpvGatherPass::slabs(const LpvVolumes& volumes) {
@@ -52,29 +64,81 @@ const vkx::Pipeline& LpvGatherPass::variant(bool occlusion, const vkx::Buffer& p
       .buffer(gpu::GATHER_ACCUMULATED_STORE_G, kStorage, volumes.accumulated[1].buffer().handle())
       .buffer(gpu::GATHER_ACCUMULATED_STORE_B, kStorage, volumes.accumulated[2].buffer().handle())
       .texel_buffer(gpu::GATHER_SOURCES, kTexels, volumes.grids.view())
+      .buffer(gpu::GATHER_BOUNCE_STORE_R, kStorage, volumes.bounce_light[0].buffer().handle())
+      .buffer(gpu::GATHER_BOUNCE_STORE_G, kStorage, volumes.bounce_light[1].buffer().handle())
+      .buffer(gpu::GATHER_BOUNCE_STORE_B, kStorage, volumes.bounce_light[2].buffer().handle())
+      .apply(device_.handle());
+  return p;
+}
+
+const vkx::Pipeline& LpvGatherPass::reflection(const GatherBounces& bounces, const vkx::Buffer& params,
+                                               const LpvVolumes& volumes) const {
+  const bool trilinear = bounces.injection == api::Injection::trilinear;
+  const vkx::Pipeline& p = bounce_variants_.get(trilinear ? 1u : 0u, [&] {
+    // By constant_id: TRILINEAR_INJECTION (0) as the first bounce's VPLs; 1 to 5 unused; the
+    // irradiance read one surfel at a time (UNIFORM_BRANCHES, 6) from cubes (IRRADIANCE_CUBE, 7).
+    const std::array<std::uint32_t, 8> constants{trilinear ? 1u : 0u, 0u, 0u, 0u, 0u, 0u, 0u, 1u};
+    return vkx::Pipeline(device_, bounce_layout_, spirv_lpv_gather_bounce_comp, constants);
+  });
+  vkx::DescriptorWriter(p.descriptor_set())
+      .buffer(gpu::GATHER_BOUNCE_LPV, kUniform, params.handle())
+      .buffer(gpu::GATHER_BOUNCE_BLOCKERS, kStorage, bounces.surfels->handle())
+      .texel_buffer(gpu::GATHER_BOUNCE_LIGHT_R, kTexels, volumes.bounce_light[0].view())
+      .texel_buffer(gpu::GATHER_BOUNCE_LIGHT_G, kTexels, volumes.bounce_light[1].view())
+      .texel_buffer(gpu::GATHER_BOUNCE_LIGHT_B, kTexels, volumes.bounce_light[2].view())
+      .buffer(gpu::GATHER_BOUNCE_INJECTED, kStorage, volumes.injected.buffer().handle())
       .apply(device_.handle());
   return p;
 }
 
 void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
-                           bool occlusion, const vkx::Buffer& params, const LpvVolumes& volumes) const {
-  if (first == 0) {  // the sources, once a cascade
-    vkx::DescriptorWriter(sources_.descriptor_set())
-        .buffer(gpu::GATHER_SOURCES_LPV, kUniform, params.handle())
-        .texel_buffer(gpu::GATHER_SOURCES_INJECTED, kTexels, volumes.injected.view())
-        .buffer(gpu::GATHER_SOURCES_STORE, kStorage, volumes.grids.buffer().handle())
-        .apply(device_.handle());
-    sources_.bind(cmd);
-    sources_.push(cmd, gpu::LpvGatherPush{cascade, 0, 0});
-    vkCmdDispatch(cmd, 1, 1, 1);
-    vkx::compute_barrier(cmd);
-  }
-  const vkx::Pipeline& pipeline = variant(occlusion, params, volumes);
-  pipeline.bind(cmd);
+                           bool occlusion, const GatherBounces& bounces, const vkx::Buffer& params,
+                           const LpvVolumes& volumes) const {
+  // Every descriptor set is written before the first command: a set updated after it was
+  // bound would invalidate the command buffer.
+  vkx::DescriptorWriter(sources_.descriptor_set())
+      .buffer(gpu::GATHER_SOURCES_LPV, kUniform, params.handle())
+      .texel_buffer(gpu::GATHER_SOURCES_INJECTED, kTexels, volumes.injected.view())
+      .buffer(gpu::GATHER_SOURCES_STORE, kStorage, volumes.grids.buffer().handle())
+      .apply(device_.handle());
+  const vkx::Pipeline& gather = variant(occlusion, params, volumes);
+  const bool reflects = bounces.count > 1 && bounces.surfel_count > 0;
+  const vkx::Pipeline* reflect = reflects ? &reflection(bounces, params, volumes) : nullptr;
+
+  const std::uint32_t per_bounce = slabs(volumes);
   const glm::uvec3 d = volumes.dims;
-  pipeline.push(cmd, gpu::LpvGatherPush{cascade, first * gpu::LPV_GROUP, count * gpu::LPV_GROUP});
-  vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), count);
-  vkx::compute_barrier(cmd);
+  for (std::uint32_t step = first; step < first + count;) {
+    const std::uint32_t bounce = step / per_bounce, slab = step % per_bounce;
+    const std::uint32_t run = std::min(first + count - step, per_bounce - slab);  // slabs of this bounce
+    if (slab == 0) {
+      if (bounce > 0) {
+        // The surfels' reflection of the last bounce replaces the injected sums, which the
+        // last gather read.
+        vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
+                            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+        vkCmdFillBuffer(cmd, volumes.injected.buffer().handle(), 0, VK_WHOLE_SIZE, 0);
+        vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        if (reflect) {  // else nothing reflects: the bounce is dark
+          reflect->bind(cmd);
+          reflect->push(cmd, gpu::LpvGatherBouncePush{cascade, bounces.surfel_count});
+          vkCmdDispatch(cmd, vkx::group_count(bounces.surfel_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
+          vkx::compute_barrier(cmd);
+        }
+      }
+      // The sources, once a cascade and bounce.
+      sources_.bind(cmd);
+      sources_.push(cmd, gpu::LpvGatherPush{cascade, 0, 0, 0, 0});
+      vkCmdDispatch(cmd, 1, 1, 1);
+      vkx::compute_barrier(cmd);
+    }
+    gather.bind(cmd);
+    const std::uint32_t keep = bounce + 1 < bounces.count ? 1u : 0u;
+    gather.push(cmd, gpu::LpvGatherPush{cascade, slab * gpu::LPV_GROUP, run * gpu::LPV_GROUP, bounce, keep});
+    vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), run);
+    vkx::compute_barrier(cmd);
+    step += run;
+  }
 }
 
 }  // namespace renderer

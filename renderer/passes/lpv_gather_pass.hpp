@@ -1,9 +1,11 @@
 // The gather transfer for one cascade (lpv_gather.comp, docs/lpv.md "The gather"): every cell
 // sums the light of every injected cell along the straight line between them, through the
 // geometry volume, into its irradiance cube in the accumulated buffers. It replaces
-// propagation when lpv.transfer is "gather".
+// propagation when lpv.transfer is "gather". Each bounce after the first is a gather again,
+// from the scene's surfels lit by the one before (lpv_gather_bounce.comp), added to the cubes.
 #pragma once
 
+#include "api/render_request.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "vkx/pipeline.hpp"
 
@@ -11,26 +13,44 @@
 
 namespace renderer {
 
+// The bounces a gather runs, and what the later ones reflect from.
+struct GatherBounces {
+  std::uint32_t count = 1;
+  const vkx::Buffer* surfels = nullptr;  // GpuBlocker: the scene's surfels (bounces after the first)
+  std::uint32_t surfel_count = 0;
+  api::Injection injection = api::Injection::trilinear;  // how their VPLs are added, as the first's
+};
+
 class LpvGatherPass {
  public:
   explicit LpvGatherPass(const vkx::Device& device);
 
-  // Slabs of cells along z (gpu::LPV_GROUP layers each) the cascade's gather is recorded in:
-  // a render can be stopped between them.
+  // Slabs of cells along z (gpu::LPV_GROUP layers each) a bounce of the cascade's gather is
+  // recorded in: a render can be stopped between them.
   static std::uint32_t slabs(const LpvVolumes& volumes);
+  // Steps of a cascade's gather: its slabs, once a bounce.
+  static std::uint32_t steps(const LpvVolumes& volumes, std::uint32_t bounces) { return slabs(volumes) * bounces; }
 
   // Expects the injected sums in volumes.injected and, when `occlusion`, the geometry volume's
-  // faces. Records slabs first .. first + count - 1 (0-based); slab 0 first lists the lit
-  // injected cells (in volumes.grids, which the gather does not otherwise use).
+  // faces. Records steps first .. first + count - 1 (0-based; step s is slab s % slabs of
+  // bounce s / slabs). A bounce's slab 0 first lists the lit injected cells (in volumes.grids,
+  // which the gather does not otherwise use); after the first bounce, it first replaces the
+  // injected sums with the surfels' reflection of the last bounce's light.
   void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, bool occlusion,
-              const vkx::Buffer& params, const LpvVolumes& volumes) const;
+              const GatherBounces& bounces, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
  private:
   // The pipeline with or without blocking, its descriptor set written for this recording.
   const vkx::Pipeline& variant(bool occlusion, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
+  // lpv_gather_bounce.comp for these bounces' injection, its descriptor set written.
+  const vkx::Pipeline& reflection(const GatherBounces& bounces, const vkx::Buffer& params,
+                                  const LpvVolumes& volumes) const;
+
   const vkx::Device& device_;
   vkx::Pipeline sources_;  // lpv_gather_sources.comp: the lit injected cells, listed
+  vkx::PipelineLayoutDesc bounce_layout_;
+  vkx::PipelineVariants bounce_variants_;  // lpv_gather_bounce.comp, by injection
   vkx::PipelineLayoutDesc layout_;
   vkx::PipelineVariants variants_;
 };

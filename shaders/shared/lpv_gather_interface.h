@@ -18,14 +18,33 @@ LPV_BINDING GATHER_LPV = 0u;       // uniform GpuLpv
 LPV_BINDING GATHER_INJECTED = 1u;  // texels: the injection's integer sums, 6 texels of 2 a cell
 LPV_BINDING GATHER_FACES = 2u;     // texels: the geometry volume's faces (lpv_face_texel)
 LPV_BINDING GATHER_SOURCES = 6u;   // texels: the sources (above)
-LPV_BINDING GATHER_ACCUMULATED_STORE_R = 3u;  // storage: the irradiance cubes, written
+LPV_BINDING GATHER_ACCUMULATED_STORE_R = 3u;  // storage: the irradiance cubes, summed over the bounces
 LPV_BINDING GATHER_ACCUMULATED_STORE_G = 4u;
 LPV_BINDING GATHER_ACCUMULATED_STORE_B = 5u;
+LPV_BINDING GATHER_BOUNCE_STORE_R = 7u;  // storage: this bounce's irradiance cubes alone, written
+LPV_BINDING GATHER_BOUNCE_STORE_G = 8u;  // where another bounce follows (push.keep)
+LPV_BINDING GATHER_BOUNCE_STORE_B = 9u;
 
 struct LpvGatherPush {
   uint cascade;
   uint first_layer;  // the layers of cells along z this dispatch gathers for: a gather is
   uint layers;       // cut in slabs, so that a render can be stopped between them
+  uint bounce;       // 0: the first, which the accumulated cubes start from; else added to them
+  uint keep;         // 1: the cubes of this bounce are also stored alone, for the next one
+};
+
+// lpv_gather_bounce.comp: the scene's surfels reflect the last bounce's light as VPLs of the
+// next (the injection's sums, cleared first), each on the side it faces.
+LPV_BINDING GATHER_BOUNCE_LPV = 0u;       // uniform GpuLpv
+LPV_BINDING GATHER_BOUNCE_BLOCKERS = 1u;  // storage: GpuBlocker, the scene's surfels
+LPV_BINDING GATHER_BOUNCE_LIGHT_R = 2u;   // texels: the last bounce's irradiance cubes
+LPV_BINDING GATHER_BOUNCE_LIGHT_G = 3u;
+LPV_BINDING GATHER_BOUNCE_LIGHT_B = 4u;
+LPV_BINDING GATHER_BOUNCE_INJECTED = 5u;  // storage: the injection's integer sums, added to
+
+struct LpvGatherBouncePush {
+  uint cascade;
+  uint count;  // surfels
 };
 
 LPV_INTERFACE_END

@@ -507,7 +507,7 @@ std::vector<BadRequest> bad_requests() {
       {R"({"lpv": {"occlusion_sources": ["rsm", "camera", "scene", "rsm"]}})", "lpv.occlusion_sources"},
       {R"({"lpv": {"occlusion_sources": "rsm"}})", "lpv.occlusion_sources"},
       {R"({"lpv": {"bounces": 0}})", "lpv.bounces"},
-      {R"({"lpv": {"bounces": 3}})", "lpv.bounces"},
+      {R"({"lpv": {"bounces": 9}})", "lpv.bounces"},
       {R"({"lpv": {"injection_offset": -0.1}})", "lpv.injection_offset"},
       {R"({"lpv": {"transfer": "narrow"}})", "lpv.transfer"},
       {R"({"lpv": {"transfer": "gather", "grid": 25}})", "lpv.grid"},

@@ -208,24 +208,36 @@ std::string decision(const renderer::RenderResult& r, const std::string& prefix)
 // the sun-lit galleries seen at 256^2 need 2048 texels a side for a texel of half a pixel,
 // the Cornell box's spot 512 (nothing said); a request that names one gets it, and the same
 // picture as the chosen one when it names that.
-// A second bounce is reflected by propagation; the gather says it does not run one, and
-// renders what one bounce gives, without paying for the blockers' albedo.
-TEST_F(Planner, TheGatherSaysItRunsOneBounce) {
+// The gather runs the bounces asked for, each adding light, and says nothing; propagation,
+// which reflects what its blockers stop as it goes, runs 3 or more as 2 and says so.
+TEST_F(Planner, TheGatherRunsTheBouncesAskedAndPropagationSaysWhatItRan) {
   api::RenderRequest one = request(api::PlanMode::auto_);
   one.lpv.transfer = api::Transfer::gather;
   one.lpv.grid = glm::uvec3(12);
-  api::RenderRequest two = one;
-  two.lpv.bounces = 2;
+  one.output.view = api::View::indirect;
   auto& r = gpu_test::renderer();
-  const auto single = r.render(one, renderer::kReadbackLinear);
-  const auto asked_two = r.render(two, renderer::kReadbackLinear);
-  EXPECT_EQ(decision(single, "lpv.bounces"), "");
-  EXPECT_EQ(decision(asked_two, "lpv.bounces"),
-            "lpv.bounces 2: 1 ran, the gather carries one bounce (transfer \"sharpened\" or \"cosine\" reflects a "
-            "second as it propagates)");
-  EXPECT_EQ(single.linear.pixels, asked_two.linear.pixels);
-  two.lpv.transfer = api::Transfer::sharpened;
-  EXPECT_EQ(decision(r.render(two, renderer::kReadbackLinear), "lpv.bounces"), "") << "propagation reflects it";
+  double last = gpu_test::total(r.render(one, renderer::kReadbackLinear).linear);
+  EXPECT_GT(last, 0.0);
+  for (std::uint32_t bounces : {2u, 3u}) {
+    api::RenderRequest more = one;
+    more.lpv.bounces = bounces;
+    const auto rendered = r.render(more, renderer::kReadbackLinear);
+    EXPECT_EQ(decision(rendered, "lpv.bounces"), "") << bounces;
+    const double total = gpu_test::total(rendered.linear);
+    EXPECT_GT(total, last * 1.05) << bounces << " bounces add light";
+    last = total;
+  }
+  api::RenderRequest propagated = one;
+  propagated.lpv.transfer = api::Transfer::sharpened;
+  propagated.lpv.bounces = 2;
+  const auto two = r.render(propagated, renderer::kReadbackLinear);
+  EXPECT_EQ(decision(two, "lpv.bounces"), "");
+  propagated.lpv.bounces = 5;
+  const auto five = r.render(propagated, renderer::kReadbackLinear);
+  EXPECT_EQ(decision(five, "lpv.bounces"),
+            "lpv.bounces 5: 2 ran, propagation reflects the light its blockers stop as it goes (the gather runs one "
+            "gather a bounce)");
+  EXPECT_EQ(two.linear.pixels, five.linear.pixels);
 }
 
 TEST_F(Planner, ShadowMapsWithoutAResolutionGetTheFramesOwn) {

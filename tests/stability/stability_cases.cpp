@@ -140,22 +140,6 @@ scene::Scene recoloured(glm::vec3 albedo) {
   return s;
 }
 
-// A closed white box (albedo 1: every bounce keeps all the light) lit from inside.
-scene::Scene white_closed_box() {
-  scene::SceneBuilder b("white-closed-box");
-  const auto white = b.add_material({"white", glm::vec3(1.0f), {}});
-  b.add_box({0, 0, 0}, {2, 2, 2}, 0.0f, white);  // faces outwards: seen from inside, flip below
-  scene::Scene s = b.build();
-  for (std::size_t i = 0; i + 2 < s.indices.size(); i += 3) std::swap(s.indices[i + 1], s.indices[i + 2]);
-  for (scene::Vertex& v : s.vertices) v.normal = -v.normal;
-  s.lights.push_back(point_at({0, 1, 0}));
-  api::Camera cam;
-  cam.position = {0, 1, 0.9f};
-  cam.target = {0, 1, 0};
-  s.camera = cam;
-  return s;
-}
-
 std::vector<Case> make_cases() {
   std::vector<Case> c;
   // Geometry
@@ -262,10 +246,33 @@ std::vector<Case> make_cases() {
     r.lpv.grid = glm::uvec3(24);
     c.push_back(with_request("gather-grid-24", "the gather's largest grid, 24^3 cells", r));
   }
+  {
+    api::RenderRequest r = small();
+    r.lpv.transfer = api::Transfer::gather;
+    r.lpv.bounces = api::limits::max_bounces;
+    c.push_back({"gather-white-closed-box-bounces", "albedo 1 in a closed box, gathered, every bounce allowed",
+                 white_closed_box, r});
+  }
   return c;
 }
 
 }  // namespace
+
+// A closed white box (albedo 1: every bounce keeps all the light) lit from inside.
+scene::Scene white_closed_box() {
+  scene::SceneBuilder b("white-closed-box");
+  const auto white = b.add_material({"white", glm::vec3(1.0f), {}});
+  b.add_box({0, 0, 0}, {2, 2, 2}, 0.0f, white);  // faces outwards: seen from inside, flip below
+  scene::Scene s = b.build();
+  for (std::size_t i = 0; i + 2 < s.indices.size(); i += 3) std::swap(s.indices[i + 1], s.indices[i + 2]);
+  for (scene::Vertex& v : s.vertices) v.normal = -v.normal;
+  s.lights.push_back(point_at({0, 1, 0}));
+  api::Camera cam;
+  cam.position = {0, 1, 0.9f};
+  cam.target = {0, 1, 0};
+  s.camera = cam;
+  return s;
+}
 
 scene::Scene scaled_cornell(float s) {
   scene::Scene c = cornell();

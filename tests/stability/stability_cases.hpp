@@ -24,4 +24,7 @@ const std::vector<Case>& cases();
 // the image stays the same.
 scene::Scene scaled_cornell(float s);
 
+// A closed white box (albedo 1: every bounce keeps all the light) lit from inside.
+scene::Scene white_closed_box();
+
 }  // namespace stability

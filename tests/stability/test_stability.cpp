@@ -131,6 +131,32 @@ api::RenderRequest small_final() {
 
 class Invariants : public gpu_test::GpuTest {};
 
+// Each bounce of the gather is reflected from what the last one delivered, times the albedo:
+// in a closed box of albedo 1, where every bounce truly carries all the light, no bounce may
+// add more light to the picture than the one before it (or the sum would grow without end).
+TEST_F(Invariants, NoGatheredBounceAddsMoreThanTheLast) {
+  const scene::Scene box = stability::white_closed_box();
+  api::RenderRequest r = small_final();
+  r.output.view = api::View::indirect;
+  r.lpv.transfer = api::Transfer::gather;
+  auto& renderer = gpu_test::renderer();
+  std::vector<double> total;
+  for (std::uint32_t bounces = 1; bounces <= api::limits::max_bounces; ++bounces) {
+    r.lpv.bounces = bounces;
+    const renderer::RenderResult result = renderer.render(box, r, renderer::kReadbackLinear);
+    total.push_back(gpu_test::total(result.linear));
+  }
+  ASSERT_GT(total[0], 0.0);
+  for (std::size_t k = 1; k + 1 < total.size(); ++k) {
+    const double added = total[k] - total[k - 1], next = total[k + 1] - total[k];
+    std::printf("bounce %zu adds %.4g of the first's light, bounce %zu %.4g\n", k + 1, added / total[0], k + 2,
+                next / total[0]);
+    EXPECT_GT(added, 0.0) << "bounce " << k + 1 << " adds light";
+    EXPECT_LE(next, added * (1.0 + 1e-3)) << "bounce " << k + 2 << " against bounce " << k + 1;
+    note("largest bounce over the last", next / added, "gather-white-closed-box");
+  }
+}
+
 // Direct and indirect light are both held to the two invariants. The indirect light used to
 // break both: nearest-cell injection made the grid jump when a VPL crossed a cell boundary
 // (4.8% for a light moved by 1e-4 of a cell), and snapping the fitted grid to the world's

@@ -1,0 +1,58 @@
+#version 450
+// The gather's next bounce (docs/lpv.md, "Bounces"): every surfel of the scene (the geometry
+// volume's blockers, renderer/lpv/blocker_surfels.hpp, which cover every surface whatever a
+// view sees) reflects the light the last bounce's gather delivered to it, and becomes a VPL of
+// the next bounce, added to the injection's sums (cleared first) as an RSM's VPLs are
+// (lpv_inject_vpl.glsl). A surfel reads the irradiance as the shading reads it for a surface
+// (lpv_irradiance.glsl: half a cell along its normal, the cells behind it left out), on the
+// side it faces (its winding's front). Its flux is albedo x area x irradiance, so a bounce
+// carries at most the largest albedo times the light that the last one delivered.
+// Only the front reflects: the back of a closed surface (a solid's face, either side of a wall
+// built with thickness) faces into the solid, where the cells hold light the walls only partly
+// stopped and the truth has none. Reflecting both sides made every such face send the light of
+// the room beyond it back into that room a second time (the 8-bounce Cornell box at 1.21 of
+// the truth, gallery-court at 1.64; front only: 0.86 and 0.78). An open surface lit from
+// behind reflects nothing here, where the truth reflects its back's light.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/albedo_code.h"
+#include "shared/gpu_types.h"
+#include "shared/lpv_gather_interface.h"
+#include "shared/lpv_sh.h"
+#include "shared/lpv_grid.glsl"
+#include "shared/lpv_fixed_point.glsl"
+
+layout(local_size_x = LPV_BLOCKER_GROUP) in;
+
+layout(std140, set = 0, binding = GATHER_BOUNCE_LPV) uniform Lpv { GpuLpv lpv; };
+layout(std430, set = 0, binding = GATHER_BOUNCE_BLOCKERS) readonly buffer Blockers { GpuBlocker blockers[]; };
+layout(set = 0, binding = GATHER_BOUNCE_LIGHT_R, rgba32f) uniform readonly imageBuffer accumulated_r;
+layout(set = 0, binding = GATHER_BOUNCE_LIGHT_G, rgba32f) uniform readonly imageBuffer accumulated_g;
+layout(set = 0, binding = GATHER_BOUNCE_LIGHT_B, rgba32f) uniform readonly imageBuffer accumulated_b;
+layout(std430, set = 0, binding = GATHER_BOUNCE_INJECTED) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
+layout(push_constant) uniform Push { LpvGatherBouncePush push; };
+
+#include "shared/lpv_inject_vpl.glsl"
+// The last bounce's light is an irradiance cube, read one surfel at a time (no lane shares
+// its cells: neighbouring surfels lie on different triangles as often as not).
+const uint CASCADES = 1u;
+#include "shared/lpv_irradiance.glsl"
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  bool valid = i < push.count;
+  GpuBlocker b = blockers[min(i, max(push.count, 1u) - 1u)];
+  vec3 n = b.normal.xyz;
+  GpuLpvCascade g = lpv.cascades[push.cascade];
+  vec3 flux = vec3(0.0);
+  if (valid) {
+    vec3 q = lpv_grid_position(g, b.position.xyz + 0.5 * g.origin.w * n);
+    if (lpv_inside_distance(g, q) >= 0.0)
+      flux = albedo_decode(b.normal.w) * b.position.w * cascade_irradiance(push.cascade, q, n);
+  }
+  ivec3 low;
+  vec3 f;
+  float values[SPLAT_VALUES];
+  bool lit = flux.r + flux.g + flux.b > 0.0;
+  bool inside = vpl_splat(b.position.xyz, n, flux, low, f, values);
+  splat_subgroup(lit && inside, low, f, values, vpl_last_cell(), lpv.scales.x);  // by the whole subgroup
+}
