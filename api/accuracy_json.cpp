@@ -118,7 +118,7 @@ SweepParameters read_parameters(const Field& f) {
   if (auto v = obj.get("cascades")) p.cascades = read_values<std::uint32_t>(*v, uint_in(1, limits::max_cascades));
   if (auto v = obj.get("rsm")) p.rsm = read_values<std::uint32_t>(*v, uint_in(1, limits::max_rsm_resolution));
   if (auto v = obj.get("vpl_downsample")) p.vpl_downsample = read_values<std::uint32_t>(*v, read_vpl_downsample);
-  if (auto v = obj.get("bounces")) p.bounces = read_values<std::uint32_t>(*v, uint_in(1, limits::max_bounces));
+  if (auto v = obj.get("bounces")) p.bounces = read_values<std::uint32_t>(*v, read_bounces);
   if (auto v = obj.get("occlusion")) p.occlusion = read_values<bool>(*v, as_bool);
   if (auto v = obj.get("transfer")) p.transfer = read_values<Transfer>(*v, read_transfer);
   if (auto v = obj.get("blocking")) p.blocking = read_values<Blocking>(*v, read_blocking);

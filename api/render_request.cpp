@@ -97,6 +97,11 @@ Transfer resolved_transfer(const glm::uvec3& grid, Transfer transfer) {
   return cells_of(grid) <= limits::max_gather_cells ? Transfer::gather : Transfer::sharpened;
 }
 
+std::string describe_bounces(std::uint32_t bounces) {
+  if (bounces == all_bounces) return "all bounces";
+  return std::to_string(bounces) + (bounces == 1 ? " bounce" : " bounces");
+}
+
 std::string to_string(Transfer t) {
   switch (t) {
     case Transfer::auto_: return "auto";

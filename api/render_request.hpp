@@ -119,7 +119,7 @@ struct Lpv {
   bool occlusion_from_rsm = false;     // "occlusion_sources": surfels of the RSMs ...
   bool occlusion_from_camera = false;  // ... of the camera's depth and normal buffer ...
   bool occlusion_from_scene = true;    // ... and of the scene's surfaces themselves
-  std::uint32_t bounces = 1;           // of the indirect light (gather: each one more gather; propagation: 2 reflects what its blockers stop)
+  std::uint32_t bounces = 1;           // of the indirect light, or all_bounces (gather: one gather each; propagation: 2 reflects what its blockers stop)
   Injection injection = Injection::trilinear;
   Transfer transfer = Transfer::auto_;
   Blocking blocking = Blocking::projected;
@@ -175,6 +175,8 @@ inline constexpr std::uint64_t max_gather_cells = 24 * 24 * 24;
 inline constexpr std::uint32_t max_rsm_resolution = 4096;
 inline constexpr std::uint32_t max_vpl_downsample = 16;  // a power of two, at most the RSM resolution
 inline constexpr std::uint32_t max_bounces = 8;  // the reference's too (max_reference_bounces)
+// "bounces": "all": the gather gathers this many and estimates the rest (docs/lpv.md, "Bounces").
+inline constexpr std::uint32_t gathered_before_tail = 2;
 inline constexpr float max_injection_offset = 2.0f;  // cells
 inline constexpr float max_lpv_intensity = 1.0e6f;
 }  // namespace limits
@@ -199,6 +201,11 @@ std::string to_string(PlanRule r);
 std::string to_string(Injection i);
 std::string to_string(Transfer t);
 std::string to_string(Blocking b);
+
+// "bounces": a count, or "all" (all_bounces; request_json.hpp writes it, reader::read_bounces
+// reads it); in words, "1 bounce", "2 bounces", "all bounces".
+inline constexpr std::uint32_t all_bounces = 0xffffffffu;
+std::string describe_bounces(std::uint32_t bounces);
 
 // Whether the planner's rule `r` applies: plan "auto" and not in plan_keep.
 bool plan_applies(const RenderRequest& request, PlanRule r);

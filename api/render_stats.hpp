@@ -42,6 +42,13 @@ struct LpvCascadeStats {
   Rgb injected_flux{};               // flux of the VPLs that landed in this cascade
   std::vector<Rgb> propagated_flux;  // flux of each iteration's propagated grid (1..N)
   std::uint32_t iterations = 0;      // propagation steps that ran (the planner may stop early)
+  // The gather's bounces after the first: the flux each one's VPLs carry, what the surfaces
+  // reflected of the one before (with "bounces": "all", the last is the reflection of the last
+  // gathered bounce, which the rest were estimated from).
+  std::vector<Rgb> bounce_flux;
+  // "bounces": "all": the bounces after the last gathered one, as a multiple of its light
+  // (r / (1 - r) per channel: lpv_gather.h, lpv_bounce_tail_factor).
+  std::optional<Rgb> bounce_tail;
 };
 
 struct LpvStats {

@@ -258,6 +258,18 @@ Blocking reader::read_blocking(const Field& f) {
   return as_enum(f, std::array{Blocking::projected, Blocking::sh_lobe});
 }
 
+std::uint32_t reader::read_bounces(const Field& f) {
+  if (f.value->is_string()) {
+    if (f.value->get<std::string>() == "all") return all_bounces;
+    f.reject("an integer in [1, " + std::to_string(limits::max_bounces) + "] or \"all\"");
+  }
+  return as_uint<std::uint32_t>(f, 1, limits::max_bounces);
+}
+
+nlohmann::json bounces_json(std::uint32_t bounces) {
+  return bounces == all_bounces ? nlohmann::json("all") : nlohmann::json(bounces);
+}
+
 namespace {
 
 Lpv read_lpv(const Field& f) {
@@ -277,7 +289,7 @@ Lpv read_lpv(const Field& f) {
   if (auto v = obj.get("occlusion")) lpv.occlusion = as_bool(*v);
   if (auto v = obj.get("occlusion_sources")) read_occlusion_sources(*v, lpv);
   if (auto v = obj.get("blocking")) lpv.blocking = read_blocking(*v);
-  if (auto v = obj.get("bounces")) lpv.bounces = as_uint<std::uint32_t>(*v, 1, limits::max_bounces);
+  if (auto v = obj.get("bounces")) lpv.bounces = read_bounces(*v);
   if (auto v = obj.get("injection")) lpv.injection = as_enum(*v, injections);
   if (auto v = obj.get("transfer")) lpv.transfer = read_transfer(*v);
   if (auto v = obj.get("injection_offset")) lpv.injection_offset = as_float(*v, 0.0f, limits::max_injection_offset);
@@ -359,7 +371,7 @@ json lpv_json(const Lpv& lpv) {
             {"occlusion", lpv.occlusion},
             {"occlusion_sources", std::move(sources)},
             {"blocking", to_string(lpv.blocking)},
-            {"bounces", lpv.bounces},
+            {"bounces", bounces_json(lpv.bounces)},
             {"injection", to_string(lpv.injection)},
             {"injection_offset", shortest(lpv.injection_offset)},
             {"transfer", to_string(lpv.transfer)},
@@ -375,12 +387,15 @@ json summary_json(const TimeSummary& t) { return {{"median", t.median}, {"min", 
 json lpv_stats_json(const LpvStats& lpv) {
   json cascades = json::array();
   for (const LpvCascadeStats& c : lpv.cascades) {
-    cascades.push_back({{"origin", c.origin},
-                        {"cell_size", c.cell_size},
-                        {"grid", c.grid},
-                        {"injected_flux", c.injected_flux},
-                        {"propagated_flux", c.propagated_flux},
-                        {"iterations", c.iterations}});
+    json cascade = {{"origin", c.origin},
+                    {"cell_size", c.cell_size},
+                    {"grid", c.grid},
+                    {"injected_flux", c.injected_flux},
+                    {"propagated_flux", c.propagated_flux},
+                    {"iterations", c.iterations}};
+    if (!c.bounce_flux.empty()) cascade["bounce_flux"] = c.bounce_flux;
+    if (c.bounce_tail) cascade["bounce_tail"] = *c.bounce_tail;
+    cascades.push_back(std::move(cascade));
   }
   return {{"vpl_count", lpv.vpl_count},
           {"vpl_flux", lpv.vpl_flux},

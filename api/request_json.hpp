@@ -25,5 +25,7 @@ inline RenderRequest parse_render_request(const char* json_text) {
 
 nlohmann::json to_json(const RenderRequest& request);
 nlohmann::json to_json(const RenderStats& stats);
+// "bounces" as a request writes it: the count, or "all" (all_bounces).
+nlohmann::json bounces_json(std::uint32_t bounces);
 
 }  // namespace api

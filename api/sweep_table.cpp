@@ -1,6 +1,7 @@
 #include "api/sweep_table.hpp"
 
 #include "api/counted.hpp"
+#include "api/request_json.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -95,7 +96,7 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
                                      std::to_string(s.cascades),
                                      std::to_string(s.rsm),
                                      std::to_string(s.vpl_downsample),
-                                     std::to_string(s.bounces),
+                                     s.bounces == all_bounces ? std::string("all") : std::to_string(s.bounces),
                                      bool_text(s.occlusion),
                                      to_string(s.transfer),
                                      to_string(s.blocking),
@@ -142,7 +143,7 @@ json to_json(const SweepSettings& s) {
           {"cascades", s.cascades},
           {"rsm", s.rsm},
           {"vpl_downsample", s.vpl_downsample},
-          {"bounces", s.bounces},
+          {"bounces", bounces_json(s.bounces)},
           {"occlusion", s.occlusion},
           {"transfer", to_string(s.transfer)},
           {"blocking", to_string(s.blocking)}};
@@ -154,7 +155,7 @@ std::string describe(const SweepSettings& s) {
   return "LPV " + std::to_string(s.grid[0]) + "x" + std::to_string(s.grid[1]) + "x" + std::to_string(s.grid[2]) +
          ", " + counted(s.iterations, "iteration") + ", " + counted(s.cascades, "cascade") + ", RSM " +
          std::to_string(s.rsm) + ", VPL downsample " + std::to_string(s.vpl_downsample) + ", " +
-         counted(s.bounces, "bounce") + ", occlusion " + (s.occlusion ? "on" : "off") + ", transfer " +
+         describe_bounces(s.bounces) + ", occlusion " + (s.occlusion ? "on" : "off") + ", transfer " +
          to_string(s.transfer) + ", blocking " + to_string(s.blocking);
 }
 

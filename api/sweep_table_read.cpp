@@ -49,7 +49,9 @@ SweepSettings read_settings(const Field& f) {
   s.cascades = as_uint(f.member("cascades"), 0u, kMaxCount);
   s.rsm = as_uint(f.member("rsm"), 0u, kMaxCount);
   s.vpl_downsample = as_uint(f.member("vpl_downsample"), 0u, kMaxCount);
-  s.bounces = as_uint(f.member("bounces"), 0u, kMaxCount);
+  // "all", or a count (a path-traced row's is its reference's: 0 is direct light only).
+  const Field bounces = f.member("bounces");
+  s.bounces = bounces.value->is_string() ? read_bounces(bounces) : as_uint(bounces, 0u, kMaxCount);
   s.occlusion = as_bool(f.member("occlusion"));
   s.transfer = read_transfer(f.member("transfer"));
   s.blocking = read_blocking(f.member("blocking"));

@@ -79,7 +79,7 @@ FrameExecutor::Outcome FrameExecutor::run(const Frame& frame, const Controls& co
       // submission's: the same dispatches in the same order.
       const std::uint32_t steps =
           p == kPropagate ? frame.iterations[c]
-          : p == kGather  ? LpvGatherPass::steps(*frame.resources.volumes, frame.request.lpv.bounces)
+          : p == kGather  ? LpvGatherPass::steps(*frame.resources.volumes, gathered_bounces(frame.request.lpv.bounces).gathered)
                           : 1;
       const bool stoppable = bool(controls.stop_check);
       const bool chunked = (p == kPropagate && (plan.convergence > 0.0f || stoppable)) || (p == kGather && stoppable);
@@ -178,11 +178,13 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
       propagate_.record(cmd, cascade, steps.first, steps.count, frame.lpv.occlusion, frame.lpv.bounces, frame.resources.lpv_uniforms,
                        *frame.resources.volumes);
       break;
-    case kGather:
+    case kGather: {
+      const GatheredBounces bounces = gathered_bounces(lpv.bounces);
       gather_.record(cmd, cascade, steps.first - 1, steps.count, frame.lpv.occlusion,
-                     {lpv.bounces, &frame.gpu.blockers, frame.gpu.blocker_count, lpv.injection}, frame.resources.lpv_uniforms,
-                     *frame.resources.volumes);
+                     {bounces.gathered, bounces.tail, &frame.gpu.blockers, frame.gpu.blocker_count, lpv.injection},
+                     frame.resources.lpv_uniforms, *frame.resources.volumes);
       break;
+    }
     case kForward:
       forward_.record(cmd, frame.gpu, frame.draw_order, *frame.resources.targets, direct_light(frame), indirect_light(frame),
                      frame.request.output.tonemap);

@@ -385,12 +385,17 @@ LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene
     }
   }
   // Propagation reflects the light its blockers stop at every step: 2 is all it can do.
+  const std::string asked = request.lpv.bounces == api::all_bounces ? "all" : std::to_string(request.lpv.bounces);
   if (plan.run[kPropagate] && request.lpv.bounces > 2) {
-    plan.decisions.push_back("lpv.bounces " + std::to_string(request.lpv.bounces) +
+    plan.decisions.push_back("lpv.bounces " + asked +
                              ": 2 ran, propagation reflects the light its blockers stop as it goes (the gather runs "
                              "one gather a bounce)");
     lpv.settings.bounces = 2;
   }
+  if (plan.run[kGather] && request.lpv.bounces == api::all_bounces)
+    plan.decisions.push_back("lpv.bounces all: " + std::to_string(api::limits::gathered_before_tail) +
+                             " gathered, the rest estimated from the last one's light and the share of it its "
+                             "surfaces reflect (stats.lpv.cascades[].bounce_tail)");
   lpv.setup = fit();
 
   if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm]) {

@@ -21,7 +21,8 @@ static_assert(sizeof(mat4) == 64);
 // Push constants: plain 32-bit words, laid out alike by C++ and GLSL.
 static_assert(sizeof(LpvPropagatePush) == 12);
 static_assert(sizeof(LpvGatherPush) == 20);
-static_assert(sizeof(LpvGatherBouncePush) == 8);
+static_assert(sizeof(LpvGatherBouncePush) == 12);
+static_assert(sizeof(LpvGatherTailPush) == 12);
 static_assert(sizeof(LpvInjectPush) == 8);
 static_assert(sizeof(LpvInjectEmittersPush) == 12);
 static_assert(sizeof(GeometryInjectPush) == 20);

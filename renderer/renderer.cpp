@@ -218,7 +218,8 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.cpu_ms["scene_upload"] = api::TimeSummary::of({upload_ms});
   stats.cpu_ms["setup"] = api::TimeSummary::of({setup_ms});
   if (plan.run[kInject])
-    stats.lpv = lpv_stats(*resources.volumes, request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count, iterations_run);
+    stats.lpv = lpv_stats(*resources.volumes, request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count, iterations_run,
+                          plan.run[kGather]);
   if (plan.run[kInject] && (readback & kReadbackLpv))
     result.lpv = lpv_snapshot(device, *resources.rsm_maps, *resources.volumes, lpv_setup, plan.run[kGeometryVolume]);
   return result;

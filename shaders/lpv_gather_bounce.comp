@@ -29,8 +29,13 @@ layout(set = 0, binding = GATHER_BOUNCE_LIGHT_R, rgba32f) uniform readonly image
 layout(set = 0, binding = GATHER_BOUNCE_LIGHT_G, rgba32f) uniform readonly imageBuffer accumulated_g;
 layout(set = 0, binding = GATHER_BOUNCE_LIGHT_B, rgba32f) uniform readonly imageBuffer accumulated_b;
 layout(std430, set = 0, binding = GATHER_BOUNCE_INJECTED) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
+layout(std430, set = 0, binding = GATHER_BOUNCE_FLUX_STATS) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { LpvGatherBouncePush push; };
+// The VPLs are added to the injected sums (a bounce follows), or only their flux is summed (the
+// estimate of the bounces after the last: lpv_gather_tail.comp).
+layout(constant_id = 1) const bool SPLAT = true;
 
+#include "shared/lpv_grid_flux.glsl"
 #include "shared/lpv_inject_vpl.glsl"
 // The last bounce's light is an irradiance cube, read one surfel at a time (no lane shares
 // its cells: neighbouring surfels lie on different triangles as often as not).
@@ -49,6 +54,8 @@ void main() {
     if (lpv_inside_distance(g, q) >= 0.0)
       flux = albedo_decode(b.normal.w) * b.position.w * cascade_irradiance(push.cascade, q, n);
   }
+  add_grid_flux(flux, push.flux_record, lpv.scales.x);  // every invocation: a subgroup sum
+  if (!SPLAT) return;
   ivec3 low;
   vec3 f;
   float values[SPLAT_VALUES];

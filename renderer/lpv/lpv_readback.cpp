@@ -1,5 +1,7 @@
 #include "renderer/lpv/lpv_readback.hpp"
 
+#include "shaders/shared/lpv_sh.h"
+#include "shaders/shared/lpv_gather.h"
 #include "vkx/resources.hpp"
 
 #include <algorithm>
@@ -26,7 +28,7 @@ bool propagation_converged(const LpvVolumes& volumes, std::uint32_t cascade, std
 }
 
 api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
-                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run) {
+                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run, bool gathered) {
   volumes.flux_stats.invalidate();
   const double watts_per_unit = 1.0 / double(lpv.gpu.scales.x);
   auto rgb = [](glm::dvec3 v) { return api::Rgb{v.x, v.y, v.z}; };
@@ -45,6 +47,20 @@ api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, con
     cs.iterations = iterations_run[c];
     for (std::uint32_t k = 1; k <= iterations_run[c]; ++k)
       cs.propagated_flux.push_back(rgb(volumes.flux_at(volumes.grid_flux_record(c, k), watts_per_unit)));
+    if (gathered) {
+      const GatheredBounces bounces = gathered_bounces(settings.bounces);
+      const std::uint32_t reflected = bounces.gathered + (bounces.tail ? 1 : 0);  // reflections measured
+      for (std::uint32_t b = 2; b <= reflected; ++b)
+        cs.bounce_flux.push_back(rgb(volumes.flux_at(volumes.bounce_flux_record(c, b), watts_per_unit)));
+      if (bounces.tail) {
+        const glm::dvec3 from = bounces.gathered == 1 ? volumes.flux_at(volumes.grid_flux_record(c, 0), 1.0)
+                                                      : volumes.flux_at(volumes.bounce_flux_record(c, bounces.gathered), 1.0);
+        const glm::dvec3 to = volumes.flux_at(volumes.bounce_flux_record(c, reflected), 1.0);
+        // As lpv_gather_tail.comp computes it, in float from the same sums.
+        auto factor = [](double a, double b) { return double(gpu::lpv_bounce_tail_factor(float(a), float(b))); };
+        cs.bounce_tail = api::Rgb{factor(from.x, to.x), factor(from.y, to.y), factor(from.z, to.z)};
+      }
+    }
     stats.cascades.push_back(std::move(cs));
   }
   return stats;

@@ -27,9 +27,10 @@ inline constexpr std::uint32_t kConvergenceChunk = 4;
 bool propagation_converged(const LpvVolumes& volumes, std::uint32_t cascade, std::uint32_t step, std::uint32_t steps,
                            float convergence);
 
-// The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats.
+// The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats;
+// `gathered`: the gather ran (and with it, its bounces and their fluxes).
 api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
-                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run);
+                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run, bool gathered);
 
 // Copies the RSMs, the accumulated grids and the geometry volume to the host. Not timed: only
 // for checks.

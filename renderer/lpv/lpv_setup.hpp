@@ -54,6 +54,17 @@ TransferFactors transfer_factors(api::Transfer transfer);
 // the gather's irradiance cube (LpvVolumes::accumulated).
 inline std::uint32_t accumulated_texels_per_cell(api::Transfer transfer) { return transfer == api::Transfer::gather ? 2 : 1; }
 
+// The gather's bounces for lpv.bounces: that many gathered, or for "all" (api::all_bounces)
+// api::limits::gathered_before_tail and an estimate of the rest (docs/lpv.md, "Bounces").
+struct GatheredBounces {
+  std::uint32_t gathered = 1;
+  bool tail = false;
+};
+inline GatheredBounces gathered_bounces(std::uint32_t bounces) {
+  if (bounces == api::all_bounces) return {api::limits::gathered_before_tail, true};
+  return {bounces, false};
+}
+
 // Geometry volume: fixed-point units per unit of blocking potential.
 inline constexpr float kGeometryUnitsPerPotential = 1048576.0f;  // 2^20
 

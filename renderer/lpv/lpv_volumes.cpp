@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "api/render_request.hpp"
 #include "renderer/gpu_types.hpp"
 #include "shaders/shared/lpv_sh.h"
 #include "shaders/shared/lpv_gather.h"
@@ -23,6 +24,7 @@ constexpr VkDeviceSize kFaceAlbedoTexelsPerCell = 3;
 constexpr VkDeviceSize kFaceAlbedoBytesPerCell = kFaceAlbedoTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
 constexpr VkFormat kSums = VK_FORMAT_R32G32B32A32_UINT;
 constexpr std::size_t kRecordInt64s = gpu::LPV_FLUX_SLOTS * gpu::LPV_FLUX_SLOT_INT64S;  // one flux_stats record
+constexpr std::uint32_t kBounceRecords = api::limits::max_bounces;  // bounces 2 .. max + 1 (bounce_flux_record)
 
 std::uint64_t cell_count(glm::uvec3 d) { return std::uint64_t(d.x) * d.y * d.z; }
 
@@ -97,7 +99,7 @@ VkDeviceSize LpvVolumes::corner_sum_bytes(std::uint32_t slots, bool bounces) con
 
 void LpvVolumes::set_iterations(const vkx::Device& device, std::uint32_t n) {
   iterations = n;
-  records_per_cascade = n + 2;
+  records_per_cascade = n + 2 + kBounceRecords;
   const VkDeviceSize bytes = VkDeviceSize(records_per_cascade) * cascades * kRecordInt64s * 8;
   if (!flux_stats || flux_stats.size() < bytes)
     flux_stats = vkx::Buffer(device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,

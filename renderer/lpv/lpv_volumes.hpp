@@ -63,11 +63,17 @@ struct LpvVolumes {
   static std::uint64_t largest_buffer_bytes(glm::uvec3 dims, std::uint32_t cascades, std::uint32_t geometry_slots,
                                             std::uint32_t accumulated_texels);
 
-  // Records of flux_stats (gpu::LPV_FLUX_SLOTS): the VPL flux of a cascade, and its grid's
-  // flux after iteration k (k = 0: as injected).
+  // Records of flux_stats (gpu::LPV_FLUX_SLOTS): the VPL flux of a cascade, its grid's flux
+  // after iteration k (k = 0: as injected), and the flux of the gather's later bounces.
   std::uint32_t vpl_flux_record(std::uint32_t cascade) const { return cascade * records_per_cascade; }
   std::uint32_t grid_flux_record(std::uint32_t cascade, std::uint32_t k) const {
     return cascade * records_per_cascade + k + 1;
+  }
+  // The gather's bounce b >= 2: the flux its VPLs carry, which the surfaces reflected of bounce
+  // b - 1's light (b up to api::limits::max_bounces + 1: the reflection the bounces after the
+  // last gathered one are estimated from).
+  std::uint32_t bounce_flux_record(std::uint32_t cascade, std::uint32_t b) const {
+    return cascade * records_per_cascade + iterations + 2 + (b - 2);
   }
   // A flux from flux_stats, in watts, per channel: the sum of the record's slots (the buffer
   // must have been read back).
@@ -78,7 +84,7 @@ struct LpvVolumes {
   std::uint32_t geometry_slots;
   std::uint32_t accumulated_texels;
   std::uint32_t iterations = 0;    // of the current frame (set_iterations)
-  std::uint32_t records_per_cascade = 0;  // in flux_stats: iterations + 2
+  std::uint32_t records_per_cascade = 0;  // in flux_stats: iterations + 2 + the bounces'
   // The scattering passes' 64-bit fixed-point sums, added with atomics and read back as RGBA32UI
   // texels (two sums a texel): int64[12] per cell, the SH of the injected VPLs; and
   // int64[lpv_gv_corner_words(bounces)] per corner and slot, the geometry volume's (room for

@@ -5,6 +5,7 @@
 #include "shaders/lpv_gather.comp.h"
 #include "shaders/lpv_gather_bounce.comp.h"
 #include "shaders/lpv_gather_sources.comp.h"
+#include "shaders/lpv_gather_tail.comp.h"
 
 #include <algorithm>
 #include <array>
@@ -43,8 +44,20 @@ LpvGatherPass::LpvGatherPass(const vkx::Device& device)
                                         {gpu::GATHER_BOUNCE_LIGHT_R, kTexels},
                                         {gpu::GATHER_BOUNCE_LIGHT_G, kTexels},
                                         {gpu::GATHER_BOUNCE_LIGHT_B, kTexels},
-                                        {gpu::GATHER_BOUNCE_INJECTED, kStorage}},
+                                        {gpu::GATHER_BOUNCE_INJECTED, kStorage},
+                                        {gpu::GATHER_BOUNCE_FLUX_STATS, kStorage}},
                                        sizeof(gpu::LpvGatherBouncePush));
+  tail_ = vkx::Pipeline(device,
+                        vkx::compute_layout({{gpu::GATHER_TAIL_LPV, kUniform},
+                                             {gpu::GATHER_TAIL_FLUX_STATS, kStorage},
+                                             {gpu::GATHER_TAIL_LIGHT_R, kTexels},
+                                             {gpu::GATHER_TAIL_LIGHT_G, kTexels},
+                                             {gpu::GATHER_TAIL_LIGHT_B, kTexels},
+                                             {gpu::GATHER_TAIL_ACCUMULATED_R, kStorage},
+                                             {gpu::GATHER_TAIL_ACCUMULATED_G, kStorage},
+                                             {gpu::GATHER_TAIL_ACCUMULATED_B, kStorage}},
+                                            sizeof(gpu::LpvGatherTailPush)),
+                        spirv_lpv_gather_tail_comp);
 }
 
 std::uint32_t LpvGatherPass::slabs(const LpvVolumes& volumes) {
@@ -71,13 +84,14 @@ const vkx::Pipeline& LpvGatherPass::variant(bool occlusion, const vkx::Buffer& p
   return p;
 }
 
-const vkx::Pipeline& LpvGatherPass::reflection(const GatherBounces& bounces, const vkx::Buffer& params,
+const vkx::Pipeline& LpvGatherPass::reflection(const GatherBounces& bounces, bool splat, const vkx::Buffer& params,
                                                const LpvVolumes& volumes) const {
   const bool trilinear = bounces.injection == api::Injection::trilinear;
-  const vkx::Pipeline& p = bounce_variants_.get(trilinear ? 1u : 0u, [&] {
-    // By constant_id: TRILINEAR_INJECTION (0) as the first bounce's VPLs; 1 to 5 unused; the
-    // irradiance read one surfel at a time (UNIFORM_BRANCHES, 6) from cubes (IRRADIANCE_CUBE, 7).
-    const std::array<std::uint32_t, 8> constants{trilinear ? 1u : 0u, 0u, 0u, 0u, 0u, 0u, 0u, 1u};
+  const vkx::Pipeline& p = bounce_variants_.get((trilinear ? 1u : 0u) | (splat ? 2u : 0u), [&] {
+    // By constant_id: TRILINEAR_INJECTION (0) as the first bounce's VPLs; SPLAT (1); 2 to 5
+    // unused; the irradiance read one surfel at a time (UNIFORM_BRANCHES, 6) from cubes
+    // (IRRADIANCE_CUBE, 7).
+    const std::array<std::uint32_t, 8> constants{trilinear ? 1u : 0u, splat ? 1u : 0u, 0u, 0u, 0u, 0u, 0u, 1u};
     return vkx::Pipeline(device_, bounce_layout_, spirv_lpv_gather_bounce_comp, constants);
   });
   vkx::DescriptorWriter(p.descriptor_set())
@@ -87,8 +101,41 @@ const vkx::Pipeline& LpvGatherPass::reflection(const GatherBounces& bounces, con
       .texel_buffer(gpu::GATHER_BOUNCE_LIGHT_G, kTexels, volumes.bounce_light[1].view())
       .texel_buffer(gpu::GATHER_BOUNCE_LIGHT_B, kTexels, volumes.bounce_light[2].view())
       .buffer(gpu::GATHER_BOUNCE_INJECTED, kStorage, volumes.injected.buffer().handle())
+      .buffer(gpu::GATHER_BOUNCE_FLUX_STATS, kStorage, volumes.flux_stats.handle())
       .apply(device_.handle());
   return p;
+}
+
+void LpvGatherPass::write_tail(const vkx::Buffer& params, const LpvVolumes& volumes) const {
+  vkx::DescriptorWriter(tail_.descriptor_set())
+      .buffer(gpu::GATHER_TAIL_LPV, kUniform, params.handle())
+      .buffer(gpu::GATHER_TAIL_FLUX_STATS, kStorage, volumes.flux_stats.handle())
+      .texel_buffer(gpu::GATHER_TAIL_LIGHT_R, kTexels, volumes.bounce_light[0].view())
+      .texel_buffer(gpu::GATHER_TAIL_LIGHT_G, kTexels, volumes.bounce_light[1].view())
+      .texel_buffer(gpu::GATHER_TAIL_LIGHT_B, kTexels, volumes.bounce_light[2].view())
+      .buffer(gpu::GATHER_TAIL_ACCUMULATED_R, kStorage, volumes.accumulated[0].buffer().handle())
+      .buffer(gpu::GATHER_TAIL_ACCUMULATED_G, kStorage, volumes.accumulated[1].buffer().handle())
+      .buffer(gpu::GATHER_TAIL_ACCUMULATED_B, kStorage, volumes.accumulated[2].buffer().handle())
+      .apply(device_.handle());
+}
+
+void LpvGatherPass::record_tail(VkCommandBuffer cmd, std::uint32_t cascade, const GatherBounces& bounces,
+                                const vkx::Pipeline& measure, const LpvVolumes& volumes) const {
+  const std::uint32_t last = bounces.count;  // the last gathered bounce
+  measure.bind(cmd);
+  measure.push(cmd, gpu::LpvGatherBouncePush{cascade, bounces.surfel_count, volumes.bounce_flux_record(cascade, last + 1)});
+  vkCmdDispatch(cmd, vkx::group_count(bounces.surfel_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
+  vkx::compute_barrier(cmd);
+  tail_.bind(cmd);
+  // The first bounce was gathered from the injected VPLs' flux, a later one from the last
+  // reflection's.
+  const std::uint32_t gathered =
+      last == 1 ? volumes.grid_flux_record(cascade, 0) : volumes.bounce_flux_record(cascade, last);
+  tail_.push(cmd, gpu::LpvGatherTailPush{cascade, gathered, volumes.bounce_flux_record(cascade, last + 1)});
+  const glm::uvec3 d = volumes.dims;
+  vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
+                vkx::group_count(d.z, gpu::LPV_GROUP));
+  vkx::compute_barrier(cmd);
 }
 
 void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
@@ -102,8 +149,10 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
       .buffer(gpu::GATHER_SOURCES_STORE, kStorage, volumes.grids.buffer().handle())
       .apply(device_.handle());
   const vkx::Pipeline& gather = variant(occlusion, params, volumes);
-  const bool reflects = bounces.count > 1 && bounces.surfel_count > 0;
-  const vkx::Pipeline* reflect = reflects ? &reflection(bounces, params, volumes) : nullptr;
+  const bool reflects = bounces.surfel_count > 0;  // else every later bounce is dark
+  const vkx::Pipeline* reflect = reflects && bounces.count > 1 ? &reflection(bounces, true, params, volumes) : nullptr;
+  const vkx::Pipeline* measure = reflects && bounces.tail ? &reflection(bounces, false, params, volumes) : nullptr;
+  if (measure) write_tail(params, volumes);
 
   const std::uint32_t per_bounce = slabs(volumes);
   const glm::uvec3 d = volumes.dims;
@@ -121,7 +170,8 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
         if (reflect) {  // else nothing reflects: the bounce is dark
           reflect->bind(cmd);
-          reflect->push(cmd, gpu::LpvGatherBouncePush{cascade, bounces.surfel_count});
+          reflect->push(cmd, gpu::LpvGatherBouncePush{cascade, bounces.surfel_count,
+                                                       volumes.bounce_flux_record(cascade, bounce + 1)});
           vkCmdDispatch(cmd, vkx::group_count(bounces.surfel_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
           vkx::compute_barrier(cmd);
         }
@@ -133,11 +183,13 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
       vkx::compute_barrier(cmd);
     }
     gather.bind(cmd);
-    const std::uint32_t keep = bounce + 1 < bounces.count ? 1u : 0u;
+    const bool last = bounce + 1 == bounces.count;
+    const std::uint32_t keep = !last || bounces.tail ? 1u : 0u;
     gather.push(cmd, gpu::LpvGatherPush{cascade, slab * gpu::LPV_GROUP, run * gpu::LPV_GROUP, bounce, keep});
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), run);
     vkx::compute_barrier(cmd);
     step += run;
+    if (last && slab + run == per_bounce && measure) record_tail(cmd, cascade, bounces, *measure, volumes);
   }
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "api/render_request.hpp"
+#include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
 #include "vkx/pipeline.hpp"
 
@@ -13,9 +14,10 @@
 
 namespace renderer {
 
-// The bounces a gather runs, and what the later ones reflect from.
+// The bounces a gather runs (gathered_bounces), and what the later ones reflect from.
 struct GatherBounces {
-  std::uint32_t count = 1;
+  std::uint32_t count = 1;  // gathered
+  bool tail = false;        // and those after the last estimated from it (lpv_gather_tail.comp)
   const vkx::Buffer* surfels = nullptr;  // GpuBlocker: the scene's surfels (bounces after the first)
   std::uint32_t surfel_count = 0;
   api::Injection injection = api::Injection::trilinear;  // how their VPLs are added, as the first's
@@ -43,14 +45,21 @@ class LpvGatherPass {
   // The pipeline with or without blocking, its descriptor set written for this recording.
   const vkx::Pipeline& variant(bool occlusion, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
-  // lpv_gather_bounce.comp for these bounces' injection, its descriptor set written.
-  const vkx::Pipeline& reflection(const GatherBounces& bounces, const vkx::Buffer& params,
+  // lpv_gather_bounce.comp for these bounces' injection, splatting its VPLs or only summing
+  // their flux, its descriptor set written.
+  const vkx::Pipeline& reflection(const GatherBounces& bounces, bool splat, const vkx::Buffer& params,
                                   const LpvVolumes& volumes) const;
+  // The estimate of the bounces after the last gathered one: its reflection's flux (`measure`:
+  // reflection() without the splat), then lpv_gather_tail.comp, whose set write_tail writes.
+  void write_tail(const vkx::Buffer& params, const LpvVolumes& volumes) const;
+  void record_tail(VkCommandBuffer cmd, std::uint32_t cascade, const GatherBounces& bounces,
+                   const vkx::Pipeline& measure, const LpvVolumes& volumes) const;
 
   const vkx::Device& device_;
   vkx::Pipeline sources_;  // lpv_gather_sources.comp: the lit injected cells, listed
   vkx::PipelineLayoutDesc bounce_layout_;
-  vkx::PipelineVariants bounce_variants_;  // lpv_gather_bounce.comp, by injection
+  vkx::PipelineVariants bounce_variants_;  // lpv_gather_bounce.comp, by injection and splat
+  vkx::Pipeline tail_;                     // lpv_gather_tail.comp
   vkx::PipelineLayoutDesc layout_;
   vkx::PipelineVariants variants_;
 };

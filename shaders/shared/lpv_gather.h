@@ -29,6 +29,7 @@ namespace gpu_double {
 #else
 namespace gpu {
 #endif
+using glm::clamp;
 using glm::floor;
 using glm::ivec3;
 using glm::min;
@@ -227,6 +228,20 @@ LPV_CONST_F LPV_GATHER_ROUNDING = 0.4921875;  // 1/2 - 1/128
 LPV_FUNC ivec3 lpv_gather_line_start(vec3 centre, vec4 emitter, lpv_real offset, ivec3 dims) {
   const vec3 added = centre + offset * emitter.w * vec3(emitter.x, emitter.y, emitter.z);
   return clamp(ivec3(floor(added + vec3(LPV_GATHER_ROUNDING))), ivec3(0), dims - ivec3(1));
+}
+
+// The bounces after the last one gathered ("bounces": "all", docs/lpv.md "Bounces"): light
+// that keeps bouncing in a room settles into one shape, each bounce r times the one before, r
+// the room's share of the light it reflects back. The last gathered bounce's light, which its
+// surfaces reflect as `reflected` of the `gathered` flux it came from, stands for that shape,
+// and the bounces after it add r + r^2 + ... = r / (1 - r) of it, r = reflected / gathered.
+// r is at most LPV_BOUNCE_TAIL_MAX_RATIO: in a closed room of albedo 1 every bounce carries all
+// the light, and the sum has no end (the tail is then 9 times the last bounce).
+LPV_CONST_F LPV_BOUNCE_TAIL_MAX_RATIO = 0.9f;
+LPV_FUNC lpv_real lpv_bounce_tail_factor(lpv_real gathered, lpv_real reflected) {
+  if (!(gathered > lpv_real(0))) return lpv_real(0);
+  const lpv_real r = clamp(reflected / gathered, lpv_real(0), LPV_BOUNCE_TAIL_MAX_RATIO);
+  return r / (lpv_real(1) - r);
 }
 
 #ifdef __cplusplus

@@ -34,17 +34,38 @@ struct LpvGatherPush {
 };
 
 // lpv_gather_bounce.comp: the scene's surfels reflect the last bounce's light as VPLs of the
-// next (the injection's sums, cleared first), each on the side it faces.
+// next (the injection's sums, cleared first), each on the side it faces; their flux is summed
+// into a record of the flux statistics.
 LPV_BINDING GATHER_BOUNCE_LPV = 0u;       // uniform GpuLpv
 LPV_BINDING GATHER_BOUNCE_BLOCKERS = 1u;  // storage: GpuBlocker, the scene's surfels
 LPV_BINDING GATHER_BOUNCE_LIGHT_R = 2u;   // texels: the last bounce's irradiance cubes
 LPV_BINDING GATHER_BOUNCE_LIGHT_G = 3u;
 LPV_BINDING GATHER_BOUNCE_LIGHT_B = 4u;
-LPV_BINDING GATHER_BOUNCE_INJECTED = 5u;  // storage: the injection's integer sums, added to
+LPV_BINDING GATHER_BOUNCE_INJECTED = 5u;    // storage: the injection's integer sums, added to
+LPV_BINDING GATHER_BOUNCE_FLUX_STATS = 6u;  // storage: the flux statistics
 
 struct LpvGatherBouncePush {
   uint cascade;
-  uint count;  // surfels
+  uint count;        // surfels
+  uint flux_record;  // where their reflected flux is summed
+};
+
+// lpv_gather_tail.comp: the bounces after the last one gathered, estimated (docs/lpv.md,
+// "Bounces"): the last bounce's cubes times r / (1 - r), r = the flux its light reflects over
+// the flux it was gathered from, per channel, at most LPV_BOUNCE_TAIL_MAX_RATIO.
+LPV_BINDING GATHER_TAIL_LPV = 0u;
+LPV_BINDING GATHER_TAIL_FLUX_STATS = 1u;  // storage: the flux statistics
+LPV_BINDING GATHER_TAIL_LIGHT_R = 2u;     // texels: the last bounce's irradiance cubes
+LPV_BINDING GATHER_TAIL_LIGHT_G = 3u;
+LPV_BINDING GATHER_TAIL_LIGHT_B = 4u;
+LPV_BINDING GATHER_TAIL_ACCUMULATED_R = 5u;  // storage: the accumulated cubes, added to
+LPV_BINDING GATHER_TAIL_ACCUMULATED_G = 6u;
+LPV_BINDING GATHER_TAIL_ACCUMULATED_B = 7u;
+
+struct LpvGatherTailPush {
+  uint cascade;
+  uint gathered_record;   // the flux the last bounce was gathered from
+  uint reflected_record;  // the flux its light reflects: the next bounce's
 };
 
 LPV_INTERFACE_END
