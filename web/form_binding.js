@@ -2,6 +2,7 @@
 // edits that field of the request, read according to data-kind:
 //   int, number  a number; what the user typed goes to the server as typed (out of range
 //                too: the server's message then says why), an empty box changes nothing
+//   count        a <select>'s value: a number, or a word the field also takes ("bounces": "all")
 //   bool         a checkbox
 //   enum         a <select>'s value as text
 //   vec3         one component (data-index) of a 3-vector; a scalar field ("grid": 32)
@@ -38,6 +39,8 @@ function readInput(input, state) {
       return input.checked;
     case 'enum':
       return input.value;
+    case 'count':
+      return Number.isNaN(Number(input.value)) ? input.value : Number(input.value);
     case 'color':
       return fromHex(input.value);
     case 'set': {

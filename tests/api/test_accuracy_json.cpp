@@ -154,6 +154,18 @@ TEST(SweepRequest, VariesTheTransferToCompareTheMethods) {
   EXPECT_EQ(rows[4].grid[0], 16u);
 }
 
+// A sweep over bounces may name "all" among the counts; its rows say so in words and in JSON.
+TEST(SweepRequest, VariesTheBouncesUpToAll) {
+  const api::SweepRequest s = api::parse_sweep_request(R"({"base": {}, "parameters": {"bounces": [1, 2, "all"]}})");
+  const auto rows = api::sweep_configurations(s);
+  ASSERT_EQ(rows.size(), 1u + 3u);
+  EXPECT_EQ(rows[3].bounces, api::all_bounces);
+  EXPECT_EQ(api::request_for(s.base, rows[3]).lpv.bounces, api::all_bounces);
+  EXPECT_NE(api::describe(rows[3]).find(", all bounces,"), std::string::npos) << api::describe(rows[3]);
+  EXPECT_EQ(api::to_json(rows[3])["bounces"], "all");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"bounces": [1, "most"]}})"), "parameters.bounces[1]");
+}
+
 TEST(SweepRequest, VariesTheBlockingToCompareTheModels) {
   const api::SweepRequest s =
       api::parse_sweep_request(R"({"base": {}, "parameters": {"blocking": ["sh_lobe", "projected"]}})");

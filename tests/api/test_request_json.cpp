@@ -269,6 +269,25 @@ TEST(RequestJson, TheGatherTransferReadsAndWritesBack) {
   EXPECT_EQ(api::parse_render_request(R"({"lpv": {"transfer": "auto"}})").lpv.transfer, api::Transfer::auto_);
 }
 
+// "bounces": a count, or "all" (every bounce that matters: docs/lpv.md, "Bounces"), written
+// back as it was read; no other word.
+TEST(RequestJson, BouncesAreACountOrAll) {
+  const api::RenderRequest all = api::parse_render_request(R"({"lpv": {"bounces": "all"}})");
+  EXPECT_EQ(all.lpv.bounces, api::all_bounces);
+  EXPECT_EQ(api::to_json(all)["lpv"]["bounces"], "all");
+  EXPECT_EQ(api::parse_render_request(api::to_json(all).dump()).lpv.bounces, api::all_bounces);
+  EXPECT_EQ(api::parse_render_request(R"({"lpv": {"bounces": 8}})").lpv.bounces, 8u);
+  EXPECT_EQ(api::describe_bounces(api::all_bounces), "all bounces");
+  EXPECT_EQ(api::describe_bounces(1), "1 bounce");
+  try {
+    api::parse_render_request(R"({"lpv": {"bounces": "many"}})");
+    ADD_FAILURE() << "accepted bounces \"many\"";
+  } catch (const api::RequestError& e) {
+    EXPECT_EQ(e.field(), "lpv.bounces");
+    EXPECT_NE(std::string(e.what()).find("or \"all\""), std::string::npos) << e.what();
+  }
+}
+
 // auto: the gather up to its cell limit, propagation past it; any other transfer as asked.
 TEST(RequestJson, TransferAutoGathersWithinTheGathersLimitAndPropagatesPastIt) {
   EXPECT_EQ(api::resolved_transfer(glm::uvec3(16), api::Transfer::auto_), api::Transfer::gather);

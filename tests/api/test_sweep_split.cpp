@@ -122,6 +122,10 @@ TEST(SweepTableRead, ATableReadBackIsTheTableNonFiniteNumbersIncluded) {
   EXPECT_EQ(back.rows[0].final_error.psnr_db, INFINITY) << "a null PSNR is identical images";
   EXPECT_TRUE(std::isnan(back.rows[0].indirect_error.rmse));
   EXPECT_TRUE(std::isnan(back.rows[0].passes[1].gpu_ms));
+  // "bounces": "all" too.
+  api::SweepTable all = table;
+  all.rows[0].settings.bounces = api::all_bounces;
+  EXPECT_EQ(api::sweep_table_from_json(json::parse(api::to_json(all).dump())).rows[0].settings.bounces, api::all_bounces);
 }
 
 TEST(SweepTableRead, ATableFromBeforeFlipReadsItAsUnmeasured) {

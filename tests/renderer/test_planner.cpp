@@ -208,8 +208,9 @@ std::string decision(const renderer::RenderResult& r, const std::string& prefix)
 // the sun-lit galleries seen at 256^2 need 2048 texels a side for a texel of half a pixel,
 // the Cornell box's spot 512 (nothing said); a request that names one gets it, and the same
 // picture as the chosen one when it names that.
-// The gather runs the bounces asked for, each adding light, and says nothing; propagation,
-// which reflects what its blockers stop as it goes, runs 3 or more as 2 and says so.
+// The gather runs the bounces asked for, each adding light, and says nothing; "all" gathers 2
+// and estimates the rest, and says so; propagation, which reflects what its blockers stop as
+// it goes, runs 3 or more as 2 and says so.
 TEST_F(Planner, TheGatherRunsTheBouncesAskedAndPropagationSaysWhatItRan) {
   api::RenderRequest one = request(api::PlanMode::auto_);
   one.lpv.transfer = api::Transfer::gather;
@@ -227,6 +228,25 @@ TEST_F(Planner, TheGatherRunsTheBouncesAskedAndPropagationSaysWhatItRan) {
     EXPECT_GT(total, last * 1.05) << bounces << " bounces add light";
     last = total;
   }
+  // "all": two gathered, the rest estimated from the second's light (docs/lpv.md, "Bounces").
+  api::RenderRequest all = one;
+  all.lpv.bounces = api::all_bounces;
+  const auto every = r.render(all, renderer::kReadbackLinear);
+  EXPECT_EQ(decision(every, "lpv.bounces"),
+            "lpv.bounces all: 2 gathered, the rest estimated from the last one's light and the share of it its surfaces "
+            "reflect (stats.lpv.cascades[].bounce_tail)");
+  ASSERT_TRUE(every.stats.lpv.has_value());
+  const api::LpvCascadeStats& cascade = every.stats.lpv->cascades.at(0);
+  ASSERT_EQ(cascade.bounce_flux.size(), 2u) << "the second bounce's flux, and the third's the rest are estimated from";
+  ASSERT_TRUE(cascade.bounce_tail.has_value());
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GT(cascade.bounce_flux[0][c], cascade.bounce_flux[1][c]) << "each bounce carries less than the last";
+    EXPECT_LT(cascade.bounce_flux[0][c], cascade.injected_flux[c]);
+    const double r = cascade.bounce_flux[1][c] / cascade.bounce_flux[0][c];
+    EXPECT_NEAR((*cascade.bounce_tail)[c], r / (1.0 - r), 1e-4 * (1.0 + r / (1.0 - r))) << "channel " << c;
+  }
+  EXPECT_GT(gpu_test::total(every.linear), last) << "more light than 3 gathered bounces";
+
   api::RenderRequest propagated = one;
   propagated.lpv.transfer = api::Transfer::sharpened;
   propagated.lpv.bounces = 2;

@@ -252,6 +252,9 @@ std::vector<Case> make_cases() {
     r.lpv.bounces = api::limits::max_bounces;
     c.push_back({"gather-white-closed-box-bounces", "albedo 1 in a closed box, gathered, every bounce allowed",
                  white_closed_box, r});
+    r.lpv.bounces = api::all_bounces;
+    c.push_back({"gather-white-closed-box-all-bounces", "albedo 1 in a closed box, gathered, bounces \"all\"",
+                 white_closed_box, r});
   }
   return c;
 }

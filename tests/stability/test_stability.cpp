@@ -155,6 +155,14 @@ TEST_F(Invariants, NoGatheredBounceAddsMoreThanTheLast) {
     EXPECT_LE(next, added * (1.0 + 1e-3)) << "bounce " << k + 2 << " against bounce " << k + 1;
     note("largest bounce over the last", next / added, "gather-white-closed-box");
   }
+  // "all": 2 gathered and the rest estimated as the second's light times r / (1 - r), r at most
+  // 0.9 (lpv_bounce_tail_factor): more than 2 bounces, at most 9 times the second's more.
+  r.lpv.bounces = api::all_bounces;
+  const double all = gpu_test::total(renderer.render(box, r, renderer::kReadbackLinear).linear);
+  const double second = total[1] - total[0];
+  EXPECT_GT(all, total[2]);
+  EXPECT_LE(all, total[1] + 9.0 * second * (1.0 + 1e-3));
+  std::printf("all bounces: %.4g of the first's light (8 gathered: %.4g)\n", all / total[0], total.back() / total[0]);
 }
 
 // Direct and indirect light are both held to the two invariants. The indirect light used to

@@ -124,6 +124,18 @@ test('the timing chart and the plan appear, with the reasons of skipped passes',
   assert.deepEqual(errors, []);
 });
 
+test('bounces "all" goes to the server as the word, and the plan says what ran', async (t) => {
+  const { page, errors } = await openPage(t);
+  const sent = page.waitForRequest((r) => r.url().endsWith('/v1/render') && JSON.parse(r.postData()).lpv?.bounces === 'all');
+  await page.locator('#lpv-bounces').selectOption('all');
+  await sent;
+  await frameShown(page, (request) => request.lpv?.bounces === 'all');
+  await page.locator('#plan-decisions li', { hasText: 'lpv.bounces all: 2 gathered' }).waitFor({ state: 'attached' });
+  await page.locator('#lpv-bounces').selectOption('3');
+  await frameShown(page, (request) => request.lpv?.bounces === 3);
+  assert.deepEqual(errors, []);
+});
+
 test('pinning A measures B against it, and the chart times both', async (t) => {
   const { page, errors } = await openPage(t);
   await page.locator('#ab-pin').click();
