@@ -34,9 +34,11 @@ constexpr std::array sweep_metrics{SweepMetric::rmse, SweepMetric::relative_mse,
                                    SweepMetric::ssim, SweepMetric::mean_abs_error, SweepMetric::flip};
 constexpr float max_heatmap_scale = 1.0e12f;
 
-ReferenceSettings read_reference(const Field& f) {
+// `bounces`: the default (reference_bounces_for the request's).
+ReferenceSettings read_reference(const Field& f, std::uint32_t bounces) {
   const Object obj(f, reference_keys);
   ReferenceSettings reference;
+  reference.bounces = bounces;
   if (auto v = obj.get("samples")) reference.samples = as_uint<std::uint32_t>(*v, 1, limits::max_reference_samples);
   if (auto v = obj.get("bounces")) reference.bounces = as_uint<std::uint32_t>(*v, 0, limits::max_reference_bounces);
   if (auto v = obj.get("seed")) reference.seed = as_uint<std::uint64_t>(*v, 0, std::numeric_limits<std::uint64_t>::max());
@@ -183,7 +185,7 @@ CompareRequest parse_compare_request(std::string_view json_text) {
     throw RequestError(against ? "reference" : "", "give exactly one of \"against\" (a second setting) and "
                                                    "\"reference\" (the ground truth)");
   if (against) compare.other = read_against(*against, obj.require("base", "the render request to measure"));
-  if (reference) compare.reference = read_reference(*reference);
+  if (reference) compare.reference = read_reference(*reference, reference_bounces_for(compare.base.lpv.bounces));
   if (auto v = obj.get("mask")) compare.mask = as_enum(*v, masks);
   if (auto v = obj.get("heatmap_scale")) compare.heatmap_scale = as_float(*v, 0.0f, max_heatmap_scale);
   if (auto v = obj.get("images")) compare.images = as_enum(*v, compare_images);
@@ -205,7 +207,11 @@ SweepRequest parse_sweep_request(std::string_view json_text) {
     sweep.path_traced_samples = read_values<std::uint32_t>(path_traced.require("samples", "a list of samples per pixel"),
         [](const Field& e) { return as_uint<std::uint32_t>(e, 1, limits::max_reference_samples); });
   }
-  if (auto v = obj.get("reference")) sweep.reference = read_reference(*v);
+  // The reference's bounces default to the most any row asks for.
+  std::uint32_t bounces = reference_bounces_for(sweep.base.lpv.bounces);
+  for (std::uint32_t b : sweep.parameters.bounces) bounces = std::max(bounces, reference_bounces_for(b));
+  sweep.reference.bounces = bounces;
+  if (auto v = obj.get("reference")) sweep.reference = read_reference(*v, bounces);
   if (auto v = obj.get("axis")) sweep.axis = reader::read_pareto_axis(*v);
   if (auto v = obj.get("mask")) sweep.mask = as_enum(*v, masks);
   check_configurations(sweep);
@@ -289,6 +295,10 @@ RenderRequest request_for(const RenderRequest& base, const SweepSettings& settin
 
 nlohmann::json to_json(const PixelRegion& region) {
   return {{"x", region.x}, {"y", region.y}, {"width", region.width}, {"height", region.height}};
+}
+
+std::uint32_t reference_bounces_for(std::uint32_t lpv_bounces) {
+  return std::min(lpv_bounces, limits::max_reference_bounces);  // all_bounces is the largest count
 }
 
 nlohmann::json to_json(const ReferenceSettings& reference) {

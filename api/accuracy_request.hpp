@@ -24,6 +24,10 @@ struct ReferenceSettings {
   std::uint64_t seed = 1;       // the same seed gives the same image, bit for bit
 };
 
+// The reference's bounces when a compare or sweep names none: the render's own, so that like is
+// measured against like ("all" against the reference's most, limits::max_reference_bounces).
+std::uint32_t reference_bounces_for(std::uint32_t lpv_bounces);
+
 // The pixels the metrics count: every pixel, those that see a surface, or those that see a
 // surface away from silhouette and crease edges (where a rasteriser and a ray tracer differ
 // by their sampling, not by their light).

@@ -148,6 +148,7 @@ BudgetCalibration calibrate(Workbench& bench, const api::RenderRequest& request)
   sweep_request.base.dry_run = false;
   sweep_request.base.budget_ms.reset();
   sweep_request.reference.samples = kCalibrationSamples;
+  sweep_request.reference.bounces = api::reference_bounces_for(request.lpv.bounces);
   sweep_request.mask = api::MetricMask::interior;
   const SweepResult measured = sweep(bench, sweep_request, calibration.candidates);
 

@@ -6,7 +6,8 @@
 //   LPV_SCORECARD_SIZE (64), LPV_SCORECARD_SAMPLES (1024): the measurement's resolution and
 //   the reference's paths per pixel (docs/accuracy.md's table: 256 and 4096).
 //   LPV_SCORECARD_BOUNCES (1): the reference's diffuse bounces, 8 for all that matter (the
-//   bounds are one bounce's: against more, read the table and expect the bounds to fail).
+//   bounds are one bounce's: against more, read the table and expect the bounds to fail; the
+//   all-bounce suite, AllBouncesScorecard, is always against 8).
 //   LPV_SCORECARD_REQUEST: a render request (JSON) to score instead of the default, its scene
 //   replaced by each built-in's: to compare settings on every scene (the bounds still apply).
 //   LPV_SCORECARD_DUMP: a folder to write each scene's images to (SCENE-indirect.pfm, and
@@ -66,10 +67,11 @@ void print(const accuracy::SceneScore& s) {
 
 // Scores `request` on the bounds' scene, prints it, writes its images where
 // LPV_SCORECARD_DUMP says, and checks it against the bounds.
-void score_within_bounds(const Bounds& b, api::RenderRequest request) {
+void score_within_bounds(const Bounds& b, api::RenderRequest request,
+                         const accuracy::ScorecardSettings& measure = settings()) {
   accuracy::Workbench bench(gpu_test::renderer());
   request.scene = b.scene;
-  const accuracy::SceneScore s = accuracy::score_request(bench, request, settings());
+  const accuracy::SceneScore s = accuracy::score_request(bench, request, measure);
   print_header();
   print(s);
   if (const char* dump = std::getenv("LPV_SCORECARD_DUMP")) {
@@ -99,6 +101,7 @@ void score_within_bounds(const Bounds& b, api::RenderRequest request) {
 
 class GiScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
 class PropagationScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
+class AllBouncesScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
 
 TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) {
   const char* custom = std::getenv("LPV_SCORECARD_REQUEST");
@@ -111,6 +114,16 @@ TEST_P(PropagationScorecard, PropagationStaysWithinItsBounds) {
   api::RenderRequest request;
   request.lpv.transfer = api::Transfer::sharpened;
   score_within_bounds(GetParam(), request);
+}
+
+// All the bounces (docs/lpv.md, "Bounces"): {"lpv": {"bounces": "all"}} against the reference
+// with 8 bounces, whatever LPV_SCORECARD_BOUNCES says (the size and samples as set).
+TEST_P(AllBouncesScorecard, AllBouncesStayWithinTheirBounds) {
+  api::RenderRequest request;
+  request.lpv.bounces = api::all_bounces;
+  accuracy::ScorecardSettings measure = settings();
+  measure.bounces = api::limits::max_reference_bounces;
+  score_within_bounds(GetParam(), request, measure);
 }
 
 // clang-format off
@@ -152,6 +165,21 @@ const Bounds kPropagationBounds[] = {
     {"sunlit-hall",        0.58,  0.93, 1.23,   9.0,     0.0,  0.0},   // 0.522 1.081
     {"thin-wall-hut",      34.0,  28.0, 40.0,   9.0,     0.0,  0.0},   // 30.6 35.3: the leak
 };
+// {"lpv": {"bounces": "all"}} against the 8-bounce reference, the same margins: its leak is the
+// light of every bounce (issue 45's target, 2%, is not met: the thin walls' blocking, issue 48).
+const Bounds kAllBouncesBounds[] = {
+    // scene               gain   indirect      ind/dir  probe
+    {"cornell-box",        0.25,  0.70, 1.00,   9.0,     0.71, 1.01},  // 0.187 0.854, ceiling 0.857
+    {"cornell-box-point",  0.20,  0.78, 1.08,   9.0,     0.0,  0.0},   // 0.134 0.934
+    {"sun-courtyard",      0.20,  0.73, 1.03,   9.0,     0.0,  0.0},   // 0.134 0.878
+    {"corridor",           0.22,  0.65, 0.95,   9.0,     0.0,  0.0},   // 0.152 0.796
+    {"thin-wall-room",     0.30,  0.77, 1.07,   9.0,     0.0,  0.15},  // 0.232 0.921, leak 0.088
+    {"open-court",         0.26,  0.63, 0.93,   9.0,     0.0,  0.0},   // 0.192 0.779
+    {"gallery-court",      0.31,  0.64, 0.94,   9.0,     0.0,  0.0},   // 0.249 0.789
+    {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
+    {"sunlit-hall",        0.35,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.287 0.987
+    {"thin-wall-hut",      19.0,  14.0, 21.0,   9.0,     0.0,  0.0},   // 16.5 17.8: the leak
+};
 // clang-format on
 
 std::string scene_test_name(const ::testing::TestParamInfo<Bounds>& info) {
@@ -163,5 +191,6 @@ std::string scene_test_name(const ::testing::TestParamInfo<Bounds>& info) {
 
 INSTANTIATE_TEST_SUITE_P(BuiltinScenes, GiScorecard, ::testing::ValuesIn(kBounds), scene_test_name);
 INSTANTIATE_TEST_SUITE_P(BuiltinScenes, PropagationScorecard, ::testing::ValuesIn(kPropagationBounds), scene_test_name);
+INSTANTIATE_TEST_SUITE_P(BuiltinScenes, AllBouncesScorecard, ::testing::ValuesIn(kAllBouncesBounds), scene_test_name);
 
 }  // namespace

@@ -41,6 +41,21 @@ TEST(CompareRequest, ReferenceWithDefaults) {
   EXPECT_FALSE(c.region);
 }
 
+// Like against like: the reference's bounces default to the render's ("all": the reference's
+// most), a sweep's to the most its rows ask for; the request's own reference.bounces wins.
+TEST(AccuracyRequests, TheReferenceBouncesAsTheRenderUnlessTold) {
+  auto compared = [](const std::string& json) { return api::parse_compare_request(json).reference->bounces; };
+  EXPECT_EQ(compared(R"({"base": {"lpv": {"bounces": 3}}, "reference": {}})"), 3u);
+  EXPECT_EQ(compared(R"({"base": {"lpv": {"bounces": "all"}}, "reference": {}})"), api::limits::max_reference_bounces);
+  EXPECT_EQ(compared(R"({"base": {"lpv": {"bounces": "all"}}, "reference": {"bounces": 1}})"), 1u);
+  auto swept = [](const std::string& json) { return api::parse_sweep_request(json).reference.bounces; };
+  EXPECT_EQ(swept(R"({"base": {}})"), 1u);
+  EXPECT_EQ(swept(R"({"base": {"lpv": {"bounces": 2}}, "parameters": {"bounces": [1, 4]}})"), 4u);
+  EXPECT_EQ(swept(R"({"base": {}, "parameters": {"bounces": [1, "all"]}, "reference": {"samples": 16}})"),
+            api::limits::max_reference_bounces);
+  EXPECT_EQ(swept(R"({"base": {}, "parameters": {"bounces": [1, "all"]}, "reference": {"bounces": 0}})"), 0u);
+}
+
 TEST(CompareRequest, ReadsImagesAndARegionInsideTheOutput) {
   const api::CompareRequest c = api::parse_compare_request(
       R"({"base": {"output": {"width": 64, "height": 48}}, "reference": {}, "images": "pfm",
