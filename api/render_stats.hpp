@@ -42,6 +42,7 @@ struct LpvCascadeStats {
   Rgb injected_flux{};               // flux of the VPLs that landed in this cascade
   std::vector<Rgb> propagated_flux;  // flux of each iteration's propagated grid (1..N)
   std::uint32_t iterations = 0;      // propagation steps that ran (the planner may stop early)
+  std::uint32_t bounces = 0;         // the gather's bounces gathered (it may stop early too)
   // The gather's bounces after the first: the flux each one's VPLs carry, what the surfaces
   // reflected of the one before (with "bounces": "all", the last is the reflection of the last
   // gathered bounce, which the rest were estimated from).

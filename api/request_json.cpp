@@ -393,6 +393,7 @@ json lpv_stats_json(const LpvStats& lpv) {
                     {"injected_flux", c.injected_flux},
                     {"propagated_flux", c.propagated_flux},
                     {"iterations", c.iterations}};
+    if (c.bounces > 0) cascade["bounces"] = c.bounces;
     if (!c.bounce_flux.empty()) cascade["bounce_flux"] = c.bounce_flux;
     if (c.bounce_tail) cascade["bounce_tail"] = *c.bounce_tail;
     cascades.push_back(std::move(cascade));

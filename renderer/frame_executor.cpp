@@ -66,7 +66,8 @@ FrameExecutor::Outcome FrameExecutor::run(const Frame& frame, const Controls& co
   const std::uint32_t repeat = frame.request.repeat;
   const auto cascades = std::uint32_t(frame.lpv.cascades.size());
   const std::vector<ScheduledPass> schedule = pass_schedule(plan, cascades);
-  Outcome outcome{FrameTimings(cascades), std::vector<std::uint32_t>(frame.iterations.size(), 0)};
+  Outcome outcome{FrameTimings(cascades), std::vector<std::uint32_t>(frame.iterations.size(), 0),
+                  std::vector<std::uint32_t>(cascades, 0)};
   std::size_t passes_done = 0;  // for progress reports
   for (std::uint32_t f = 0; f < repeat; ++f) {
     const auto frame_start = Clock::now();
@@ -77,13 +78,17 @@ FrameExecutor::Outcome FrameExecutor::run(const Frame& frame, const Controls& co
       // every other pass is one submission.
       // A stop check is asked between chunks too. The chunks' results are the same bits as one
       // submission's: the same dispatches in the same order.
+      // The gather's bounces, one submission each when it may stop once the light left is
+      // small (as propagation's steps: lpv.convergence), its slabs one each when it may be stopped.
+      const GatheredBounces bounces = gathered_bounces(frame.request.lpv.bounces);
+      const std::uint32_t slabs = LpvGatherPass::slabs(*frame.resources.volumes);
+      const bool bounces_converge = plan.convergence > 0.0f && bounces.gathered > 1 && !bounces.tail;
       const std::uint32_t steps =
-          p == kPropagate ? frame.iterations[c]
-          : p == kGather  ? LpvGatherPass::steps(*frame.resources.volumes, gathered_bounces(frame.request.lpv.bounces).gathered)
-                          : 1;
+          p == kPropagate ? frame.iterations[c] : p == kGather ? slabs * bounces.gathered : 1;
       const bool stoppable = bool(controls.stop_check);
-      const bool chunked = (p == kPropagate && (plan.convergence > 0.0f || stoppable)) || (p == kGather && stoppable);
-      const std::uint32_t chunk = !chunked ? steps : p == kGather ? 1 : kConvergenceChunk;
+      const bool chunked = (p == kPropagate && (plan.convergence > 0.0f || stoppable)) ||
+                           (p == kGather && (stoppable || bounces_converge));
+      const std::uint32_t chunk = !chunked ? steps : p == kGather ? (stoppable ? 1 : slabs) : kConvergenceChunk;
       double pass_gpu_ms = 0.0;
       std::uint32_t done = 0;
       while (done < steps) {
@@ -101,8 +106,12 @@ FrameExecutor::Outcome FrameExecutor::run(const Frame& frame, const Controls& co
         if (p == kPropagate && done < steps && plan.convergence > 0.0f &&
             propagation_converged(*frame.resources.volumes, c, done, steps, plan.convergence))
           break;
+        if (p == kGather && bounces_converge && done < steps && done % slabs == 0 &&
+            gather_converged(*frame.resources.volumes, c, done / slabs, bounces.gathered, plan.convergence))
+          break;
       }
       if (p == kPropagate) outcome.iterations_run[c] = done;
+      if (p == kGather) outcome.bounces_run[c] = done / slabs;
       if (is_grid_pass(p)) outcome.timings.add_cascade(p, c, pass_gpu_ms);
       frame_time.pass_ms[p] += pass_gpu_ms;
       frame_time.gpu_ms += pass_gpu_ms;

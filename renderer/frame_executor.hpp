@@ -60,6 +60,7 @@ class FrameExecutor {
   struct Outcome {
     FrameTimings timings;
     std::vector<std::uint32_t> iterations_run;  // per cascade: fewer than planned where it converged
+    std::vector<std::uint32_t> bounces_run;     // per cascade, gathered: likewise
   };
 
   // Runs the frame request.repeat times; the last frame's images go to `result` (display,

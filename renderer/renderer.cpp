@@ -210,6 +210,12 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
       plan.decisions.push_back("cascade " + std::to_string(c) + ": converged after " + std::to_string(iterations_run[c]) +
                                " of " + std::to_string(iterations[c]) +
                                " iterations (the steps left would add less than lpv.convergence of the light)");
+  const std::uint32_t gathered = gathered_bounces(request.lpv.bounces).gathered;
+  for (std::uint32_t c = 0; c < ran.bounces_run.size() && plan.run[kGather]; ++c)
+    if (ran.bounces_run[c] < gathered)
+      plan.decisions.push_back("cascade " + std::to_string(c) + ": the gather stopped after " +
+                               std::to_string(ran.bounces_run[c]) + " of " + std::to_string(gathered) +
+                               " bounces (the bounces left would add less than lpv.convergence of the light)");
   api::RenderStats& stats = result.stats;
   stats = plan_stats(scene, request, plan, plan_ms);
   stats.frames = request.repeat;
@@ -219,7 +225,7 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
   stats.cpu_ms["setup"] = api::TimeSummary::of({setup_ms});
   if (plan.run[kInject])
     stats.lpv = lpv_stats(*resources.volumes, request.lpv, lpv_setup, plan.run[kRsm], gpu.emitter_count, iterations_run,
-                          plan.run[kGather]);
+                          plan.run[kGather] ? ran.bounces_run : std::vector<std::uint32_t>{});
   if (plan.run[kInject] && (readback & kReadbackLpv))
     result.lpv = lpv_snapshot(device, *resources.rsm_maps, *resources.volumes, lpv_setup, plan.run[kGeometryVolume]);
   return result;

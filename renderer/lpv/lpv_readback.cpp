@@ -27,8 +27,26 @@ bool propagation_converged(const LpvVolumes& volumes, std::uint32_t cascade, std
   return tail < double(convergence) * accumulated;
 }
 
+bool gather_converged(const LpvVolumes& volumes, std::uint32_t cascade, std::uint32_t gathered, std::uint32_t bounces,
+                      float convergence) {
+  volumes.flux_stats.invalidate();
+  auto flux = [&](std::uint32_t b) {  // of bounce b's VPLs (1-based)
+    const glm::dvec3 f = volumes.flux_at(b == 1 ? volumes.grid_flux_record(cascade, 0) : volumes.bounce_flux_record(cascade, b), 1.0);
+    return std::max({f.x, f.y, f.z});
+  };
+  double so_far = 0.0;
+  for (std::uint32_t b = 1; b <= gathered; ++b) so_far += flux(b);
+  const double next = flux(gathered + 1), last = flux(gathered);
+  if (!(next > 0.0) || !(last > 0.0)) return true;  // nothing reflects any more
+  const double r = next / last;
+  const double left = double(bounces - gathered);
+  const double rest = r < 1.0 ? next * (1.0 - std::pow(r, left)) / (1.0 - r) : next * left;
+  return rest < double(convergence) * so_far;
+}
+
 api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
-                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run, bool gathered) {
+                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run,
+                        const std::vector<std::uint32_t>& bounces_run) {
   volumes.flux_stats.invalidate();
   const double watts_per_unit = 1.0 / double(lpv.gpu.scales.x);
   auto rgb = [](glm::dvec3 v) { return api::Rgb{v.x, v.y, v.z}; };
@@ -47,9 +65,10 @@ api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, con
     cs.iterations = iterations_run[c];
     for (std::uint32_t k = 1; k <= iterations_run[c]; ++k)
       cs.propagated_flux.push_back(rgb(volumes.flux_at(volumes.grid_flux_record(c, k), watts_per_unit)));
-    if (gathered) {
+    if (c < bounces_run.size()) {
       const GatheredBounces bounces = gathered_bounces(settings.bounces);
-      const std::uint32_t reflected = bounces.gathered + (bounces.tail ? 1 : 0);  // reflections measured
+      cs.bounces = bounces_run[c];
+      const std::uint32_t reflected = bounces_run[c] + (bounces.tail ? 1 : 0);  // reflections measured
       for (std::uint32_t b = 2; b <= reflected; ++b)
         cs.bounce_flux.push_back(rgb(volumes.flux_at(volumes.bounce_flux_record(c, b), watts_per_unit)));
       if (bounces.tail) {

@@ -27,10 +27,18 @@ inline constexpr std::uint32_t kConvergenceChunk = 4;
 bool propagation_converged(const LpvVolumes& volumes, std::uint32_t cascade, std::uint32_t step, std::uint32_t steps,
                            float convergence);
 
+// Whether the gather, `gathered` of `bounces` bounces done, may stop: the bounces left would add
+// less than `convergence` of the light gathered so far, estimated as propagation_converged's
+// geometric tail from the flux of the next bounce's VPLs (the last reflection's) over the
+// last's. Reads flux_stats (the submission must have finished).
+bool gather_converged(const LpvVolumes& volumes, std::uint32_t cascade, std::uint32_t gathered, std::uint32_t bounces,
+                      float convergence);
+
 // The flux the LPV carried, from the fixed-point sums the grid passes left in flux_stats;
-// `gathered`: the gather ran (and with it, its bounces and their fluxes).
+// `bounces_run`: per cascade, the bounces the gather gathered (empty where it did not run).
 api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
-                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run, bool gathered);
+                        std::uint32_t emitters, const std::vector<std::uint32_t>& iterations_run,
+                        const std::vector<std::uint32_t>& bounces_run);
 
 // Copies the RSMs, the accumulated grids and the geometry volume to the host. Not timed: only
 // for checks.

@@ -119,6 +119,22 @@ void LpvGatherPass::write_tail(const vkx::Buffer& params, const LpvVolumes& volu
       .apply(device_.handle());
 }
 
+void LpvGatherPass::record_reflection(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t bounce,
+                                      const GatherBounces& bounces, const vkx::Pipeline* reflect,
+                                      const LpvVolumes& volumes) const {
+  // The injected sums, which the last gather read, are replaced.
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  vkCmdFillBuffer(cmd, volumes.injected.buffer().handle(), 0, VK_WHOLE_SIZE, 0);
+  vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  if (!reflect) return;  // no surfels: nothing reflects, the next bounce is dark
+  reflect->bind(cmd);
+  reflect->push(cmd, gpu::LpvGatherBouncePush{cascade, bounces.surfel_count, volumes.bounce_flux_record(cascade, bounce + 1)});
+  vkCmdDispatch(cmd, vkx::group_count(bounces.surfel_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
+  vkx::compute_barrier(cmd);
+}
+
 void LpvGatherPass::record_tail(VkCommandBuffer cmd, std::uint32_t cascade, const GatherBounces& bounces,
                                 const vkx::Pipeline& measure, const LpvVolumes& volumes) const {
   const std::uint32_t last = bounces.count;  // the last gathered bounce
@@ -159,24 +175,7 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
   for (std::uint32_t step = first; step < first + count;) {
     const std::uint32_t bounce = step / per_bounce, slab = step % per_bounce;
     const std::uint32_t run = std::min(first + count - step, per_bounce - slab);  // slabs of this bounce
-    if (slab == 0) {
-      if (bounce > 0) {
-        // The surfels' reflection of the last bounce replaces the injected sums, which the
-        // last gather read.
-        vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT,
-                            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-        vkCmdFillBuffer(cmd, volumes.injected.buffer().handle(), 0, VK_WHOLE_SIZE, 0);
-        vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                            VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-        if (reflect) {  // else nothing reflects: the bounce is dark
-          reflect->bind(cmd);
-          reflect->push(cmd, gpu::LpvGatherBouncePush{cascade, bounces.surfel_count,
-                                                       volumes.bounce_flux_record(cascade, bounce + 1)});
-          vkCmdDispatch(cmd, vkx::group_count(bounces.surfel_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
-          vkx::compute_barrier(cmd);
-        }
-      }
-      // The sources, once a cascade and bounce.
+    if (slab == 0) {  // the sources, once a cascade and bounce
       sources_.bind(cmd);
       sources_.push(cmd, gpu::LpvGatherPush{cascade, 0, 0, 0, 0});
       vkCmdDispatch(cmd, 1, 1, 1);
@@ -189,8 +188,14 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), run);
     vkx::compute_barrier(cmd);
     step += run;
-    if (last && slab + run == per_bounce && measure) record_tail(cmd, cascade, bounces, *measure, volumes);
+    if (slab + run < per_bounce) continue;
+    // The bounce is done: the surfels reflect its light as the next bounce's VPLs (their flux
+    // known when this submission ends: the executor may stop there), or the bounces after the
+    // last are estimated.
+    if (!last) record_reflection(cmd, cascade, bounce + 1, bounces, reflect, volumes);
+    if (last && measure) record_tail(cmd, cascade, bounces, *measure, volumes);
   }
 }
+
 
 }  // namespace renderer

@@ -30,14 +30,13 @@ class LpvGatherPass {
   // Slabs of cells along z (gpu::LPV_GROUP layers each) a bounce of the cascade's gather is
   // recorded in: a render can be stopped between them.
   static std::uint32_t slabs(const LpvVolumes& volumes);
-  // Steps of a cascade's gather: its slabs, once a bounce.
-  static std::uint32_t steps(const LpvVolumes& volumes, std::uint32_t bounces) { return slabs(volumes) * bounces; }
 
   // Expects the injected sums in volumes.injected and, when `occlusion`, the geometry volume's
   // faces. Records steps first .. first + count - 1 (0-based; step s is slab s % slabs of
   // bounce s / slabs). A bounce's slab 0 first lists the lit injected cells (in volumes.grids,
-  // which the gather does not otherwise use); after the first bounce, it first replaces the
-  // injected sums with the surfels' reflection of the last bounce's light.
+  // which the gather does not otherwise use); its last slab is followed by the surfels'
+  // reflection of its light into the injected sums, the next bounce's VPLs (or after the last,
+  // with bounces.tail, by the estimate of the rest).
   void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, bool occlusion,
               const GatherBounces& bounces, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
@@ -49,6 +48,10 @@ class LpvGatherPass {
   // their flux, its descriptor set written.
   const vkx::Pipeline& reflection(const GatherBounces& bounces, bool splat, const vkx::Buffer& params,
                                   const LpvVolumes& volumes) const;
+  // Bounce `bounce` (1-based) done: the injected sums replaced by the surfels' reflection of
+  // its light (none without `reflect`), their flux summed into bounce_flux_record(bounce + 1).
+  void record_reflection(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t bounce, const GatherBounces& bounces,
+                         const vkx::Pipeline* reflect, const LpvVolumes& volumes) const;
   // The estimate of the bounces after the last gathered one: its reflection's flux (`measure`:
   // reflection() without the splat), then lpv_gather_tail.comp, whose set write_tail writes.
   void write_tail(const vkx::Buffer& params, const LpvVolumes& volumes) const;

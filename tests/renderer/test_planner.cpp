@@ -260,6 +260,36 @@ TEST_F(Planner, TheGatherRunsTheBouncesAskedAndPropagationSaysWhatItRan) {
   EXPECT_EQ(two.linear.pixels, five.linear.pixels);
 }
 
+// Gathered bounces stop, as propagation's steps do, once those left would add less than
+// lpv.convergence of the light (by the flux of each bounce's VPLs): in the open courtyard each
+// bounce carries about a fifth of the last. The plan says so, the stats count them, and what
+// is left out is within the convergence; without the rule every one is gathered.
+TEST_F(Planner, GatheredBouncesStopWhenTheRestWouldAddLittle) {
+  api::RenderRequest r = request(api::PlanMode::auto_);
+  r.scene = "sun-courtyard";
+  r.lpv.transfer = api::Transfer::gather;
+  r.lpv.grid = glm::uvec3(12);
+  r.lpv.bounces = 8;
+  r.lpv.convergence = 0.02f;
+  r.output.view = api::View::indirect;
+  auto& renderer = gpu_test::renderer();
+  const auto stopped = renderer.render(r, renderer::kReadbackLinear);
+  ASSERT_TRUE(stopped.stats.lpv.has_value());
+  const std::uint32_t ran = stopped.stats.lpv->cascades.at(0).bounces;
+  EXPECT_GE(ran, 2u);
+  EXPECT_LT(ran, 8u);
+  EXPECT_EQ(decision(stopped, "cascade 0: the gather"),
+            "cascade 0: the gather stopped after " + std::to_string(ran) +
+                " of 8 bounces (the bounces left would add less than lpv.convergence of the light)");
+  r.plan_keep = {api::PlanRule::convergence};
+  const auto every = renderer.render(r, renderer::kReadbackLinear);
+  EXPECT_EQ(every.stats.lpv->cascades.at(0).bounces, 8u);
+  EXPECT_EQ(decision(every, "cascade 0: the gather"), "");
+  const double all = gpu_test::total(every.linear), some = gpu_test::total(stopped.linear);
+  EXPECT_LT(some, all);
+  EXPECT_GT(some, all * (1.0 - 0.02)) << "what the stop left out is within lpv.convergence";
+}
+
 TEST_F(Planner, ShadowMapsWithoutAResolutionGetTheFramesOwn) {
   api::RenderRequest gallery;
   gallery.scene = "gallery-court";

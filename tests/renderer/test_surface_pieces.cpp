@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -47,6 +48,27 @@ TEST(BlockerSurfels, CoverEverySurfaceWithItsArea) {
   EXPECT_LE(blockers.size(), std::size_t(1) << 15);
   EXPECT_GT(blockers.size(), std::size_t(1) << 13) << "pieces small against any grid's cells";
   for (const gpu::GpuBlocker& b : blockers) EXPECT_NEAR(glm::length(glm::vec3(b.normal)), 1.0f, 1e-5f);
+}
+
+// The same scene at another scale gets the same blockers, scaled: the pieces follow the
+// scene's size, not a length in metres (the gather's later bounces reflect from them).
+TEST(BlockerSurfels, ScaleWithTheScene) {
+  const auto box = scene::make_builtin_scene("cornell-box");
+  ASSERT_TRUE(box);
+  for (const float s : {1e-3f, 1e4f}) {
+    scene::Scene scaled = *box;
+    for (scene::Vertex& v : scaled.vertices) v.position *= s;
+    scaled.update_bounds();
+    const auto one = renderer::blocker_surfels(*box), other = renderer::blocker_surfels(scaled);
+    ASSERT_EQ(one.size(), other.size()) << s;
+    double worst_position = 0.0, worst_area = 0.0;
+    for (std::size_t i = 0; i < one.size(); ++i) {
+      worst_position = std::max(worst_position, double(glm::distance(glm::vec3(other[i].position) / s, glm::vec3(one[i].position))));
+      worst_area = std::max(worst_area, std::abs(double(other[i].position.w) / (double(s) * s) / double(one[i].position.w) - 1.0));
+    }
+    EXPECT_LT(worst_position, 1e-5) << s;
+    EXPECT_LT(worst_area, 1e-5) << s;
+  }
 }
 
 // 80 000 triangles of 1/80 000 m^2 each, over a budget of 2000: the small ones are sampled in
