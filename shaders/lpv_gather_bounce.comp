@@ -42,24 +42,30 @@ layout(constant_id = 1) const bool SPLAT = true;
 const uint CASCADES = 1u;
 #include "shared/lpv_irradiance.glsl"
 
+const float ON_THE_BORDER = 1e-3;  // cells
+
 void main() {
   uint i = gl_GlobalInvocationID.x;
   bool valid = i < push.count;
   GpuBlocker b = blockers[min(i, max(push.count, 1u) - 1u)];
   vec3 n = b.normal.xyz;
   GpuLpvCascade g = lpv.cascades[push.cascade];
-  vec3 flux = vec3(0.0);
-  if (valid) {
-    vec3 q = lpv_grid_position(g, b.position.xyz + 0.5 * g.origin.w * n);
-    if (lpv_inside_distance(g, q) >= 0.0)
-      flux = albedo_decode(b.normal.w) * b.position.w * cascade_irradiance(push.cascade, q, n);
-  }
+  // Its light is read half a cell along its normal, as the shading reads a surface's, where
+  // that point lies in the cascade. A surfel of a surface that meets the grid's border at a
+  // right angle has that point on the border itself, where float rounding alone would decide
+  // (at 1 mm, 484 of the Cornell box's surfels fell out, and 1.4% of the bounce's light with
+  // them): a thousandth of a cell outside still counts; the lookup clamps to the border cells.
+  // Its VPL, injection_offset along the normal, puts any share beyond the grid in the border
+  // cells too (lpv_inject_vpl.glsl): none of the reflected flux is lost.
+  vec3 q = lpv_grid_position(g, b.position.xyz + 0.5 * g.origin.w * n);
+  bool inside = valid && lpv_inside_distance(g, q) >= -ON_THE_BORDER;
+  vec3 flux = inside ? albedo_decode(b.normal.w) * b.position.w * cascade_irradiance(push.cascade, q, n) : vec3(0.0);
   add_grid_flux(flux, push.flux_record, lpv.scales.x);  // every invocation: a subgroup sum
   if (!SPLAT) return;
   ivec3 low;
   vec3 f;
   float values[SPLAT_VALUES];
   bool lit = flux.r + flux.g + flux.b > 0.0;
-  bool inside = vpl_splat(b.position.xyz, n, flux, low, f, values);
-  splat_subgroup(lit && inside, low, f, values, vpl_last_cell(), lpv.scales.x);  // by the whole subgroup
+  vpl_splat(b.position.xyz, n, flux, low, f, values);  // its own inside test: not the one above
+  splat_subgroup(lit, low, f, values, vpl_last_cell(), lpv.scales.x);  // by the whole subgroup
 }

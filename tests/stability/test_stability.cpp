@@ -220,11 +220,7 @@ TEST_F(Invariants, ScalingTheSceneAndThePointLightBySSquared) {
       note("scale-invariance difference, " + v.name() + " (rel. RMSE)", d, what);
       std::printf("scale invariance, %s: relative RMSE %.4f\n", what.c_str(), d);
       EXPECT_TRUE(std::isfinite(d));
-      // Known and open: at 1 mm the surfels reflect 1.4% less of the first bounce's light than
-      // at 1 m (the first bounce's cubes agree to 1e-6; docs/stability.md), so the later bounces
-      // are held to 2% there until that is found.
-      const bool reflecting_mm = v.bounces == api::all_bounces && s < 1.0f;
-      EXPECT_LT(d, view == api::View::direct ? 1e-4 : reflecting_mm ? 2e-2 : 1e-3) << what;
+      EXPECT_LT(d, view == api::View::direct ? 1e-4 : 1e-3) << what;
     }
   }
 }
