@@ -187,13 +187,11 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
       propagate_.record(cmd, cascade, steps.first, steps.count, frame.lpv.occlusion, frame.lpv.bounces, frame.resources.lpv_uniforms,
                        *frame.resources.volumes);
       break;
-    case kGather: {
-      const GatheredBounces bounces = gathered_bounces(lpv.bounces);
+    case kGather:
       gather_.record(cmd, cascade, steps.first - 1, steps.count, frame.lpv.occlusion,
-                     {bounces.gathered, bounces.tail, &frame.gpu.blockers, frame.gpu.blocker_count, lpv.injection},
+                     {gathered_bounces(lpv.bounces), &frame.gpu.blockers, frame.gpu.blocker_count, lpv.injection},
                      frame.resources.lpv_uniforms, *frame.resources.volumes);
       break;
-    }
     case kForward:
       forward_.record(cmd, frame.gpu, frame.draw_order, *frame.resources.targets, direct_light(frame), indirect_light(frame),
                      frame.request.output.tonemap);

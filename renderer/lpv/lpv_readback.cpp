@@ -8,6 +8,14 @@
 #include <cmath>
 
 namespace renderer {
+namespace {
+
+// The sum of n terms of a geometric series, `first` the first and r the ratio.
+double geometric_sum(double first, double r, double n) {
+  return r < 1.0 ? first * (1.0 - std::pow(r, n)) / (1.0 - r) : first * n;
+}
+
+}  // namespace
 
 bool propagation_converged(const LpvVolumes& volumes, std::uint32_t cascade, std::uint32_t step, std::uint32_t steps,
                            float convergence) {
@@ -23,25 +31,21 @@ bool propagation_converged(const LpvVolumes& volumes, std::uint32_t cascade, std
   if (!(accumulated > 0.0) || !(earlier > 0.0)) return accumulated > 0.0;  // nothing moves any more
   const double r = std::pow(last / earlier, 1.0 / double(back));
   if (!(r < 1.0)) return false;
-  const double tail = last * r * (1.0 - std::pow(r, double(steps - step))) / (1.0 - r);
-  return tail < double(convergence) * accumulated;
+  return geometric_sum(last * r, r, double(steps - step)) < double(convergence) * accumulated;
 }
 
 bool gather_converged(const LpvVolumes& volumes, std::uint32_t cascade, std::uint32_t gathered, std::uint32_t bounces,
                       float convergence) {
   volumes.flux_stats.invalidate();
-  auto flux = [&](std::uint32_t b) {  // of bounce b's VPLs (1-based)
-    const glm::dvec3 f = volumes.flux_at(b == 1 ? volumes.grid_flux_record(cascade, 0) : volumes.bounce_flux_record(cascade, b), 1.0);
+  auto flux = [&](std::uint32_t b) {
+    const glm::dvec3 f = volumes.flux_at(volumes.bounce_flux_record(cascade, b), 1.0);
     return std::max({f.x, f.y, f.z});
   };
   double so_far = 0.0;
   for (std::uint32_t b = 1; b <= gathered; ++b) so_far += flux(b);
   const double next = flux(gathered + 1), last = flux(gathered);
   if (!(next > 0.0) || !(last > 0.0)) return true;  // nothing reflects any more
-  const double r = next / last;
-  const double left = double(bounces - gathered);
-  const double rest = r < 1.0 ? next * (1.0 - std::pow(r, left)) / (1.0 - r) : next * left;
-  return rest < double(convergence) * so_far;
+  return geometric_sum(next, next / last, double(bounces - gathered)) < double(convergence) * so_far;
 }
 
 api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, const LpvSetup& lpv, bool rsm_ran,
@@ -72,8 +76,7 @@ api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, con
       for (std::uint32_t b = 2; b <= reflected; ++b)
         cs.bounce_flux.push_back(rgb(volumes.flux_at(volumes.bounce_flux_record(c, b), watts_per_unit)));
       if (bounces.tail) {
-        const glm::dvec3 from = bounces.gathered == 1 ? volumes.flux_at(volumes.grid_flux_record(c, 0), 1.0)
-                                                      : volumes.flux_at(volumes.bounce_flux_record(c, bounces.gathered), 1.0);
+        const glm::dvec3 from = volumes.flux_at(volumes.bounce_flux_record(c, bounces.gathered), 1.0);
         const glm::dvec3 to = volumes.flux_at(volumes.bounce_flux_record(c, reflected), 1.0);
         // As lpv_gather_tail.comp computes it, in float from the same sums.
         auto factor = [](double a, double b) { return double(gpu::lpv_bounce_tail_factor(float(a), float(b))); };

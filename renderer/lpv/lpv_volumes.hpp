@@ -69,11 +69,12 @@ struct LpvVolumes {
   std::uint32_t grid_flux_record(std::uint32_t cascade, std::uint32_t k) const {
     return cascade * records_per_cascade + k + 1;
   }
-  // The gather's bounce b >= 2: the flux its VPLs carry, which the surfaces reflected of bounce
-  // b - 1's light (b up to api::limits::max_bounces + 1: the reflection the bounces after the
-  // last gathered one are estimated from).
+  // The flux the gather's bounce b gathers from: for b = 1 the injected grid's, for b >= 2 that
+  // of its VPLs, which the surfaces reflected of bounce b - 1's light (b up to
+  // api::limits::max_bounces + 1: the reflection the bounces after the last gathered one are
+  // estimated from).
   std::uint32_t bounce_flux_record(std::uint32_t cascade, std::uint32_t b) const {
-    return cascade * records_per_cascade + iterations + 2 + (b - 2);
+    return b == 1 ? grid_flux_record(cascade, 0) : cascade * records_per_cascade + iterations + 2 + (b - 2);
   }
   // A flux from flux_stats, in watts, per channel: the sum of the record's slots (the buffer
   // must have been read back).

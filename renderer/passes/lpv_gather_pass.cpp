@@ -137,17 +137,14 @@ void LpvGatherPass::record_reflection(VkCommandBuffer cmd, std::uint32_t cascade
 
 void LpvGatherPass::record_tail(VkCommandBuffer cmd, std::uint32_t cascade, const GatherBounces& bounces,
                                 const vkx::Pipeline& measure, const LpvVolumes& volumes) const {
-  const std::uint32_t last = bounces.count;  // the last gathered bounce
+  const std::uint32_t last = bounces.run.gathered;
   measure.bind(cmd);
   measure.push(cmd, gpu::LpvGatherBouncePush{cascade, bounces.surfel_count, volumes.bounce_flux_record(cascade, last + 1)});
   vkCmdDispatch(cmd, vkx::group_count(bounces.surfel_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
   vkx::compute_barrier(cmd);
   tail_.bind(cmd);
-  // The first bounce was gathered from the injected VPLs' flux, a later one from the last
-  // reflection's.
-  const std::uint32_t gathered =
-      last == 1 ? volumes.grid_flux_record(cascade, 0) : volumes.bounce_flux_record(cascade, last);
-  tail_.push(cmd, gpu::LpvGatherTailPush{cascade, gathered, volumes.bounce_flux_record(cascade, last + 1)});
+  tail_.push(cmd, gpu::LpvGatherTailPush{cascade, volumes.bounce_flux_record(cascade, last),
+                                         volumes.bounce_flux_record(cascade, last + 1)});
   const glm::uvec3 d = volumes.dims;
   vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP),
                 vkx::group_count(d.z, gpu::LPV_GROUP));
@@ -166,8 +163,8 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
       .apply(device_.handle());
   const vkx::Pipeline& gather = variant(occlusion, params, volumes);
   const bool reflects = bounces.surfel_count > 0;  // else every later bounce is dark
-  const vkx::Pipeline* reflect = reflects && bounces.count > 1 ? &reflection(bounces, true, params, volumes) : nullptr;
-  const vkx::Pipeline* measure = reflects && bounces.tail ? &reflection(bounces, false, params, volumes) : nullptr;
+  const vkx::Pipeline* reflect = reflects && bounces.run.gathered > 1 ? &reflection(bounces, true, params, volumes) : nullptr;
+  const vkx::Pipeline* measure = reflects && bounces.run.tail ? &reflection(bounces, false, params, volumes) : nullptr;
   if (measure) write_tail(params, volumes);
 
   const std::uint32_t per_bounce = slabs(volumes);
@@ -182,8 +179,8 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
       vkx::compute_barrier(cmd);
     }
     gather.bind(cmd);
-    const bool last = bounce + 1 == bounces.count;
-    const std::uint32_t keep = !last || bounces.tail ? 1u : 0u;
+    const bool last = bounce + 1 == bounces.run.gathered;
+    const std::uint32_t keep = !last || bounces.run.tail ? 1u : 0u;
     gather.push(cmd, gpu::LpvGatherPush{cascade, slab * gpu::LPV_GROUP, run * gpu::LPV_GROUP, bounce, keep});
     vkCmdDispatch(cmd, vkx::group_count(d.x, gpu::LPV_GROUP), vkx::group_count(d.y, gpu::LPV_GROUP), run);
     vkx::compute_barrier(cmd);
@@ -196,6 +193,5 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
     if (last && measure) record_tail(cmd, cascade, bounces, *measure, volumes);
   }
 }
-
 
 }  // namespace renderer

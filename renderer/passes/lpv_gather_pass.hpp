@@ -14,10 +14,10 @@
 
 namespace renderer {
 
-// The bounces a gather runs (gathered_bounces), and what the later ones reflect from.
+// The bounces a gather runs (gathered_bounces; the tail: lpv_gather_tail.comp), and what the
+// later ones reflect from.
 struct GatherBounces {
-  std::uint32_t count = 1;  // gathered
-  bool tail = false;        // and those after the last estimated from it (lpv_gather_tail.comp)
+  GatheredBounces run;
   const vkx::Buffer* surfels = nullptr;  // GpuBlocker: the scene's surfels (bounces after the first)
   std::uint32_t surfel_count = 0;
   api::Injection injection = api::Injection::trilinear;  // how their VPLs are added, as the first's
@@ -36,7 +36,7 @@ class LpvGatherPass {
   // bounce s / slabs). A bounce's slab 0 first lists the lit injected cells (in volumes.grids,
   // which the gather does not otherwise use); its last slab is followed by the surfels'
   // reflection of its light into the injected sums, the next bounce's VPLs (or after the last,
-  // with bounces.tail, by the estimate of the rest).
+  // with bounces.run.tail, by the estimate of the rest).
   void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, bool occlusion,
               const GatherBounces& bounces, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
