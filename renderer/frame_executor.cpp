@@ -160,15 +160,16 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
       shadow_.record(cmd, frame.gpu, *frame.resources.atlas, frame.lights.shadow_views);
       break;
     case kRsm:
-      rsm_.record(cmd, frame.gpu, *frame.resources.rsm_maps, frame.resources.rsm_view_buffer, frame.resources.light_buffer);
+      rsm_.record(cmd, frame.gpu, *frame.resources.rsm_maps, frame.resources.rsm_view_buffer, frame.lpv.rsm_views,
+                  frame.resources.light_buffer);
       break;
     case kGBuffer:
       gbuffer_.record(cmd, frame.gpu, frame.draw_order, frame.resources.targets->camera, frame.resources.frame_uniforms);
       break;
     case kInject:
       if (cascade == 0 && !frame.plan.run[kRsm]) RsmPass::record_skipped(cmd, *frame.resources.rsm_maps);
-      inject_.record(cmd, cascade, frame.resources.lpv_uniforms, frame.plan.run[kRsm] ? &*frame.resources.rsm_maps : nullptr, vpls_per_view_side(lpv),
-                    frame.gpu, *frame.resources.volumes, lpv.injection);
+      inject_.record(cmd, cascade, frame.resources.lpv_uniforms, frame.plan.run[kRsm] ? &*frame.resources.rsm_maps : nullptr,
+                     frame.lpv.rsm_views, lpv, frame.lpv.cascades[cascade].cell_size, frame.gpu, *frame.resources.volumes);
       break;
     case kGeometryVolume: {
       if (cascade == 0) {  // the camera's surfels, drawn once for every cascade (timed with the first)
@@ -178,9 +179,9 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
           GBufferPass::record_unused(cmd, frame.resources.targets->surfels);
       }
       GeometrySources sources = geometry_sources(lpv, frame.plan.run[kRsm]);
-      sources.rsm_stride = frame.lpv.gpu.sizes.w;
       sources.bounces = frame.lpv.bounces;
-      geometry_.record(cmd, cascade, frame.resources.lpv_uniforms, *frame.resources.rsm_maps, frame.resources.targets->surfels, frame.gpu, sources, *frame.resources.volumes);
+      geometry_.record(cmd, cascade, frame.resources.lpv_uniforms, *frame.resources.rsm_maps, frame.lpv.rsm_views,
+                       frame.resources.targets->surfels, frame.gpu, sources, *frame.resources.volumes);
       break;
     }
     case kPropagate:

@@ -1,6 +1,11 @@
 #include "renderer/frame_plan.hpp"
 
+#include "api/counted.hpp"
+#include "renderer/gpu_types.hpp"
+
 #include <algorithm>
+#include <array>
+#include <functional>
 #include <cmath>
 #include <limits>
 
@@ -12,13 +17,10 @@ namespace {
 // 1% of the indirect light on the built-in scenes (docs/planner.md); once loses 6%.
 constexpr float kCrossings = 2.0f;
 
-// RSM texels per cell side, at the farthest point of the scene a light view sees. 2 gives
-// the same error against the path-traced reference (within 0.2% on the built-in scenes),
-// but fewer, brighter VPLs make the image jump when a light moves by a hair (a texel's
-// VPL switches surface): 0.86% for a 1e-4-cell move, over the 0.1% of the stability tests.
-// 4 keeps that bound, keeps every built-in default at the requested resolution and still
-// cuts narrow spots and small scenes (docs/planner.md).
-constexpr float kTexelsPerCell = 4.0f;
+// RSM texels per cell side, at the farthest point of the scene a light view sees
+// (gpu::LPV_VPLS_PER_CELL_SIDE says why 4). It keeps every built-in default at the requested
+// resolution and still cuts narrow spots and small scenes (docs/planner.md).
+constexpr float kTexelsPerCell = float(gpu::LPV_VPLS_PER_CELL_SIDE);
 
 float distance_to_box(glm::vec3 p, const scene::Bounds& b) {
   return glm::length(glm::max(glm::max(b.min - p, p - b.max), glm::vec3(0.0f)));
@@ -60,22 +62,37 @@ std::uint32_t iterations_needed(const CascadePlacement& cascade, const scene::Bo
   return std::min(requested, std::uint32_t(kCrossings * diameter));
 }
 
-std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const std::vector<api::Light>& lights,
-                                    const scene::Bounds& bounds, float cell_size, std::uint32_t requested) {
-  float needed = 1.0f;
+std::vector<std::uint32_t> rsm_view_resolutions(const std::vector<LightView>& views,
+                                                const std::vector<api::Light>& lights, const scene::Bounds& bounds,
+                                                float cell_size, std::uint32_t requested) {
+  const std::array<glm::vec3, 2> ends{bounds.min, bounds.max};
+  std::vector<std::uint32_t> resolutions;
   for (const LightView& view : views) {
     // A texel's side: 2 * half_extent / resolution, times the distance for a perspective view.
     float side = 2.0f * view.half_extent;
     if (!view.orthographic) {
+      // The farthest point of the bounds the view may see: no farther than the farthest corner,
+      // and no farther than the deepest corner along the view's axis allows inside its frustum
+      // (a point at depth t lies within t sqrt(1 + 2 half_extent^2) of the light). A cube face
+      // that looks at a near wall needs a fraction of the one that looks down a corridor.
       const glm::vec3 p = lights[view.light].position;
       const glm::vec3 farthest = glm::max(glm::abs(bounds.min - p), glm::abs(bounds.max - p));
-      side *= glm::length(farthest);
+      float depth = 0.0f;
+      for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 c(ends[corner & 1].x, ends[(corner >> 1) & 1].y, ends[corner >> 2].z);
+        depth = std::max(depth, glm::dot(c - p, view.axis));
+      }
+      const float in_frustum = depth * std::sqrt(1.0f + 2.0f * view.half_extent * view.half_extent);
+      side *= std::min(glm::length(farthest), in_frustum);
     }
-    needed = std::max(needed, side * kTexelsPerCell / cell_size);
+    const float needed = std::min(side * kTexelsPerCell / cell_size, float(requested));
+    // Rounded up to whole tiles of the injection's work groups, not to a power of two, which
+    // could nearly double it: the RSM's cost and the injection's follow its square.
+    constexpr std::uint32_t kStep = gpu::LPV_VPL_GROUP * gpu::LPV_INJECT_TILE;
+    const std::uint32_t steps = std::max(1u, std::uint32_t(std::ceil(needed / float(kStep))));
+    resolutions.push_back(std::min(steps * kStep, requested));
   }
-  std::uint32_t resolution = 1;
-  while (float(resolution) < needed && resolution < requested) resolution *= 2;
-  return std::min(resolution, requested);
+  return resolutions;
 }
 
 namespace {
@@ -347,15 +364,35 @@ std::string transfer_choice(const api::Lpv& resolved) {
   return "transfer " + api::to_string(resolved.transfer) + " (auto): " + cells + " are more than the gather's " + limit;
 }
 
+namespace {
+
+// "64" when every view has the same resolution, else "256 (2 light views), 64 (4)", the
+// largest first.
+std::string describe_view_resolutions(std::vector<std::uint32_t> resolutions) {
+  std::sort(resolutions.begin(), resolutions.end(), std::greater<>());
+  if (resolutions.front() == resolutions.back()) return std::to_string(resolutions.front());
+  std::string text;
+  for (std::size_t i = 0; i < resolutions.size();) {
+    std::size_t n = 1;
+    while (i + n < resolutions.size() && resolutions[i + n] == resolutions[i]) ++n;
+    text += (text.empty() ? "" : ", ") + std::to_string(resolutions[i]) + " (" +
+            (text.empty() ? api::counted(n, "light view") : std::to_string(n)) + ")";
+    i += n;
+  }
+  return text;
+}
+
+}  // namespace
+
 LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene::Scene& scene,
                  const LpvFrameInputs& frame) {
-  LpvPlan lpv{scene.bounds, request.lpv, {}, {}};
+  LpvPlan lpv{scene.bounds, request.lpv, {}, {}, {}};
   const std::vector<api::Light>& lights = frame.lights;
   const std::vector<LightView>& views = frame.views;
   // The cascades placed over the grid's bounds with the settings as they stand.
   auto fit = [&] {
-    LpvSetup setup = setup_lpv(lpv.settings, scene.bounds, lpv.grid_bounds, lights, views, frame.emitted_flux,
-                               frame.camera, frame.fov_y_deg, frame.image_height);
+    LpvSetup setup = setup_lpv(lpv.settings, lpv.rsm_view_resolutions, scene.bounds, lpv.grid_bounds, lights, views,
+                               frame.emitted_flux, frame.camera, frame.fov_y_deg, frame.image_height);
     // Without a geometry volume this frame (no occluders), propagation does not read one. The
     // gather's bounces reflect from the scene's surfels, not from the blockers' albedo.
     if (!plan.run[kGeometryVolume]) setup.occlusion = setup.bounces = false;
@@ -398,14 +435,18 @@ LpvPlan plan_lpv(FramePlan& plan, const api::RenderRequest& request, const scene
                              "surfaces reflect (stats.lpv.cascades[].bounce_tail)");
   lpv.setup = fit();
 
-  if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm]) {
-    const std::uint32_t rsm = rsm_resolution_needed(views, lights, lpv.grid_bounds, lpv.setup.cascades[0].cell_size,
-                                                    request.lpv.rsm_resolution);
-    if (rsm < request.lpv.rsm_resolution) {
-      plan.decisions.push_back("rsm " + std::to_string(rsm) + " of " + std::to_string(request.lpv.rsm_resolution) +
-                               " texels per side: four texels a cell on the farthest surface the lights see");
-      lpv.settings.rsm_resolution = rsm;
-      lpv.settings.vpl_downsample = std::min(lpv.settings.vpl_downsample, rsm);
+  if (api::plan_applies(request, api::PlanRule::rsm) && plan.run[kRsm] && !views.empty()) {
+    const std::uint32_t requested = request.lpv.rsm_resolution;
+    std::vector<std::uint32_t> needed =
+        rsm_view_resolutions(views, lights, lpv.grid_bounds, lpv.setup.cascades[0].cell_size, requested);
+    const auto [smallest, largest] = std::minmax_element(needed.begin(), needed.end());
+    if (*smallest < requested) {
+      plan.decisions.push_back("rsm " + describe_view_resolutions(needed) + " of " + std::to_string(requested) +
+                               " texels per side: four texels a cell on the farthest surface " +
+                               (*smallest == *largest ? "the lights see" : "each light view sees"));
+      lpv.settings.rsm_resolution = *largest;
+      lpv.settings.vpl_downsample = std::min(lpv.settings.vpl_downsample, *smallest);
+      lpv.rsm_view_resolutions = std::move(needed);
       lpv.setup = fit();
     }
   }

@@ -79,6 +79,9 @@ struct LpvFrameInputs {
 struct LpvPlan {
   scene::Bounds grid_bounds;
   api::Lpv settings;
+  // Each light view's RSM resolution, at most settings.rsm_resolution, the maps' side (empty:
+  // every view at that side).
+  std::vector<std::uint32_t> rsm_view_resolutions;
   LpvSetup setup;
   std::vector<std::uint32_t> iterations;  // per cascade
 };
@@ -125,11 +128,13 @@ void plan_shading(FramePlan& plan, api::View view, bool display_only);
 // has received all the light it can. At most `requested`.
 std::uint32_t iterations_needed(const CascadePlacement& cascade, const scene::Bounds& bounds, std::uint32_t requested);
 
-// The RSM resolution the light views need: VPLs are summed per cell, so a texel on the
-// farthest point of the scene a view sees need not be smaller than a quarter of a cell of
-// the finest cascade. A power of two, at most `requested`.
-std::uint32_t rsm_resolution_needed(const std::vector<LightView>& views, const std::vector<api::Light>& lights,
-                                    const scene::Bounds& bounds, float cell_size, std::uint32_t requested);
+// The RSM resolution each light view needs: VPLs are summed per cell, so a texel on the
+// farthest point of the scene the view may see need not be smaller than a quarter of a cell of
+// the finest cascade (gpu::LPV_VPLS_PER_CELL_SIDE). Whole tiles of the injection (multiples of
+// 32), each at most `requested`.
+std::vector<std::uint32_t> rsm_view_resolutions(const std::vector<LightView>& views,
+                                                const std::vector<api::Light>& lights, const scene::Bounds& bounds,
+                                                float cell_size, std::uint32_t requested);
 
 // What a shadow map's resolution is chosen from when the request leaves it out.
 struct ShadowSight {

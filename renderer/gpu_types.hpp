@@ -24,8 +24,9 @@ static_assert(sizeof(LpvGatherPush) == 20);
 static_assert(sizeof(LpvGatherBouncePush) == 12);
 static_assert(sizeof(LpvGatherTailPush) == 12);
 static_assert(sizeof(LpvInjectPush) == 8);
+static_assert(sizeof(LpvInjectRsmPush) == 20);
 static_assert(sizeof(LpvInjectEmittersPush) == 12);
-static_assert(sizeof(GeometryInjectPush) == 20);
+static_assert(sizeof(GeometryInjectPush) == 32);
 static_assert(sizeof(GeometryCornersPush) == 8);
 static_assert(sizeof(GeometryResolvePush) == 4);
 // splat_group_point (lpv_splat.glsl) tiles 8x8 work groups with 4x2 blocks.

@@ -80,9 +80,9 @@ void main() {
   vec3 albedo = vec3(0.0);
   if (push.source == LPV_GV_SOURCE_RSM) {
     // Every stride-th texel of the RSM, standing for stride^2 texels.
-    uint stride = lpv.sizes.w;
-    uint res = lpv.sizes.x;
-    ivec3 texel = ivec3(id.xy * stride + stride / 2u, id.z);
+    uint stride = push.rsm_stride;
+    uint res = push.rsm_side;
+    ivec3 texel = ivec3(id.xy * stride + stride / 2u, push.rsm_layer);
     if (texel.x < res && texel.y < res) {
       vec4 p = imageLoad(rsm_position, texel);
       vec4 n = imageLoad(rsm_normal, texel);

@@ -55,8 +55,11 @@ api::LpvStats lpv_stats(const LpvVolumes& volumes, const api::Lpv& settings, con
   const double watts_per_unit = 1.0 / double(lpv.gpu.scales.x);
   auto rgb = [](glm::dvec3 v) { return api::Rgb{v.x, v.y, v.z}; };
   api::LpvStats stats;
-  const std::uint64_t side = vpls_per_view_side(settings);
-  stats.vpl_count = (rsm_ran ? side * side * lpv.rsm_views.size() : 0) + emitters;
+  stats.vpl_count = emitters;
+  for (const gpu::GpuRsmView& view : lpv.rsm_views) {
+    const std::uint64_t side = vpls_per_view_side(view, settings);
+    stats.vpl_count += rsm_ran ? side * side : 0;
+  }
   stats.vpl_flux = rgb(volumes.flux_at(volumes.vpl_flux_record(0), watts_per_unit));
   stats.intensity = lpv.gpu.scales.z;
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
@@ -126,6 +129,13 @@ LpvSnapshot lpv_snapshot(const vkx::Device& device, const RsmMaps& rsm_maps, con
       vkx::transition(cmd, image, src, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     });
+    // A view drawn at a lower resolution than the maps' side leaves the rest of its layer as an
+    // earlier frame left it, which nothing reads: read back as empty texels (no surface).
+    for (std::uint32_t layer = 0; layer < d.layers && layer < lpv.rsm_views.size(); ++layer)
+      for (std::uint32_t y = 0; y < d.height; ++y)
+        for (std::uint32_t x = 0; x < d.width; ++x)
+          if (x >= lpv.rsm_views[layer].info.z || y >= lpv.rsm_views[layer].info.z)
+            (*copy.into)[(std::size_t(layer) * d.height + y) * d.width + x] = glm::vec4(0.0f);
   }
   auto read_back_volume = [&](const vkx::TexelBuffer& volume, std::size_t texels) {
     return read_back(texels, [&](VkCommandBuffer cmd, VkBuffer host) {

@@ -125,9 +125,10 @@ float flux_units_per_watt(double flux_bound) {
   return float(std::exp2(std::clamp(exponent, -100.0, 120.0)));
 }
 
-LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene::Bounds& grid_bounds,
-                   const std::vector<api::Light>& lights, const std::vector<LightView>& views, double emitted_flux,
-                   const CameraSetup& camera, float camera_fov_y_deg, std::uint32_t image_height) {
+LpvSetup setup_lpv(const api::Lpv& lpv, const std::vector<std::uint32_t>& view_resolutions, const scene::Bounds& bounds,
+                   const scene::Bounds& grid_bounds, const std::vector<api::Light>& lights,
+                   const std::vector<LightView>& views, double emitted_flux, const CameraSetup& camera,
+                   float camera_fov_y_deg, std::uint32_t image_height) {
   LpvSetup setup;
   setup.cascades = place_cascades(
       lpv, grid_bounds, camera.position + camera.forward * glm::length(grid_bounds.center() - camera.position));
@@ -139,8 +140,7 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene
   }
   setup.occlusion = lpv.occlusion;
   setup.bounces = lpv.occlusion && lpv.bounces > 1;
-  g.sizes = glm::uvec4(lpv.rsm_resolution, lpv.vpl_downsample, surfel_stride(image_height),
-                       surfel_stride(lpv.rsm_resolution));
+  g.sizes = glm::uvec4(lpv.rsm_resolution, lpv.vpl_downsample, surfel_stride(image_height), 0u);
   g.scales = glm::vec4(flux_units_per_watt(vpl_flux_bound(lights, bounds) + emitted_flux), kGeometryUnitsPerPotential,
                        lpv.intensity, lpv.injection_offset);
   const float pixel_footprint = 2.0f * std::tan(0.5f * glm::radians(camera_fov_y_deg)) / float(image_height);
@@ -149,11 +149,14 @@ LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene
   g.transfer = glm::vec4(factors.propagated, factors.injected, lpv.blocking == api::Blocking::projected ? 1.0f : 0.0f,
                          0.0f);
 
-  for (const LightView& view : views) {
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const LightView& view = views[i];
+    const std::uint32_t resolution = i < view_resolutions.size() ? view_resolutions[i] : lpv.rsm_resolution;
     gpu::GpuRsmView v{};
     v.view_proj = view.view_proj;
-    v.axis = glm::vec4(view.axis, 2.0f * view.half_extent / float(lpv.rsm_resolution));
-    v.info = glm::uvec4(view.light, view.orthographic ? gpu::RSM_VIEW_ORTHOGRAPHIC : gpu::RSM_VIEW_PERSPECTIVE, 0u, 0u);
+    v.axis = glm::vec4(view.axis, 2.0f * view.half_extent / float(resolution));
+    v.info = glm::uvec4(view.light, view.orthographic ? gpu::RSM_VIEW_ORTHOGRAPHIC : gpu::RSM_VIEW_PERSPECTIVE,
+                        resolution, surfel_stride(resolution));
     setup.rsm_views.push_back(v);
   }
   return setup;

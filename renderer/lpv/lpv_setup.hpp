@@ -81,15 +81,20 @@ struct LpvSetup {
 // image, an RSM) gives a surfel: about 128 rows of surfels from each.
 std::uint32_t surfel_stride(std::uint32_t rows);
 
-// VPLs per side of each light view: the RSM's texels, merged vpl_downsample^2 at a time.
-inline std::uint32_t vpls_per_view_side(const api::Lpv& lpv) { return lpv.rsm_resolution / lpv.vpl_downsample; }
+// VPLs per side of a light view (gpu::GpuRsmView::info.z texels a side): the RSM's texels,
+// merged vpl_downsample^2 at a time.
+inline std::uint32_t vpls_per_view_side(const gpu::GpuRsmView& view, const api::Lpv& lpv) {
+  return view.info.z / lpv.vpl_downsample;
+}
 
-// Everything the LPV passes of one frame need. `views` are the emitting lights' views;
+// Everything the LPV passes of one frame need. `views` are the emitting lights' views, drawn
+// into RSMs of `view_resolutions` texels a side (empty: lpv.rsm_resolution, the maps' side);
 // `emitted_flux` is the largest channel of the emissive surfaces' flux (W), injected too.
 // Fitted cascades cover `grid_bounds` (the scene's, or the part the planner chose); the
 // fixed-point range covers all the flux the lights send into `bounds`, the whole scene's.
-LpvSetup setup_lpv(const api::Lpv& lpv, const scene::Bounds& bounds, const scene::Bounds& grid_bounds,
-                   const std::vector<api::Light>& lights, const std::vector<LightView>& views, double emitted_flux,
-                   const CameraSetup& camera, float camera_fov_y_deg, std::uint32_t image_height);
+LpvSetup setup_lpv(const api::Lpv& lpv, const std::vector<std::uint32_t>& view_resolutions, const scene::Bounds& bounds,
+                   const scene::Bounds& grid_bounds, const std::vector<api::Light>& lights,
+                   const std::vector<LightView>& views, double emitted_flux, const CameraSetup& camera,
+                   float camera_fov_y_deg, std::uint32_t image_height);
 
 }  // namespace renderer

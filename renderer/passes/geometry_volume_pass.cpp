@@ -59,8 +59,9 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
 }
 
 void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params,
-                                const RsmMaps& maps, const GBuffer& camera, const GpuScene& scene,
-                                const GeometrySources& sources, const LpvVolumes& volumes) const {
+                                const RsmMaps& maps, const std::vector<gpu::GpuRsmView>& rsm_views,
+                                const GBuffer& camera, const GpuScene& scene, const GeometrySources& sources,
+                                const LpvVolumes& volumes) const {
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   const VkImageLayout general = VK_IMAGE_LAYOUT_GENERAL;
   const std::uint32_t trilinear = sources.injection == api::Injection::trilinear ? 1u : 0u;
@@ -104,19 +105,23 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   inject.bind(cmd);
   if (sources.rsm) {
-    inject.push(cmd, gpu::GeometryInjectPush{cascade, gpu::LPV_GV_SOURCE_RSM, sources.slot(gpu::LPV_GV_SOURCE_RSM), slots, 0});
-    const std::uint32_t side = vkx::group_count(maps.resolution, sources.rsm_stride);
-    vkCmdDispatch(cmd, vkx::group_count(side, gpu::LPV_VPL_GROUP), vkx::group_count(side, gpu::LPV_VPL_GROUP), maps.layers);
+    for (std::uint32_t layer = 0; layer < maps.layers && layer < rsm_views.size(); ++layer) {
+      const std::uint32_t texels = std::min(rsm_views[layer].info.z, maps.resolution), stride = rsm_views[layer].info.w;
+      inject.push(cmd, gpu::GeometryInjectPush{cascade, gpu::LPV_GV_SOURCE_RSM, sources.slot(gpu::LPV_GV_SOURCE_RSM), slots,
+                                               0, layer, texels, stride});
+      const std::uint32_t side = vkx::group_count(texels, stride);
+      vkCmdDispatch(cmd, vkx::group_count(side, gpu::LPV_VPL_GROUP), vkx::group_count(side, gpu::LPV_VPL_GROUP), 1);
+    }
   }
   if (sources.camera) {
     inject.push(cmd, gpu::GeometryInjectPush{cascade, gpu::LPV_GV_SOURCE_CAMERA,
-                                             sources.slot(gpu::LPV_GV_SOURCE_CAMERA), slots, 0});
+                                             sources.slot(gpu::LPV_GV_SOURCE_CAMERA), slots, 0, 0, 0, 0});
     vkCmdDispatch(cmd, vkx::group_count(camera.width, gpu::LPV_VPL_GROUP),
                   vkx::group_count(camera.height, gpu::LPV_VPL_GROUP), 1);
   }
   if (sources.scene && scene.blocker_count) {
     inject.push(cmd, gpu::GeometryInjectPush{cascade, gpu::LPV_GV_SOURCE_SCENE,
-                                             sources.slot(gpu::LPV_GV_SOURCE_SCENE), slots, scene.blocker_count});
+                                             sources.slot(gpu::LPV_GV_SOURCE_SCENE), slots, scene.blocker_count, 0, 0, 0});
     vkCmdDispatch(cmd, vkx::group_count(scene.blocker_count, gpu::LPV_BLOCKER_GROUP), 1, 1);
   }
   vkx::compute_barrier(cmd);

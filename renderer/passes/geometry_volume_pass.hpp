@@ -18,10 +18,9 @@
 namespace renderer {
 
 struct GeometrySources {
-  bool rsm = false;     // surfels of every rsm_stride-th RSM texel (each way)
+  bool rsm = false;     // surfels of every few RSM texels (each way: GpuRsmView::info.w)
   bool camera = false;  // surfels of every texel of the camera's surfel G-buffer
   bool scene = true;    // the scene's surfaces, cut into pieces (GpuScene::blockers)
-  std::uint32_t rsm_stride = 1;
   api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
   bool bounces = false;  // the blockers' albedo is splatted and resolved too (it serves bounces only)
 
@@ -40,7 +39,7 @@ struct GeometrySources {
 };
 
 // The sources and splatting a request asks for, the RSMs only where the frame draws them
-// (`rsm_drawn`); the renderer adds the RSM's stride and bounces.
+// (`rsm_drawn`); the renderer adds bounces.
 GeometrySources geometry_sources(const api::Lpv& lpv, bool rsm_drawn = true);
 
 // What the volume is made of, for the stats: "occluders: the scene's surfaces (19800 pieces)
@@ -51,9 +50,10 @@ class GeometryVolumePass {
  public:
   explicit GeometryVolumePass(const vkx::Device& device);
 
+  // `rsm_views`: the RSMs' light views, a layer each (their resolutions and surfel strides).
   void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps& maps,
-              const GBuffer& camera_surfels, const GpuScene& scene, const GeometrySources& sources,
-              const LpvVolumes& volumes) const;
+              const std::vector<gpu::GpuRsmView>& rsm_views, const GBuffer& camera_surfels, const GpuScene& scene,
+              const GeometrySources& sources, const LpvVolumes& volumes) const;
 
  private:
   const vkx::Device& device_;

@@ -1,6 +1,7 @@
 #include "renderer/passes/lpv_inject_pass.hpp"
 
 #include "renderer/gpu_types.hpp"
+#include "renderer/lpv/lpv_setup.hpp"
 #include "shaders/shared/lpv_inject_interface.h"
 #include "shaders/lpv_inject.comp.h"
 #include "shaders/lpv_inject_emitters.comp.h"
@@ -10,6 +11,20 @@
 
 namespace renderer {
 
+
+namespace {
+
+// Whether two VPLs of the view may lie close enough to merge (lpv_inject.comp): a 2 x 2 quad
+// once merged spans at most 1 / LPV_VPLS_PER_CELL_SIDE of a cell. An orthographic view's
+// texels are footprint apart on a surface facing it, and further on any other; a perspective
+// view's come as close as the surfaces come to its light.
+bool may_merge(const gpu::GpuRsmView& view, const api::Lpv& lpv, float cell_size) {
+  if (view.info.y != gpu::RSM_VIEW_ORTHOGRAPHIC) return true;
+  const float spacing = view.axis.w * float(lpv.vpl_downsample);
+  return 2.0f * spacing * float(gpu::LPV_VPLS_PER_CELL_SIDE) <= cell_size;
+}
+
+}  // namespace
 
 LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
@@ -22,7 +37,7 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
                                         {gpu::INJECT_RSM_FLUX, image},
                                         {gpu::INJECT_INJECTED, buffer},
                                         {gpu::INJECT_FLUX_STATS, buffer}},
-                                       sizeof(gpu::LpvInjectPush));
+                                       sizeof(gpu::LpvInjectRsmPush));
   emitters_layout_ = vkx::compute_layout({{gpu::INJECT_EMITTERS_LPV, uniform},
                                           {gpu::INJECT_EMITTERS_EMITTERS, buffer},
                                           {gpu::INJECT_EMITTERS_INJECTED, buffer},
@@ -41,9 +56,9 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
 }
 
 void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
-                           std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes,
-                           api::Injection injection) const {
-  const std::array<std::uint32_t, 1> trilinear{injection == api::Injection::trilinear ? 1u : 0u};
+                           const std::vector<gpu::GpuRsmView>& views, const api::Lpv& lpv, float cell_size,
+                           const GpuScene& scene, const LpvVolumes& volumes) const {
+  const std::array<std::uint32_t, 1> trilinear{lpv.injection == api::Injection::trilinear ? 1u : 0u};
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
@@ -65,9 +80,15 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
         .buffer(gpu::INJECT_FLUX_STATS, storage, volumes.flux_stats.handle())
         .apply(device_.handle());
     inject.bind(cmd);
-    inject.push(cmd, gpu::LpvInjectPush{cascade, volumes.vpl_flux_record(cascade)});
-    const std::uint32_t groups = vkx::group_count(vpls_per_side, gpu::LPV_VPL_GROUP);
-    vkCmdDispatch(cmd, groups, groups, maps->layers);
+    for (std::uint32_t layer = 0; layer < maps->layers && layer < views.size(); ++layer) {
+      const std::uint32_t vpls_per_side = vpls_per_view_side(views[layer], lpv);
+      const bool merge = may_merge(views[layer], lpv, cell_size);
+      inject.push(cmd, gpu::LpvInjectRsmPush{cascade, volumes.vpl_flux_record(cascade), layer, vpls_per_side, merge});
+      // An invocation a tile, or a VPL.
+      const std::uint32_t side = merge ? vkx::group_count(vpls_per_side, gpu::LPV_INJECT_TILE) : vpls_per_side;
+      const std::uint32_t groups = vkx::group_count(side, gpu::LPV_VPL_GROUP);
+      vkCmdDispatch(cmd, groups, groups, 1);
+    }
   }
   if (scene.emitter_count) {  // after the RSM's VPLs: both add to the same integer sums
     const vkx::Pipeline& emitters = emitters_.get(trilinear[0], [&] {

@@ -17,10 +17,11 @@ class LpvInjectPass {
   explicit LpvInjectPass(const vkx::Device& device);
 
   // `params` is the frame's gpu::GpuLpv; `maps` are the frame's RSMs, nullptr when no light
-  // drew any. The first cascade also clears the flux statistics.
+  // drew any, one layer per view of `views` (each its own resolution); `cell_size` the
+  // cascade's. The first cascade also clears the flux statistics.
   void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
-              std::uint32_t vpls_per_side, const GpuScene& scene, const LpvVolumes& volumes,
-              api::Injection injection) const;
+              const std::vector<gpu::GpuRsmView>& views, const api::Lpv& lpv, float cell_size, const GpuScene& scene,
+              const LpvVolumes& volumes) const;
 
  private:
   const vkx::Device& device_;

@@ -63,7 +63,7 @@ RsmPass::RsmPass(const vkx::Device& device, const TextureSetLayout& textures)
 }
 
 void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& maps, const vkx::Buffer& views,
-                     const vkx::Buffer& lights) const {
+                     const std::vector<gpu::GpuRsmView>& view_info, const vkx::Buffer& lights) const {
   for (MaterialVariant variant : scene.variants_in_use)  // before any is bound
     vkx::DescriptorWriter(pipelines_.get(rsm_variant(variant)).descriptor_set())
         .buffer(gpu::RSM_VIEWS, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, views.handle())
@@ -74,8 +74,10 @@ void RsmPass::record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& 
   for (std::uint32_t layer = 0; layer < maps.layers; ++layer) {
     const std::array<VkImageView, 3> views{maps.position.layer_view(layer), maps.normal.layer_view(layer),
                                            maps.flux.layer_view(layer)};
-    vkx::begin_cleared_rendering(device_, cmd, views, maps.depth.layer_view(layer),
-                                 {maps.resolution, maps.resolution}, false);
+    // The readers stay within the view's resolution: the rest of the layer is neither cleared
+    // nor drawn.
+    const std::uint32_t side = std::min(view_info.at(layer).info.z, maps.resolution);
+    vkx::begin_cleared_rendering(device_, cmd, views, maps.depth.layer_view(layer), {side, side}, false);
     scene.draw_all(
         cmd, [&](MaterialVariant variant) -> const vkx::Pipeline& { return pipelines_.get(rsm_variant(variant)); },
         [&](const scene::Draw& draw) { return DrawConstants{scene.draw_material(draw), layer}; });

@@ -12,10 +12,11 @@ class RsmPass {
  public:
   RsmPass(const vkx::Device& device, const TextureSetLayout& textures);
 
-  // Renders every view and leaves the maps in GENERAL layout for the compute passes.
-  // `views` holds gpu::GpuRsmView[maps.layers]; `lights` gpu::GpuLight[].
+  // Renders every view, each in the corner of its layer its resolution covers (`view_info`,
+  // as in `views`: GpuRsmView::info.z texels a side), and leaves the maps in GENERAL layout
+  // for the compute passes. `views` holds gpu::GpuRsmView[maps.layers]; `lights` gpu::GpuLight[].
   void record(VkCommandBuffer cmd, const GpuScene& scene, const RsmMaps& maps, const vkx::Buffer& views,
-              const vkx::Buffer& lights) const;
+              const std::vector<gpu::GpuRsmView>& view_info, const vkx::Buffer& lights) const;
   // When no light draws the maps but the LPV runs (emissive surfaces alone): the maps the
   // injection and geometry passes bind, made valid for them to bind (never read).
   static void record_skipped(VkCommandBuffer cmd, const RsmMaps& maps);

@@ -37,6 +37,9 @@ struct GeometryInjectPush {
   uint slot;           // the source's slot of corner sums
   uint slots;          // slots the frame uses
   uint blocker_count;  // the scene's pieces (LPV_GV_SOURCE_SCENE)
+  uint rsm_layer;      // LPV_GV_SOURCE_RSM: the light view's layer of the RSMs,
+  uint rsm_side;       // the texels a side it is drawn in (GpuRsmView::info.z)
+  uint rsm_stride;     // and every how many texels (each way) it gives a surfel (GpuRsmView::info.w)
 };
 
 struct GeometryCornersPush {

@@ -126,6 +126,15 @@ LPV_CONST LPV_MAX_CASCADES = 4u;
 LPV_CONST LPV_BLEND_CELLS = 2u;
 LPV_CONST LPV_GROUP = 4u;         // grid passes: work groups of 4 x 4 x 4 cells
 LPV_CONST LPV_GATHER_SOURCES_GROUP = 64u;  // lpv_gather_sources.comp: invocations of its one work group
+// VPLs per cell side, at least, where a light view sees the scene: the planner's RSM resolution
+// gives at least this many texels a cell at the farthest point a light view sees, and the
+// injection merges texels closer together than this (lpv_inject.comp). 2 gives the same error
+// against the path-traced reference (within 0.2% on the built-in scenes), but fewer, brighter
+// VPLs make the image jump when a light moves by a hair (a texel's VPL switches surface):
+// 0.86% for a 1e-4-cell move, over the 0.1% of the stability tests. 4 keeps that bound
+// (docs/planner.md).
+LPV_CONST LPV_VPLS_PER_CELL_SIDE = 4u;
+LPV_CONST LPV_INJECT_TILE = 4u;  // lpv_inject.comp: VPLs per side of an invocation's tile
 // Propagation: work groups of 8 x 8 invocations, each walking a column of cells along z: 8 on
 // a CPU device, 2 on a GPU (a specialization constant; LpvPropagatePass says why).
 LPV_CONST LPV_PROPAGATE_GROUP = 8u;
@@ -171,7 +180,7 @@ struct GpuLpvCascade {
 // Everything the LPV passes and the shading read about the volumes of one frame.
 struct GpuLpv {
   GpuLpvCascade cascades[LPV_MAX_CASCADES];
-  uvec4 sizes;    // x: RSM resolution; y: VPL downsample; z: camera surfel stride (pixels); w: RSM surfel stride (texels)
+  uvec4 sizes;    // x: the RSMs' side (each view's own: GpuRsmView::info.z); y: VPL downsample; z: camera surfel stride (pixels); w: 0
   vec4 scales;    // x: flux fixed-point units per W; y: geometry fixed-point units per unit potential;
                   // z: indirect intensity scale; w: injection offset (cells)
   vec4 camera;    // x: camera pixel footprint at unit depth (m); yzw: unused
@@ -185,7 +194,8 @@ struct GpuLpv {
 struct GpuRsmView {
   mat4 view_proj;
   vec4 axis;   // xyz: unit view direction; w: texel footprint: side at unit distance (perspective) or side (m)
-  uvec4 info;  // x: light index; y: RSM_VIEW_*
+  uvec4 info;  // x: light index; y: RSM_VIEW_*; z: texels a side it is drawn in (at most the maps'
+               // side); w: its geometry-volume surfels' stride (surfel_stride)
 };
 
 #ifdef __cplusplus

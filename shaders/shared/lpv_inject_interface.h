@@ -31,7 +31,16 @@ LPV_BINDING INJECT_RESOLVE_ACCUMULATED_G = 4u;
 LPV_BINDING INJECT_RESOLVE_ACCUMULATED_B = 5u;
 LPV_BINDING INJECT_RESOLVE_FLUX_STATS = 6u;
 
-// lpv_inject.comp and lpv_inject_resolve.comp
+// lpv_inject.comp: one light view's RSM layer
+struct LpvInjectRsmPush {
+  uint cascade;
+  uint stats_record;   // the flux statistics' record
+  uint layer;          // the view's layer of the RSMs
+  uint vpls_per_side;  // its VPLs a side: its texels a side (GpuRsmView::info.z) / vpl_downsample
+  uint merge;          // 1: tiles of LPV_INJECT_TILE^2 VPLs an invocation, merged where close; 0: one
+};
+
+// lpv_inject_resolve.comp
 struct LpvInjectPush {
   uint cascade;
   uint stats_record;  // the flux statistics' record

@@ -72,6 +72,12 @@ void splat_point(ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, floa
   }
 }
 
+// This invocation's place in its run's 4x2 block (splat_group_point).
+uvec2 splat_run_offset() {
+  uint lane = gl_LocalInvocationIndex % 8u;
+  return uvec2(lane % 4u, lane / 4u);
+}
+
 // The point (RSM texel, VPL or camera sample) of this invocation, for the callers' 8x8 work
 // groups: each run of 8 invocations (a lavapipe subgroup) takes a 4x2 block instead of a row
 // of 8. The block spans about half as many cells across, so its subgroup's box has fewer
@@ -79,8 +85,8 @@ void splat_point(ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, floa
 // one-off alternated runs, commit bcd1d7a). Which invocation takes which point changes
 // nothing else.
 uvec3 splat_group_point() {
-  uint run = gl_LocalInvocationIndex / 8u, lane = gl_LocalInvocationIndex % 8u;
-  uvec2 in_group = uvec2((run % 2u) * 4u + lane % 4u, (run / 2u) * 2u + lane / 4u);
+  uint run = gl_LocalInvocationIndex / 8u;
+  uvec2 in_group = uvec2((run % 2u) * 4u, (run / 2u) * 2u) + splat_run_offset();
   return uvec3(gl_WorkGroupID.xy * gl_WorkGroupSize.xy + in_group, gl_WorkGroupID.z);
 }
 

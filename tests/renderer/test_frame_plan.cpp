@@ -63,21 +63,40 @@ TEST(IterationsNeeded, TwiceTheL1DiameterOfTheSceneInCells) {
   EXPECT_EQ(renderer::iterations_needed(cascade, outside, 1000), 192u);
 }
 
-TEST(RsmResolutionNeeded, FourTexelsACellOnTheFarthestSurface) {
+TEST(RsmViewResolutions, FourTexelsACellOnTheFarthestSurfaceEachViewSees) {
+  using V = std::vector<std::uint32_t>;
   const scene::Bounds box{glm::vec3(-1.0f), glm::vec3(1.0f)};
   api::Light sun;
   sun.type = api::LightType::directional;
   // An orthographic view of half extent 2 m: 4 m / (0.25 m / 4) = 64 texels.
   const renderer::LightView ortho{glm::mat4(1.0f), glm::vec3(0, -1, 0), true, 2.0f, 0};
-  EXPECT_EQ(renderer::rsm_resolution_needed({ortho}, {sun}, box, 0.25f, 256), 64u);
-  EXPECT_EQ(renderer::rsm_resolution_needed({ortho}, {sun}, box, 0.25f, 32), 32u) << "never more than requested";
-  // A narrow spot 3 m above the box: the farthest corner is |(1, 4, 1)| away.
+  EXPECT_EQ(renderer::rsm_view_resolutions({ortho}, {sun}, box, 0.25f, 256), V{64});
+  EXPECT_EQ(renderer::rsm_view_resolutions({ortho}, {sun}, box, 0.25f, 48), V{48}) << "never more than requested";
+  // Whole tiles of the injection: 32 texels a side at a time (an ortho view of 2.5 m needs 80).
+  const renderer::LightView wider{glm::mat4(1.0f), glm::vec3(0, -1, 0), true, 2.5f, 0};
+  EXPECT_EQ(renderer::rsm_view_resolutions({wider}, {sun}, box, 0.25f, 4096), V{96});
+  // A narrow spot 3 m above the box: the farthest corner is |(1, 4, 1)| away, within its
+  // frustum at most 4 m deep: 4 sqrt(1 + 2 0.1^2) = 4.04 m.
   api::Light spot = spot_at({0, 3, 0}, {0, -1, 0});
   const renderer::LightView narrow{glm::mat4(1.0f), glm::vec3(0, -1, 0), false, 0.1f, 0};
-  const float side = 2.0f * 0.1f * std::sqrt(18.0f);  // one texel at resolution 1
-  const std::uint32_t expected = std::uint32_t(std::exp2(std::ceil(std::log2(side * 4.0f / 0.25f))));
-  EXPECT_EQ(renderer::rsm_resolution_needed({narrow}, {spot}, box, 0.25f, 4096), expected);
-  EXPECT_LT(expected, renderer::rsm_resolution_needed({ortho}, {sun}, box, 0.25f, 4096)) << "a narrow spot needs fewer";
+  const float texels = 2.0f * 0.1f * 4.0f * std::sqrt(1.02f) * 4.0f / 0.25f;
+  const auto expected = std::uint32_t(std::ceil(texels / 32.0f)) * 32u;
+  EXPECT_EQ(renderer::rsm_view_resolutions({narrow}, {spot}, box, 0.25f, 4096), V{expected});
+  EXPECT_LT(expected, renderer::rsm_view_resolutions({ortho}, {sun}, box, 0.25f, 4096)[0]) << "a narrow spot needs fewer";
+  // A point light's cube faces: the one looking down a long corridor needs the most, the one
+  // looking at the near end wall the least.
+  const scene::Bounds corridor{{-1.0f, -1.0f, -0.5f}, {1.0f, 1.0f, 20.0f}};
+  api::Light point = spot_at({0, 0, 0}, {0, 0, 1});
+  point.type = api::LightType::point;
+  const renderer::LightView down{glm::mat4(1.0f), glm::vec3(0, 0, 1), false, 1.0f, 0};
+  const renderer::LightView back{glm::mat4(1.0f), glm::vec3(0, 0, -1), false, 1.0f, 0};
+  const renderer::LightView side{glm::mat4(1.0f), glm::vec3(1, 0, 0), false, 1.0f, 0};
+  const V r = renderer::rsm_view_resolutions({down, back, side}, {point}, corridor, 0.25f, 4096);
+  const float far = std::sqrt(1.0f + 1.0f + 400.0f);  // the farthest corner
+  EXPECT_EQ(r[0], std::uint32_t(std::ceil(2.0f * far * 16.0f / 32.0f)) * 32u);
+  EXPECT_EQ(r[1], std::uint32_t(std::ceil(2.0f * 0.5f * std::sqrt(3.0f) * 16.0f / 32.0f)) * 32u);
+  EXPECT_EQ(r[2], std::uint32_t(std::ceil(2.0f * 1.0f * std::sqrt(3.0f) * 16.0f / 32.0f)) * 32u);
+  EXPECT_LT(r[1], r[0]);
 }
 
 TEST(ShadowResolution, ATexelAtMostHalfAPixelWhereTheCameraLooksWithinBoundsAndBudget) {

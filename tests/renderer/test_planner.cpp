@@ -311,6 +311,32 @@ TEST_F(Planner, ShadowMapsWithoutAResolutionGetTheFramesOwn) {
   EXPECT_EQ(decision(r.render(box, renderer::kReadbackDisplay), "shadow maps "), "") << "512 is enough";
 }
 
+// A point light at the end of a corridor: the cube face looking down it needs the requested
+// RSM, those looking at the walls and the end wall next to it a fraction of it (four texels a
+// cell on the farthest surface each face sees); the same light, sampled by fewer VPLs.
+TEST_F(Planner, EachLightViewGetsTheRsmItsFarthestSurfaceNeeds) {
+  api::RenderRequest a, e;
+  for (api::RenderRequest* r : {&a, &e}) {
+    r->scene = "corridor";
+    r->output.width = r->output.height = 64;
+    r->output.format = api::ImageFormat::pfm;
+  }
+  e.plan_keep = {api::PlanRule::rsm};
+  auto& r = gpu_test::renderer();
+  const auto automatic = r.render(a, renderer::kReadbackLinear);
+  const auto kept = r.render(e, renderer::kReadbackLinear);
+  EXPECT_EQ(decision(automatic, "rsm "),
+            "rsm 256 (1 light view), 128 (1), 64 (4) of 256 texels per side: four texels a cell on the farthest "
+            "surface each light view sees");
+  EXPECT_EQ(decision(kept, "rsm "), "");
+  ASSERT_TRUE(automatic.stats.lpv && kept.stats.lpv);
+  EXPECT_EQ(kept.stats.lpv->vpl_count, 6u * 256u * 256u);
+  EXPECT_EQ(automatic.stats.lpv->vpl_count, 256u * 256u + 128u * 128u + 4u * 64u * 64u);
+  // Measured 0.09% of the brightest pixel at most, total light 0.008% apart.
+  EXPECT_LT(largest_difference(automatic.linear, kept.linear), 0.02f * brightest(kept.linear));
+  EXPECT_NEAR(total(automatic.linear) / total(kept.linear), 1.0, 0.01);
+}
+
 TEST_F(Planner, ANarrowSpotGetsASmallerRsmWithinTolerance) {
   api::RenderRequest a = request(api::PlanMode::auto_), e = request(api::PlanMode::exact);
   for (api::RenderRequest* r : {&a, &e}) {
