@@ -120,6 +120,14 @@ std::string to_string(Blocking b) {
   throw std::invalid_argument("api::to_string: invalid Blocking");
 }
 
+std::string to_string(FarLines f) {
+  switch (f) {
+    case FarLines::per_cell: return "per_cell";
+    case FarLines::per_block: return "per_block";
+  }
+  throw std::invalid_argument("api::to_string: invalid FarLines");
+}
+
 bool plan_applies(const RenderRequest& request, PlanRule r) {
   return request.plan == PlanMode::auto_ &&
          std::find(request.plan_keep.begin(), request.plan_keep.end(), r) == request.plan_keep.end();

@@ -89,6 +89,10 @@ enum class Transfer { auto_, cosine, sharpened, gather };
 // also stops a quarter of the light grazing a surface and only 3/4 of the light meeting it
 // head-on.
 enum class Blocking { projected, sh_lobe };
+// How the gather traces the lines of sight to its far records (those gathered in blocks of 2^3
+// cells and more; docs/lpv.md, "The gather"): from every cell, or once for each 2 x 2 x 2 block
+// of cells and only the last faces from every cell (the lines part only there).
+enum class FarLines { per_cell, per_block };
 
 struct Output {
   std::uint32_t width = 512;
@@ -123,6 +127,7 @@ struct Lpv {
   Injection injection = Injection::trilinear;
   Transfer transfer = Transfer::auto_;
   Blocking blocking = Blocking::projected;
+  FarLines far_lines = FarLines::per_block;
   float injection_offset = 0.5f;       // VPLs move this many cells along their normal
   float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
   // With plan "auto": propagation stops once the remaining iterations would add less than
@@ -201,6 +206,7 @@ std::string to_string(PlanRule r);
 std::string to_string(Injection i);
 std::string to_string(Transfer t);
 std::string to_string(Blocking b);
+std::string to_string(FarLines f);
 
 // "bounces": a count, or "all" (all_bounces; request_json.hpp writes it, reader::read_bounces
 // reads it); in words, "1 bounce", "2 bounces", "all bounces".

@@ -11,6 +11,7 @@
 #include "renderer/lpv/lpv_readback.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
 #include "renderer/lpv/lpv_volumes.hpp"
+#include "renderer/passes/lpv_gather_pass.hpp"
 #include "renderer/scene_cache.hpp"
 #include "scene/builtin_scenes.hpp"
 
@@ -175,6 +176,13 @@ RenderResult Renderer::Impl::render(const scene::Scene& scene, const GpuScene& g
       plan, request, scene,
       {lights, light_setup.views, gpu.emitted_flux, camera, camera_request.fov_y_deg, out.height});
   request.lpv = lpv_plan.settings;
+  if (request.lpv.far_lines == api::FarLines::per_block && plan.run[kGather] && lpv_plan.setup.occlusion &&
+      !LpvGatherPass::shares_far_lines(device.info())) {
+    plan.decisions.push_back("lpv.far_lines per_cell: the device's subgroups of " +
+                             std::to_string(device.info().subgroup_size) +
+                             " lanes cannot share a 2x2x2 block's lines (per_block needs 8 or a multiple of 8)");
+    request.lpv.far_lines = api::FarLines::per_cell;
+  }
   plan_shading(plan, request.output.view, readback == kReadbackDisplay);
   if (plan.run[kGeometryVolume]) {  // why it runs: what it is made of
     plan.reason[kGeometryVolume] = describe_occluders(geometry_sources(request.lpv, plan.run[kRsm]), gpu.blocker_count);

@@ -6,6 +6,7 @@
 // (lpv_gather_line_start) through the faces of the geometry volume, into its irradiance cube. The sums run over levels and blocks in a fixed
 // order, so the result is deterministic.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_shuffle : require
 #include "shared/gpu_types.h"
 #include "shared/lpv_gather_interface.h"
 #include "shared/lpv_sh.h"
@@ -30,10 +31,17 @@ layout(push_constant) uniform Push { LpvGatherPush push; };
 
 // The geometry volume blocks the light (a frame with occlusion).
 layout(constant_id = 0) const bool OCCLUDED = true;
+// The lines to far records (above level 0) walked once for each 2 x 2 x 2 block of cells, to
+// its cell nearest the line's start, and per cell only the faces from there (lpv.far_lines
+// "per_block", lpv_gather.h: lpv_gather_shared_end); else every line to every cell.
+layout(constant_id = 1) const bool SHARED_FAR_LINES = false;
 
-// The fraction of light along w that gets from cell `from` to cell `to`: the faces the line
-// between their centres crosses, in the order it crosses them (lpv_gather_next_axis).
-float transmitted(ivec3 from, ivec3 to, vec3 w, uvec3 dims) {
+// The fraction of the light along w, on the line from cell `source` to cell `target`, that
+// crosses the faces between cell `from` and cell `to`: those the line between their centres
+// crosses, in the order it crosses them (lpv_gather_next_axis). Each face is met as the line
+// from source to target meets it (its blockers' plane must separate those ends). The whole
+// line: from = source, to = target.
+float transmitted(ivec3 from, ivec3 to, ivec3 source, ivec3 target, vec3 w, uvec3 dims) {
   ivec3 d = to - from;
   ivec3 span = abs(d);
   ivec3 step = ivec3(sign(vec3(d)));
@@ -49,23 +57,109 @@ float transmitted(ivec3 from, ivec3 to, vec3 w, uvec3 dims) {
     vec4 b = imageLoad(faces, lpv_face_texel(owner, axis, dims));
     vec3 spread = imageLoad(faces, lpv_face_spread_texel(owner, axis, dims)).xyz;
     vec3 face_centre = 0.5 * (vec3(cell) + vec3(ahead));
-    through *= lpv_gather_transmitted(b, spread, w, vec3(from) - face_centre, vec3(to) - face_centre);
+    through *= lpv_gather_transmitted(b, spread, w, vec3(source) - face_centre, vec3(target) - face_centre);
     cell = ahead;
     next[axis] += 2;
   }
   return max(through, 0.0);
 }
 
+// The cell of this invocation in its work group of 4 x 4 x 4. With shared far lines, each run
+// of 8 invocations (a lavapipe subgroup, or an eighth of a wider one) takes a 2 x 2 x 2 block,
+// whose cells gather the same far records (their windows above level 0 depend on the parent
+// and up: lpv_gather_window); else rows of 4 x 2 x 1, as the invocation IDs give.
+ivec3 group_cell() {
+  if (!SHARED_FAR_LINES) return ivec3(gl_LocalInvocationID);
+  uint i = gl_LocalInvocationIndex;
+  return 2 * ivec3((i >> 3u) & 1u, (i >> 4u) & 1u, (i >> 5u) & 1u) + ivec3(i & 1u, (i >> 1u) & 1u, (i >> 2u) & 1u);
+}
+
+// What a record sends to `cell` before the line's transmittance: per cube axis, per unit of
+// its flux / pi (lpv_gather_axis), their sum (0: it faces away), and the cell its line of
+// sight starts from (lpv_gather_line_start).
+struct Arrival {
+  float axes[6];
+  float any_light;
+  ivec3 start;
+};
+Arrival arrival(int record, ivec3 cell, uvec3 dims) {
+  vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
+  vec3 centre = imageLoad(sources, record + 2).xyz;
+  vec3 d = vec3(cell) - centre;
+  Arrival a;
+  a.any_light = 0.0;
+  for (int k = 0; k < 6; ++k) {
+    a.axes[k] = lpv_gather_axis(emitter, d, k);
+    a.any_light += a.axes[k];
+  }
+  a.start = lpv_gather_line_start(centre, emitter, lpv.scales.w, ivec3(dims));
+  return a;
+}
+
+// The record of a window's block, and whether it holds any light.
+int record_texel(ivec3 block, int first, ivec3 level_dims) {
+  return LPV_GATHER_RECORD_TEXELS * (first + block.x + level_dims.x * (block.y + level_dims.y * block.z));
+}
+vec3 record_flux(int record) { return imageLoad(sources, record + 1).xyz; }
+bool lit(vec3 flux_per_pi) { return flux_per_pi.x + flux_per_pi.y + flux_per_pi.z > 0.0; }
+
+// A level above 0 with shared far lines: its window's records 8 at a time, each lane of the
+// cell's 2 x 2 x 2 block walking one record's line to the block once (lpv_gather_shared_end),
+// the 8 cells taking every walk by shuffles and adding their own last faces.
+void gather_far_shared(LpvGatherWindow window, int level, ivec3 cell, bool inside, uvec3 dims, inout vec3 cube[6]) {
+  ivec3 level_dims = lpv_gather_level_dims(ivec3(dims), level);
+  int first = lpv_gather_level_first(ivec3(dims), level);
+  ivec3 n = window.hi - window.lo + 1;
+  int count = n.x * n.y * n.z;
+  uint lane = gl_SubgroupInvocationID & 7u, block_lanes = gl_SubgroupInvocationID & ~7u;
+  for (int base = 0; base < count; base += 8) {
+    float shared_through = 0.0;
+    int p = base + int(lane);
+    if (p < count) {
+      ivec3 block = window.lo + ivec3(p % n.x, (p / n.x) % n.y, p / (n.x * n.y));
+      int record = record_texel(block, first, level_dims);
+      if (!lpv_gather_gathered_finer(block, cell, level) && lit(record_flux(record))) {
+        vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
+        ivec3 start = lpv_gather_line_start(imageLoad(sources, record + 2).xyz, emitter, lpv.scales.w, ivec3(dims));
+        ivec3 end = lpv_gather_shared_end(start, cell, ivec3(dims));
+        shared_through = transmitted(start, end, start, end, normalize(vec3(end - start)), dims);
+      }
+    }
+    for (int j = 0; j < 8 && base + j < count; ++j) {
+      float through_end = subgroupShuffle(shared_through, block_lanes | uint(j));
+      ivec3 block = window.lo + ivec3((base + j) % n.x, ((base + j) / n.x) % n.y, (base + j) / (n.x * n.y));
+      int record = record_texel(block, first, level_dims);
+      vec3 flux_per_pi = record_flux(record);
+      if (inside && through_end > 0.0 && !lpv_gather_gathered_finer(block, cell, level) && lit(flux_per_pi)) {
+        Arrival a = arrival(record, cell, dims);
+        if (a.any_light > 0.0) {
+          ivec3 end = lpv_gather_shared_end(a.start, cell, ivec3(dims));
+          float through = through_end * transmitted(end, cell, a.start, cell, normalize(vec3(cell - a.start)), dims);
+          for (int k = 0; k < 6; ++k) cube[k] += through * flux_per_pi * a.axes[k];
+        }
+      }
+    }
+  }
+}
+
 void main() {
   GpuLpvCascade g = lpv.cascades[push.cascade];
   uvec3 dims = g.dims.xyz;
-  ivec3 cell = ivec3(gl_GlobalInvocationID) + ivec3(0, 0, int(push.first_layer));
-  if (any(greaterThanEqual(cell, ivec3(dims))) || cell.z >= int(push.first_layer + push.layers)) return;
+  ivec3 cell = ivec3(gl_WorkGroupID) * int(LPV_GROUP) + group_cell() + ivec3(0, 0, int(push.first_layer));
+  bool inside = all(lessThan(cell, ivec3(dims))) && cell.z < int(push.first_layer + push.layers);
+  // With shared far lines every lane of a block takes part in its shuffles: one past the grid's
+  // end walks lines for the others and stores nothing.
+  if (!inside && !(SHARED_FAR_LINES && OCCLUDED)) return;
   vec3 cube[6] = vec3[6](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
   bool last = false;
   for (int level = 0; !last; ++level) {
     LpvGatherWindow window = lpv_gather_window(cell, level, ivec3(dims));
     last = window.last;
+    if (SHARED_FAR_LINES && OCCLUDED && level > 0) {
+      gather_far_shared(window, level, cell, inside, dims, cube);
+      continue;
+    }
+    if (!inside) continue;
     ivec3 level_dims = lpv_gather_level_dims(ivec3(dims), level);
     int first = lpv_gather_level_first(ivec3(dims), level);
     for (int z = window.lo.z; z <= window.hi.z; ++z)
@@ -73,9 +167,9 @@ void main() {
         for (int x = window.lo.x; x <= window.hi.x; ++x) {
           ivec3 block = ivec3(x, y, z);
           if (lpv_gather_gathered_finer(block, cell, level)) continue;
-          int record = LPV_GATHER_RECORD_TEXELS * (first + x + level_dims.x * (y + level_dims.y * z));
-          vec3 flux_per_pi = imageLoad(sources, record + 1).xyz;
-          if (!(flux_per_pi.x + flux_per_pi.y + flux_per_pi.z > 0.0)) continue;  // no light there
+          int record = record_texel(block, first, level_dims);
+          vec3 flux_per_pi = record_flux(record);
+          if (!lit(flux_per_pi)) continue;  // no light there
           if (level == 0 && block == cell) {
             // Its own light, whose VPLs lie within the cell: read from its SH.
             int here = int(lpv_cell_index(uvec3(cell), dims));
@@ -87,22 +181,15 @@ void main() {
               cube[a] += vec3(lpv_gather_own_cell(sh[0], a), lpv_gather_own_cell(sh[1], a), lpv_gather_own_cell(sh[2], a));
             continue;
           }
-          vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
-          vec3 centre = imageLoad(sources, record + 2).xyz;
-          vec3 d = vec3(cell) - centre;
-          float axes[6];
-          float any_light = 0.0;
-          for (int a = 0; a < 6; ++a) {
-            axes[a] = lpv_gather_axis(emitter, d, a);
-            any_light += axes[a];
-          }
-          if (!(any_light > 0.0)) continue;  // it faces away: no need to trace the line
-          ivec3 start = lpv_gather_line_start(centre, emitter, lpv.scales.w, ivec3(dims));
-          float through = OCCLUDED ? transmitted(start, cell, normalize(vec3(cell - start)), dims) : 1.0;
+          Arrival a = arrival(record, cell, dims);
+          if (!(a.any_light > 0.0)) continue;  // it faces away: no need to trace the line
+          float through =
+              OCCLUDED ? transmitted(a.start, cell, a.start, cell, normalize(vec3(cell - a.start)), dims) : 1.0;
           if (!(through > 0.0)) continue;
-          for (int a = 0; a < 6; ++a) cube[a] += through * flux_per_pi * axes[a];
+          for (int k = 0; k < 6; ++k) cube[k] += through * flux_per_pi * a.axes[k];
         }
   }
+  if (!inside) return;
   // Two texels a cell and channel: (+x, -x, +y, -y) and (+z, -z, 0, 0).
   int first = 2 * lpv_accumulated_texel(cell, push.cascade, dims);
   vec4 texels[6] = vec4[6](vec4(cube[0].r, cube[1].r, cube[2].r, cube[3].r), vec4(cube[4].r, cube[5].r, 0.0, 0.0),

@@ -289,6 +289,7 @@ void Device::create_device() {
   VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
   VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
   vkGetPhysicalDeviceProperties2(physical_, &properties);
+  info_.subgroup_size = subgroup.subgroupSize;
   // Subgroup shuffles sum the splats of a subgroup before its atomics (lpv_splat.glsl), and
   // share the cells of the indirect light's lookup between pixels (lpv_irradiance.glsl, in the
   // compute shading and the forward pass's fragment shader).

@@ -29,6 +29,7 @@ struct DeviceInfo {
   // lavapipe before Mesa 25 runs both sides under a lane mask (measured on 22.3, docs/lpv.md
   // "The driver"), so a shader's shortcut behind such a branch costs there instead of paying.
   bool uniform_branches = true;
+  std::uint32_t subgroup_size = 0;  // lanes of a compute subgroup (VkPhysicalDeviceSubgroupProperties)
 };
 
 // DeviceInfo::uniform_branches for a driver: false for lavapipe before Mesa 25 (measured on

@@ -27,6 +27,11 @@ class LpvGatherPass {
  public:
   explicit LpvGatherPass(const vkx::Device& device);
 
+  // Whether the device can walk the far lines once a 2 x 2 x 2 block (api::FarLines::per_block):
+  // the block's 8 cells share them by subgroup shuffles, so its subgroups must hold whole
+  // blocks (8 lanes or a multiple: lavapipe's 8 on AVX2, GPUs' 16 to 64; not lavapipe's 4).
+  static bool shares_far_lines(const vkx::DeviceInfo& device) { return device.subgroup_size % 8 == 0; }
+
   // Slabs of cells along z (gpu::LPV_GROUP layers each) a bounce of the cascade's gather is
   // recorded in: a render can be stopped between them.
   static std::uint32_t slabs(const LpvVolumes& volumes);
@@ -37,12 +42,16 @@ class LpvGatherPass {
   // which the gather does not otherwise use); its last slab is followed by the surfels'
   // reflection of its light into the injected sums, the next bounce's VPLs (or after the last,
   // with bounces.run.tail, by the estimate of the rest).
+  // `far_lines`: how the lines to the far records are traced (api::FarLines).
   void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, bool occlusion,
-              const GatherBounces& bounces, const vkx::Buffer& params, const LpvVolumes& volumes) const;
+              api::FarLines far_lines, const GatherBounces& bounces, const vkx::Buffer& params,
+              const LpvVolumes& volumes) const;
 
  private:
-  // The pipeline with or without blocking, its descriptor set written for this recording.
-  const vkx::Pipeline& variant(bool occlusion, const vkx::Buffer& params, const LpvVolumes& volumes) const;
+  // The pipeline with or without blocking, its far lines traced per cell or per block, its
+  // descriptor set written for this recording.
+  const vkx::Pipeline& variant(bool occlusion, api::FarLines far_lines, const vkx::Buffer& params,
+                               const LpvVolumes& volumes) const;
 
   // lpv_gather_bounce.comp for these bounces' injection, splatting its VPLs or only summing
   // their flux, its descriptor set written.

@@ -144,6 +144,16 @@ LPV_FUNC int lpv_gather_next_axis(ivec3 next, ivec3 span) {
   return lpv_gather_crosses_first(next.y, span.y, next.z, span.z) ? 1 : 2;
 }
 
+// Shared far lines (lpv.far_lines "per_block"): the line from a far record's start to a cell
+// is walked to the cell of the cell's 2 x 2 x 2 block (aligned, cut by the grid's end) nearest
+// the start, once for the block, then per cell over the faces between there and the cell, each
+// met as the line from the start to the cell meets it. The 8 cells' lines to a far source (at
+// least two cells from the block) part only in their last faces.
+LPV_FUNC ivec3 lpv_gather_shared_end(ivec3 start, ivec3 cell, ivec3 dims) {
+  const ivec3 lo = (cell >> 1) << 1;
+  return clamp(start, lo, min(lo + ivec3(1), dims - ivec3(1)));
+}
+
 // A cell's own injected light onto a surface facing cube axis a: its SH against the cosine
 // lobe, made nowhere negative first, as the propagated grids are read (lpv_irradiance.glsl).
 // Its VPLs lie within the cell, where no direction to them is defined.

@@ -201,7 +201,7 @@ TEST(ParseRequest, ReadsEveryField) {
     "shadows": {"enabled": false, "resolution": 2048},
     "lpv": {"enabled": false, "grid": [16, 8, 4], "cascades": 3, "iterations": 0, "rsm": 64, "vpl_downsample": 4,
             "occlusion": false, "occlusion_sources": ["camera", "scene"], "bounces": 2, "injection": "nearest",
-            "injection_offset": 0.25, "transfer": "cosine", "blocking": "sh_lobe", "intensity": 2.5,
+            "injection_offset": 0.25, "transfer": "cosine", "far_lines": "per_cell", "blocking": "sh_lobe", "intensity": 2.5,
             "origin": [-1, 0, -1], "extent": 2},
     "repeat": 10
   })");
@@ -256,6 +256,7 @@ TEST(ParseRequest, ReadsEveryField) {
   EXPECT_EQ(r.lpv.injection_offset, 0.25f);
   EXPECT_EQ(r.lpv.transfer, api::Transfer::cosine);
   EXPECT_EQ(r.lpv.blocking, api::Blocking::sh_lobe);
+  EXPECT_EQ(r.lpv.far_lines, api::FarLines::per_cell);
   EXPECT_EQ(r.lpv.intensity, 2.5f);
   EXPECT_EQ(r.lpv.origin, glm::vec3(-1, 0, -1));
   EXPECT_EQ(r.lpv.extent, 2.0f);
@@ -532,6 +533,7 @@ std::vector<BadRequest> bad_requests() {
       {R"({"lpv": {"transfer": "gather", "grid": 25}})", "lpv.grid"},
       {R"({"lpv": {"grid": [24, 24, 25], "transfer": "gather"}})", "lpv.grid"},
       {R"({"lpv": {"blocking": "two_sided"}})", "lpv.blocking"},
+      {R"({"lpv": {"far_lines": "per_line"}})", "lpv.far_lines"},
       {R"({"lpv": {"injection": "bilinear"}})", "lpv.injection"},
       {R"({"lpv": {"injection_offset": 2.5}})", "lpv.injection_offset"},
       {R"({"lpv": {"intensity": -1}})", "lpv.intensity"},

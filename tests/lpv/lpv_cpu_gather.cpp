@@ -13,10 +13,12 @@ namespace {
 
 namespace g = gpu_double;
 
-// The fraction of light along w that gets from cell `from` to cell `to` (lpv_gather.comp's
-// `transmitted`): the faces the line between their centres crosses, in order.
+// The fraction of the light along w, on the line from cell `source` to cell `target`, that
+// crosses the faces between cell `from` and cell `to` (lpv_gather.comp's `transmitted`): those
+// the line between their centres crosses, in order, each met as the line from source to
+// target meets it.
 double transmitted(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, glm::ivec3 from, glm::ivec3 to,
-                   glm::dvec3 w) {
+                   glm::ivec3 source, glm::ivec3 target, glm::dvec3 w) {
   const glm::ivec3 d = to - from;
   const glm::ivec3 span = glm::abs(d);
   glm::ivec3 next(1);
@@ -29,12 +31,24 @@ double transmitted(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces
     const glm::ivec3 owner = d[axis] > 0 ? cell : ahead;
     const std::size_t face = grid.index(owner) * 3 + std::size_t(axis);
     const glm::dvec3 face_centre = 0.5 * (glm::dvec3(cell) + glm::dvec3(ahead));
-    through *= g::lpv_gather_transmitted(faces.sh[face], faces.spread[face], w, glm::dvec3(from) - face_centre,
-                                         glm::dvec3(to) - face_centre);
+    through *= g::lpv_gather_transmitted(faces.sh[face], faces.spread[face], w, glm::dvec3(source) - face_centre,
+                                         glm::dvec3(target) - face_centre);
     cell = ahead;
     next[axis] += 2;
   }
   return std::max(through, 0.0);
+}
+
+// The line from a record's start to a cell: walked whole, or for a far record with shared far
+// lines to the cell's block (lpv_gather_shared_end) and from there to the cell.
+double line_through(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, glm::ivec3 start, glm::ivec3 cell,
+                    bool shared) {
+  const glm::dvec3 w = glm::normalize(glm::dvec3(cell - start));
+  if (!shared) return transmitted(grid, faces, start, cell, start, cell, w);
+  const glm::ivec3 end = g::lpv_gather_shared_end(start, cell, grid.dims);
+  const double to_block =
+      end == start ? 1.0 : transmitted(grid, faces, start, end, start, end, glm::normalize(glm::dvec3(end - start)));
+  return to_block * transmitted(grid, faces, end, cell, start, cell, w);
 }
 
 // A record of the pyramid of sources (lpv_gather_sources.comp's three texels).
@@ -89,7 +103,7 @@ std::vector<Record> pyramid(const GridD& injected, double injection, double offs
 }  // namespace
 
 std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection,
-                           double offset) {
+                           double offset, api::FarLines far_lines) {
   const glm::ivec3 dims = injected.dims;
   const std::vector<Record> records = pyramid(injected, injection, offset);
   std::vector<double> cubes(injected.sh.size() * 6, 0.0);
@@ -123,8 +137,8 @@ std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::d
                 for (int a = 0; a < 6; ++a) any_light += axes[a] = g::lpv_gather_axis(emitter, d, a);
                 if (!(any_light > 0.0)) continue;
                 const glm::ivec3 start = g::lpv_gather_line_start(r.centre, emitter, offset, dims);
-                const double through =
-                    faces.empty() ? 1.0 : transmitted(injected, faces, start, cell, glm::normalize(glm::dvec3(cell - start)));
+                const bool shared = far_lines == api::FarLines::per_block && level > 0;
+                const double through = faces.empty() ? 1.0 : line_through(injected, faces, start, cell, shared);
                 if (!(through > 0.0)) continue;
                 for (int c = 0; c < 3; ++c)
                   for (int a = 0; a < 6; ++a) cube[c * 6 + a] += through * r.flux[c] * axes[a];

@@ -8,6 +8,7 @@
 #include "renderer/gpu_types.hpp"
 #include "renderer/lpv/blocker_surfels.hpp"
 #include "renderer/lpv/lpv_setup.hpp"
+#include "renderer/passes/lpv_gather_pass.hpp"
 #include "scene/builtin_scenes.hpp"
 
 #include <algorithm>
@@ -280,17 +281,19 @@ TEST_F(Lpv, OccludedPropagationMatchesTheDoublePrecisionReference) {
 // float rounding over sums of up to 1728 sources.
 TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
   std::map<std::uint32_t, double> open_total;  // by grid width
-  for (const bool occlusion : {false, true}) {
+  for (const auto& [occlusion, far_lines] : {std::pair{false, api::FarLines::per_cell}, {true, api::FarLines::per_cell},
+                                             {true, api::FarLines::per_block}}) {
     // 5 x 1 x 1: a grid one cell thick, whose gathering cells stop climbing at different levels.
     for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(12, 9, 7), glm::uvec3(5, 1, 1)}) {
-      SCOPED_TRACE(std::string(occlusion ? "occlusion, " : "no occlusion, ") + std::to_string(dims.x) + "x" +
-                   std::to_string(dims.y) + "x" + std::to_string(dims.z));
+      SCOPED_TRACE(std::string(occlusion ? "occlusion, " : "no occlusion, ") + api::to_string(far_lines) + ", " +
+                   std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z));
       api::RenderRequest request = small_grid_request(0);
       request.lpv.grid = dims;
       request.lpv.occlusion = occlusion;
       request.plan_keep = {api::PlanRule::grid};  // the gather's grid as the propagation's (not reshaped)
       const auto injected = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
       request.lpv.transfer = api::Transfer::gather;
+      request.lpv.far_lines = far_lines;
       const auto gathered = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
       lpv_ref::BasicFaceBlocking<glm::dvec4> faces;
       if (occlusion) {
@@ -300,7 +303,8 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
       }
       const std::vector<double> exact =
           lpv_ref::gather(grid_of(injected.lpv.cascades.at(0)), faces,
-                          renderer::transfer_factors(api::Transfer::gather).injected, request.lpv.injection_offset);
+                          renderer::transfer_factors(api::Transfer::gather).injected, request.lpv.injection_offset,
+                          far_lines);
       const std::vector<glm::vec4>& texels = gathered.lpv.cascades.at(0).accumulated;  // 2 a cell and channel
       ASSERT_EQ(texels.size() * 3, exact.size());
       double diff = 0.0, scale = 0.0, lit = 0.0, total = 0.0;
@@ -311,8 +315,8 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
         scale = std::max(scale, std::abs(exact[i]));
         lit += exact[i] > 0.0;
       }
-      std::printf("gather, %s: GPU (float) against double: %.2e of the largest value (%.0f of %zu values lit)\n",
-                  occlusion ? "occluded" : "open", diff / scale, lit, exact.size());
+      std::printf("gather, %s, far lines %s: GPU (float) against double: %.2e of the largest value (%.0f of %zu values lit)\n",
+                  occlusion ? "occluded" : "open", api::to_string(far_lines).c_str(), diff / scale, lit, exact.size());
       EXPECT_GT(lit, 0.5 * double(exact.size())) << "the gather lights most cells";
       if (occlusion && dims.y > 1) {  // (the grid one cell thick is checked for agreement alone)
         EXPECT_LT(total, 0.95 * open_total[dims.x]) << "the geometry volume blocks some light";
@@ -322,6 +326,25 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
       EXPECT_LT(diff / scale, 2e-5);
     }
   }
+}
+
+// Shared far lines need subgroups of whole 2 x 2 x 2 blocks; lavapipe's (8 lanes on AVX2)
+// and GPUs' (16 to 64) are, a 4-lane one is not, and a frame there runs its lines per cell.
+TEST_F(Lpv, FarLinesAreSharedOnlyWhereSubgroupsHoldWholeBlocks) {
+  vkx::DeviceInfo device;
+  for (const std::uint32_t lanes : {8u, 16u, 32u, 64u}) {
+    device.subgroup_size = lanes;
+    EXPECT_TRUE(renderer::LpvGatherPass::shares_far_lines(device)) << lanes;
+  }
+  device.subgroup_size = 4;
+  EXPECT_FALSE(renderer::LpvGatherPass::shares_far_lines(device));
+  const bool here = renderer::LpvGatherPass::shares_far_lines(gpu_test::device().info());
+  api::RenderRequest request = lpv_request("cornell-box");
+  request.lpv.transfer = api::Transfer::gather;
+  const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear);
+  bool said = false;
+  for (const std::string& d : result.stats.decisions) said = said || d.starts_with("lpv.far_lines per_cell");
+  EXPECT_EQ(said, !here) << "the plan says so where the device runs the lines per cell";
 }
 
 // The gather sums its sources in one fixed order: the same request gives the same bits.
