@@ -128,6 +128,14 @@ std::string to_string(FarLines f) {
   throw std::invalid_argument("api::to_string: invalid FarLines");
 }
 
+std::string to_string(LineBlocking b) {
+  switch (b) {
+    case LineBlocking::paired: return "paired";
+    case LineBlocking::multiplied: return "multiplied";
+  }
+  throw std::invalid_argument("api::to_string: invalid LineBlocking");
+}
+
 bool plan_applies(const RenderRequest& request, PlanRule r) {
   return request.plan == PlanMode::auto_ &&
          std::find(request.plan_keep.begin(), request.plan_keep.end(), r) == request.plan_keep.end();

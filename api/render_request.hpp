@@ -93,6 +93,12 @@ enum class Blocking { projected, sh_lobe };
 // cells and more; docs/lpv.md, "The gather"): from every cell, or once for each 2 x 2 x 2 block
 // of cells and only the last faces from every cell (the lines part only there).
 enum class FarLines { per_cell, per_block };
+// How the gather's lines of sight meet the geometry volume's faces (docs/lpv.md, "Blocking along
+// a line"): each face stopping what the blockers facing across it cover, the two faces either
+// side of a wall taken together, so that a wall a line crosses stops what it covers wherever it
+// lies in its cell ("paired"); or each face's projected blocking, multiplied face by face, which
+// lets up to a quarter of the light through a wall in the middle of a cell ("multiplied").
+enum class LineBlocking { paired, multiplied };
 
 struct Output {
   std::uint32_t width = 512;
@@ -128,6 +134,7 @@ struct Lpv {
   Transfer transfer = Transfer::auto_;
   Blocking blocking = Blocking::projected;
   FarLines far_lines = FarLines::per_block;
+  LineBlocking line_blocking = LineBlocking::paired;
   float injection_offset = 0.5f;       // VPLs move this many cells along their normal
   float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
   // With plan "auto": propagation stops once the remaining iterations would add less than
@@ -207,6 +214,7 @@ std::string to_string(Injection i);
 std::string to_string(Transfer t);
 std::string to_string(Blocking b);
 std::string to_string(FarLines f);
+std::string to_string(LineBlocking b);
 
 // "bounces": a count, or "all" (all_bounces; request_json.hpp writes it, reader::read_bounces
 // reads it); in words, "1 bounce", "2 bounces", "all bounces".

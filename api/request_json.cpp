@@ -94,10 +94,10 @@ constexpr auto light_edit_keys = [] {
 }();
 constexpr std::array<Keys, 6> output_keys{"width", "height", "format", "view", "exposure", "tonemap"};
 constexpr std::array<Keys, 2> shadows_keys{"enabled", "resolution"};
-constexpr std::array<Keys, 18> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
+constexpr std::array<Keys, 19> lpv_keys{"enabled",   "grid",      "cascades",         "iterations", "rsm",
                                         "vpl_downsample", "occlusion", "occlusion_sources", "blocking", "bounces",
-                                        "injection", "injection_offset", "transfer", "far_lines", "intensity",
-                                        "convergence", "origin", "extent"};
+                                        "injection", "injection_offset", "transfer", "far_lines", "line_blocking",
+                                        "intensity", "convergence", "origin", "extent"};
 constexpr std::array injections{Injection::trilinear, Injection::nearest};
 constexpr std::string_view occlusion_source_rsm = "rsm";
 constexpr std::string_view occlusion_source_camera = "camera";
@@ -292,6 +292,8 @@ Lpv read_lpv(const Field& f) {
   if (auto v = obj.get("bounces")) lpv.bounces = read_bounces(*v);
   if (auto v = obj.get("injection")) lpv.injection = as_enum(*v, injections);
   if (auto v = obj.get("far_lines")) lpv.far_lines = as_enum(*v, std::array{FarLines::per_cell, FarLines::per_block});
+  if (auto v = obj.get("line_blocking"))
+    lpv.line_blocking = as_enum(*v, std::array{LineBlocking::paired, LineBlocking::multiplied});
   if (auto v = obj.get("transfer")) lpv.transfer = read_transfer(*v);
   if (auto v = obj.get("injection_offset")) lpv.injection_offset = as_float(*v, 0.0f, limits::max_injection_offset);
   if (auto v = obj.get("intensity")) lpv.intensity = as_float(*v, 0.0f, limits::max_lpv_intensity);
@@ -377,6 +379,7 @@ json lpv_json(const Lpv& lpv) {
             {"injection_offset", shortest(lpv.injection_offset)},
             {"transfer", to_string(lpv.transfer)},
             {"far_lines", to_string(lpv.far_lines)},
+            {"line_blocking", to_string(lpv.line_blocking)},
             {"intensity", shortest(lpv.intensity)},
             {"convergence", shortest(lpv.convergence)}};
   if (lpv.origin) j["origin"] = vector_json(*lpv.origin);

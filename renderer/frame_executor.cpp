@@ -189,7 +189,7 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
                        *frame.resources.volumes);
       break;
     case kGather:
-      gather_.record(cmd, cascade, steps.first - 1, steps.count, frame.lpv.occlusion, lpv.far_lines,
+      gather_.record(cmd, cascade, steps.first - 1, steps.count, {frame.lpv.occlusion, lpv.far_lines, lpv.line_blocking},
                      {gathered_bounces(lpv.bounces), &frame.gpu.blockers, frame.gpu.blocker_count, lpv.injection},
                      frame.resources.lpv_uniforms, *frame.resources.volumes);
       break;

@@ -35,33 +35,45 @@ layout(constant_id = 0) const bool OCCLUDED = true;
 // its cell nearest the line's start, and per cell only the faces from there (lpv.far_lines
 // "per_block", lpv_gather.h: lpv_gather_shared_end); else every line to every cell.
 layout(constant_id = 1) const bool SHARED_FAR_LINES = false;
+// A wall's two faces paired along each line (lpv.line_blocking "paired", lpv_gather.h "Blocking
+// along a line"), else every face's projected blocking multiplied.
+layout(constant_id = 2) const bool PAIRED_FACES = true;
 
-// The fraction of the light along w, on the line from cell `source` to cell `target`, that
-// crosses the faces between cell `from` and cell `to`: those the line between their centres
-// crosses, in the order it crosses them (lpv_gather_next_axis). Each face is met as the line
-// from source to target meets it (its blockers' plane must separate those ends). The whole
-// line: from = source, to = target.
-float transmitted(ivec3 from, ivec3 to, ivec3 source, ivec3 target, vec3 w, uvec3 dims) {
+// The line of the light along w from cell `source` to cell `target`, walked from cell `from` to
+// cell `to` from the state `line` (lpv_gather.h, "Blocking along a line"): across the faces the
+// line between their centres crosses, in the order it crosses them (lpv_gather_next_axis), each
+// met as the line from source to target meets it (its blockers' plane must separate those ends).
+// The whole line: from = source, to = target, from lpv_gather_line_begin().
+vec4 walk(vec4 line, ivec3 from, ivec3 to, ivec3 source, ivec3 target, vec3 w, uvec3 dims) {
   ivec3 d = to - from;
   ivec3 span = abs(d);
   ivec3 step = ivec3(sign(vec3(d)));
   ivec3 next = ivec3(1);  // each axis's next crossing, t = next / (2 span)
   int crossings = span.x + span.y + span.z;
   ivec3 cell = from;
-  float through = 1.0;
-  for (int i = 0; i < crossings && through > 0.0; ++i) {
+  for (int i = 0; i < crossings && lpv_gather_line_open(line); ++i) {
     int axis = lpv_gather_next_axis(next, span);
     ivec3 ahead = cell;
     ahead[axis] += step[axis];
     ivec3 owner = step[axis] > 0 ? cell : ahead;  // a face is stored with the cell below it
     vec4 b = imageLoad(faces, lpv_face_texel(owner, axis, dims));
     vec3 spread = imageLoad(faces, lpv_face_spread_texel(owner, axis, dims)).xyz;
-    vec3 face_centre = 0.5 * (vec3(cell) + vec3(ahead));
-    through *= lpv_gather_transmitted(b, spread, w, vec3(source) - face_centre, vec3(target) - face_centre);
+    vec3 to_source = vec3(source) - 0.5 * (vec3(cell) + vec3(ahead));
+    vec3 to_target = vec3(target) - 0.5 * (vec3(cell) + vec3(ahead));
+    if (PAIRED_FACES)
+      line = lpv_gather_line_pair(line, axis, lpv_gather_face_cover(b, spread, axis, w, to_source, to_target));
+    else
+      line = lpv_gather_line_multiply(line, lpv_gather_transmitted(b, spread, w, to_source, to_target));
     cell = ahead;
     next[axis] += 2;
   }
-  return max(through, 0.0);
+  return line;
+}
+
+// The fraction of the light from a record's line start `start` that reaches `cell`.
+float transmitted(ivec3 start, ivec3 cell, uvec3 dims) {
+  vec3 w = normalize(vec3(cell - start));
+  return lpv_gather_line_through(walk(lpv_gather_line_begin(), start, cell, start, cell, w, dims));
 }
 
 // The cell of this invocation in its work group of 4 x 4 x 4. With shared far lines, each run
@@ -113,7 +125,7 @@ void gather_far_shared(LpvGatherWindow window, int level, ivec3 cell, bool insid
   int count = n.x * n.y * n.z;
   uint lane = gl_SubgroupInvocationID & 7u, block_lanes = gl_SubgroupInvocationID & ~7u;
   for (int base = 0; base < count; base += 8) {
-    float shared_through = 0.0;
+    vec4 shared_line = lpv_gather_line_blocked();
     int p = base + int(lane);
     if (p < count) {
       ivec3 block = window.lo + ivec3(p % n.x, (p / n.x) % n.y, p / (n.x * n.y));
@@ -122,19 +134,21 @@ void gather_far_shared(LpvGatherWindow window, int level, ivec3 cell, bool insid
         vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
         ivec3 start = lpv_gather_line_start(imageLoad(sources, record + 2).xyz, emitter, lpv.scales.w, ivec3(dims));
         ivec3 end = lpv_gather_shared_end(start, cell, ivec3(dims));
-        shared_through = transmitted(start, end, start, end, normalize(vec3(end - start)), dims);
+        shared_line = walk(lpv_gather_line_begin(), start, end, start, end, normalize(vec3(end - start)), dims);
       }
     }
     for (int j = 0; j < 8 && base + j < count; ++j) {
-      float through_end = subgroupShuffle(shared_through, block_lanes | uint(j));
+      uint lane_j = block_lanes | uint(j);
+      vec4 line_to_end = PAIRED_FACES ? subgroupShuffle(shared_line, lane_j) : vec4(subgroupShuffle(shared_line.x, lane_j), 0.0, 0.0, 0.0);
       ivec3 block = window.lo + ivec3((base + j) % n.x, ((base + j) / n.x) % n.y, (base + j) / (n.x * n.y));
       int record = record_texel(block, first, level_dims);
       vec3 flux_per_pi = record_flux(record);
-      if (inside && through_end > 0.0 && !lpv_gather_gathered_finer(block, cell, level) && lit(flux_per_pi)) {
+      if (inside && lpv_gather_line_open(line_to_end) && !lpv_gather_gathered_finer(block, cell, level) && lit(flux_per_pi)) {
         Arrival a = arrival(record, cell, dims);
         if (a.any_light > 0.0) {
           ivec3 end = lpv_gather_shared_end(a.start, cell, ivec3(dims));
-          float through = through_end * transmitted(end, cell, a.start, cell, normalize(vec3(cell - a.start)), dims);
+          vec4 line = walk(line_to_end, end, cell, a.start, cell, normalize(vec3(cell - a.start)), dims);
+          float through = lpv_gather_line_through(line);
           for (int k = 0; k < 6; ++k) cube[k] += through * flux_per_pi * a.axes[k];
         }
       }
@@ -183,8 +197,7 @@ void main() {
           }
           Arrival a = arrival(record, cell, dims);
           if (!(a.any_light > 0.0)) continue;  // it faces away: no need to trace the line
-          float through =
-              OCCLUDED ? transmitted(a.start, cell, a.start, cell, normalize(vec3(cell - a.start)), dims) : 1.0;
+          float through = OCCLUDED ? transmitted(a.start, cell, dims) : 1.0;
           if (!(through > 0.0)) continue;
           for (int k = 0; k < 6; ++k) cube[k] += through * flux_per_pi * a.axes[k];
         }

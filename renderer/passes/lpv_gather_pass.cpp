@@ -64,12 +64,14 @@ std::uint32_t LpvGatherPass::slabs(const LpvVolumes& volumes) {
   return vkx::group_count(volumes.dims.z, gpu::LPV_GROUP);
 }
 
-const vkx::Pipeline& LpvGatherPass::variant(bool occlusion, api::FarLines far_lines, const vkx::Buffer& params,
+const vkx::Pipeline& LpvGatherPass::variant(const GatherLines& lines, const vkx::Buffer& params,
                                             const LpvVolumes& volumes) const {
-  const std::uint32_t shared = far_lines == api::FarLines::per_block ? 1u : 0u;
-  const vkx::Pipeline& p = variants_.get((occlusion ? 1u : 0u) | shared << 1, [&] {
-    // By constant_id: OCCLUDED (0), SHARED_FAR_LINES (1).
-    const std::array<std::uint32_t, 2> constants{occlusion ? 1u : 0u, shared};
+  const std::uint32_t occluded = lines.occlusion ? 1u : 0u;
+  const std::uint32_t shared = lines.far_lines == api::FarLines::per_block ? 1u : 0u;
+  const std::uint32_t paired = lines.blocking == api::LineBlocking::paired ? 1u : 0u;
+  const vkx::Pipeline& p = variants_.get(occluded | shared << 1 | paired << 2, [&] {
+    // By constant_id: OCCLUDED (0), SHARED_FAR_LINES (1), PAIRED_FACES (2).
+    const std::array<std::uint32_t, 3> constants{occluded, shared, paired};
     return vkx::Pipeline(device_, layout_, spirv_lpv_gather_comp, constants);
   });
   vkx::DescriptorWriter(p.descriptor_set())
@@ -155,7 +157,7 @@ void LpvGatherPass::record_tail(VkCommandBuffer cmd, std::uint32_t cascade, cons
 }
 
 void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
-                           bool occlusion, api::FarLines far_lines, const GatherBounces& bounces,
+                           const GatherLines& lines, const GatherBounces& bounces,
                            const vkx::Buffer& params, const LpvVolumes& volumes) const {
   // Every descriptor set is written before the first command: a set updated after it was
   // bound would invalidate the command buffer.
@@ -164,7 +166,7 @@ void LpvGatherPass::record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint
       .texel_buffer(gpu::GATHER_SOURCES_INJECTED, kTexels, volumes.injected.view())
       .buffer(gpu::GATHER_SOURCES_STORE, kStorage, volumes.grids.buffer().handle())
       .apply(device_.handle());
-  const vkx::Pipeline& gather = variant(occlusion, far_lines, params, volumes);
+  const vkx::Pipeline& gather = variant(lines, params, volumes);
   const bool reflects = bounces.surfel_count > 0;  // else every later bounce is dark
   const vkx::Pipeline* reflect = reflects && bounces.run.gathered > 1 ? &reflection(bounces, true, params, volumes) : nullptr;
   const vkx::Pipeline* measure = reflects && bounces.run.tail ? &reflection(bounces, false, params, volumes) : nullptr;

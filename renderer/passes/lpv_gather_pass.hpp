@@ -23,6 +23,15 @@ struct GatherBounces {
   api::Injection injection = api::Injection::trilinear;  // how their VPLs are added, as the first's
 };
 
+// How the gather walks its lines of sight: through the geometry volume's blocking or not, its
+// far lines per cell or per block (api::FarLines), its faces paired or multiplied along each
+// line (api::LineBlocking).
+struct GatherLines {
+  bool occlusion = true;
+  api::FarLines far_lines = api::FarLines::per_block;
+  api::LineBlocking blocking = api::LineBlocking::paired;
+};
+
 class LpvGatherPass {
  public:
   explicit LpvGatherPass(const vkx::Device& device);
@@ -36,22 +45,20 @@ class LpvGatherPass {
   // recorded in: a render can be stopped between them.
   static std::uint32_t slabs(const LpvVolumes& volumes);
 
-  // Expects the injected sums in volumes.injected and, when `occlusion`, the geometry volume's
+  // Expects the injected sums in volumes.injected and, with lines.occlusion, the geometry volume's
   // faces. Records steps first .. first + count - 1 (0-based; step s is slab s % slabs of
   // bounce s / slabs). A bounce's slab 0 first lists the lit injected cells (in volumes.grids,
   // which the gather does not otherwise use); its last slab is followed by the surfels'
   // reflection of its light into the injected sums, the next bounce's VPLs (or after the last,
   // with bounces.run.tail, by the estimate of the rest).
-  // `far_lines`: how the lines to the far records are traced (api::FarLines).
-  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count, bool occlusion,
-              api::FarLines far_lines, const GatherBounces& bounces, const vkx::Buffer& params,
+  void record(VkCommandBuffer cmd, std::uint32_t cascade, std::uint32_t first, std::uint32_t count,
+              const GatherLines& lines, const GatherBounces& bounces, const vkx::Buffer& params,
               const LpvVolumes& volumes) const;
 
  private:
-  // The pipeline with or without blocking, its far lines traced per cell or per block, its
-  // descriptor set written for this recording.
-  const vkx::Pipeline& variant(bool occlusion, api::FarLines far_lines, const vkx::Buffer& params,
-                               const LpvVolumes& volumes) const;
+  // The pipeline that walks its lines as `lines` says, its descriptor set written for this
+  // recording.
+  const vkx::Pipeline& variant(const GatherLines& lines, const vkx::Buffer& params, const LpvVolumes& volumes) const;
 
   // lpv_gather_bounce.comp for these bounces' injection, splatting its VPLs or only summing
   // their flux, its descriptor set written.

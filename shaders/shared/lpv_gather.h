@@ -111,20 +111,75 @@ LPV_CONST_F LPV_GATHER_BLOCKER_REACH = 1.0;  // cells
 // the normals that cancel along each axis, |n_k| summed less |m_k| (nothing for a crease
 // where a floor meets a wall, whose two normals cancel nowhere; the first took such a crease
 // for a closed surface and stopped the light between the floor and the wall).
+// The blockers' first moment m = sum p n, from their SH; whether their plane, through the face's
+// centre along m, separates the line's ends by more than LPV_GATHER_BLOCKER_REACH.
+LPV_FUNC vec3 lpv_gather_first_moment(vec4 b) { return vec3(-b.w, -b.y, b.z) / SH_COSINE_C1; }  // sum p n (b = sum p cosine lobe(n))
+LPV_FUNC bool lpv_gather_separates(vec3 m, vec3 to_source, vec3 to_cell) {
+  const lpv_real length_m = sqrt(dot(m, m));
+  if (!(length_m > lpv_real(0))) return false;
+  const lpv_real source_side = dot(to_source, m) / length_m;
+  const lpv_real cell_side = dot(to_cell, m) / length_m;
+  const lpv_real reach = LPV_GATHER_BLOCKER_REACH;
+  return (source_side < -reach && cell_side > reach) || (source_side > reach && cell_side < -reach);
+}
 LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, vec3 to_source, vec3 to_cell) {
-  const vec3 m = vec3(-b.w, -b.y, b.z) / SH_COSINE_C1;  // sum p n (b = sum p cosine lobe(n))
+  const vec3 m = lpv_gather_first_moment(b);
   const lpv_real u = dot(m, w);
   const lpv_real closed = min(max(lpv_closed_blocking(spread, w) - abs(u), lpv_real(0)),
                              lpv_closed_blocking(max(spread - abs(m), vec3(lpv_real(0))), w));
-  const lpv_real length_m = sqrt(dot(m, m));
-  lpv_real open_part = lpv_real(0);
-  if (length_m > lpv_real(0)) {
-    const lpv_real source_side = dot(to_source, m) / length_m;
-    const lpv_real cell_side = dot(to_cell, m) / length_m;
-    const lpv_real reach = LPV_GATHER_BLOCKER_REACH;
-    if ((source_side < -reach && cell_side > reach) || (source_side > reach && cell_side < -reach)) open_part = abs(u);
-  }
+  const lpv_real open_part = lpv_gather_separates(m, to_source, to_cell) ? abs(u) : lpv_real(0);
   return lpv_real(1) - clamp(open_part + closed, lpv_real(0), lpv_real(1));
+}
+
+// Blocking along a line (api::LineBlocking, docs/lpv.md "Blocking along a line"). The geometry
+// volume splats a blocker to the corners of the cell around it and a face takes the mean of its
+// corners, so a wall lies in the faces within a cell of it: across its own axis in the two
+// planes of corners either side of it, in shares that sum to the wall (halves for a wall in the
+// middle of a cell), and in the faces of the other axes between those planes. Multiplied face
+// by face ("multiplied"), the shares of a wall that stops a line whole let (1 - 1/2)^2 = 1/4
+// through at mid-cell, and more to an oblique line, whose faces across the other axes hold
+// only the wall's projection.
+//
+// Paired ("paired"), each face across axis k stops what the blockers facing along k cover of it
+// (lpv_gather_face_cover), whatever the line's angle: a line crossing a plane meets the part of
+// it a wall covers, at any angle, and a wall across k meets the line only in faces across k.
+// The faces across k are met in pairs: a face's cover is added to the last one's across the same
+// axis before it stops the light, (1 - (c_last + c)) / (1 - c_last) of it, so that the two shares
+// of one wall stop what the wall covers, (1 - c_1) (1 - (c_1 + c_2)) / (1 - c_1) = 1 - c_1 - c_2,
+// and walls further apart still stop the light each in turn. Blockers spread evenly through
+// space (cover c on every face) stop (1 - 2c) / (1 - c) of the light a face instead of 1 - c.
+//
+// A line's state: the fraction it lets through so far (x) and the covers of the last face it
+// crossed across each axis (yzw, for "paired"). A walk continues from the state it is given.
+LPV_FUNC vec4 lpv_gather_line_begin() { return vec4(1.0f, 0.0f, 0.0f, 0.0f); }
+LPV_FUNC vec4 lpv_gather_line_blocked() { return vec4(0.0f); }
+LPV_FUNC bool lpv_gather_line_open(vec4 line) { return line.x > lpv_real(0); }
+LPV_FUNC lpv_real lpv_gather_line_through(vec4 line) { return max(line.x, lpv_real(0)); }
+LPV_FUNC vec4 lpv_gather_line_multiply(vec4 line, lpv_real face_through) {
+  line.x *= face_through;
+  return line;
+}
+LPV_FUNC vec4 lpv_gather_line_pair(vec4 line, int axis, lpv_real cover) {
+  const lpv_real last = line[1 + axis];
+  const lpv_real before = lpv_real(1) - min(last, lpv_real(1));
+  line.x = before > lpv_real(0) ? line.x * (lpv_real(1) - min(last + cover, lpv_real(1))) / before : lpv_real(0);
+  line[1 + axis] = cover;
+  return line;
+}
+
+// The part of a face across `axis` that its blockers facing along the axis cover, for the line
+// from `to_source` to `to_cell` (from the face's centre, cell units; lpv_gather_transmitted's
+// rules): the one-sided part, |m_k| of the first moment m = sum p n, where the blockers' plane
+// (through the face's centre along m) separates the line's ends by more than
+// LPV_GATHER_BLOCKER_REACH; the closed part, (sum p |n_k| - |m_k|) / 2 (both sides of a thin
+// wall, a solid's opposite faces), wherever the line crosses. Blockers facing the other axes
+// stop the line in the faces across theirs.
+LPV_FUNC lpv_real lpv_gather_face_cover(vec4 b, vec3 spread, int axis, vec3 w, vec3 to_source, vec3 to_cell) {
+  const vec3 m = lpv_gather_first_moment(b);
+  const lpv_real across = dot(abs(m), abs(w));
+  const lpv_real one_sided = across > lpv_real(0) ? abs(m[axis]) * abs(dot(m, w)) / across : lpv_real(0);
+  const lpv_real closed = lpv_real(0.5) * max(spread[axis] - abs(m[axis]), lpv_real(0));
+  return (lpv_gather_separates(m, to_source, to_cell) ? one_sided : lpv_real(0)) + closed;
 }
 
 // The line from a source cell's centre to the gathering cell's, d = (their offset), crosses

@@ -128,8 +128,8 @@ TEST_P(AllBouncesScorecard, AllBouncesStayWithinTheirBounds) {
 
 // clang-format off
 // Measured at 64x64, 1024 samples (docs/accuracy.md, "The scorecard"): gain, indirect ratio,
-// probe. Bounds: gain +0.06, indirect ratio +-0.15, probes +-0.15 (the leak at most 0.05, the
-// issue's target); thin-wall-hut's, whose 2 cm walls let the sunlit sand's light into the hut
+// probe. Bounds: gain +0.06, indirect ratio +-0.15, probes +-0.15 (the leak at most 0.02, issue
+// 48's target, since the gather pairs a wall's faces along its lines); thin-wall-hut's, whose 2 cm walls let the sunlit sand's light into the hut
 // at 26 times the truth (issue 48, open), about 10% and 20% either side; the lone plane's
 // indirect light at most 2% of its direct light. 9 marks a measure not bounded for the scene,
 // an indirect range starting at 0 one not checked (the lone plane's reference has no indirect
@@ -138,16 +138,16 @@ TEST_P(AllBouncesScorecard, AllBouncesStayWithinTheirBounds) {
 // each scene's shape.
 const Bounds kBounds[] = {
     // scene               gain   indirect      ind/dir  probe
-    {"cornell-box",        0.19,  0.80, 1.10,   9.0,     0.84, 1.14},  // 0.130 0.945, ceiling 0.993
-    {"cornell-box-point",  0.19,  0.82, 1.12,   9.0,     0.0,  0.0},   // 0.127 0.971
-    {"sun-courtyard",      0.17,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.107 0.900
-    {"corridor",           0.15,  0.81, 1.11,   9.0,     0.0,  0.0},   // 0.089 0.963
-    {"thin-wall-room",     0.21,  0.82, 1.12,   9.0,     0.0,  0.05},  // 0.154 0.970, leak 0.042
-    {"open-court",         0.32,  0.66, 0.96,   9.0,     0.0,  0.0},   // 0.256 0.811
-    {"gallery-court",      0.57,  0.68, 0.98,   9.0,     0.0,  0.0},   // 0.507 0.828
+    {"cornell-box",        0.19,  0.83, 1.13,   9.0,     0.89, 1.19},  // 0.125 0.982, ceiling 1.042
+    {"cornell-box-point",  0.19,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.125 0.989
+    {"sun-courtyard",      0.17,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.105 0.905
+    {"corridor",           0.15,  0.81, 1.11,   9.0,     0.0,  0.0},   // 0.087 0.963
+    {"thin-wall-room",     0.20,  0.80, 1.10,   9.0,     0.0,  0.02},  // 0.142 0.955, leak 0.013
+    {"open-court",         0.22,  0.66, 0.96,   9.0,     0.0,  0.0},   // 0.156 0.816
+    {"gallery-court",      0.29,  0.70, 1.00,   9.0,     0.0,  0.0},   // 0.223 0.850
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
     {"sunlit-hall",        0.57,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.510 0.992
-    {"thin-wall-hut",      26.0,  20.0, 30.0,   9.0,     0.0,  0.0},   // 23.8 26.3: the leak (issue 48)
+    {"thin-wall-hut",      26.0,  21.0, 31.0,   9.0,     0.0,  0.0},   // 23.7 26.3: the leak (issue 48)
 };
 
 // The same for {"lpv": {"transfer": "sharpened"}}: the bounds it had as the default (images
@@ -166,19 +166,20 @@ const Bounds kPropagationBounds[] = {
     {"thin-wall-hut",      34.0,  28.0, 40.0,   9.0,     0.0,  0.0},   // 30.6 35.3: the leak
 };
 // {"lpv": {"bounces": "all"}} against the 8-bounce reference, the same margins: its leak is the
-// light of every bounce (issue 45's target, 2%, is not met: the thin walls' blocking, issue 48).
+// light of every bounce (issue 45's target, 2%, is not met: 3.5% with the wall's faces paired,
+// the rest through the cells that straddle the wall, issue 48).
 const Bounds kAllBouncesBounds[] = {
     // scene               gain   indirect      ind/dir  probe
-    {"cornell-box",        0.25,  0.70, 1.00,   9.0,     0.71, 1.01},  // 0.187 0.854, ceiling 0.857
-    {"cornell-box-point",  0.20,  0.78, 1.08,   9.0,     0.0,  0.0},   // 0.134 0.934
-    {"sun-courtyard",      0.20,  0.73, 1.03,   9.0,     0.0,  0.0},   // 0.134 0.878
-    {"corridor",           0.22,  0.65, 0.95,   9.0,     0.0,  0.0},   // 0.152 0.796
-    {"thin-wall-room",     0.30,  0.77, 1.07,   9.0,     0.0,  0.15},  // 0.232 0.921, leak 0.088
-    {"open-court",         0.26,  0.63, 0.93,   9.0,     0.0,  0.0},   // 0.192 0.779
-    {"gallery-court",      0.31,  0.64, 0.94,   9.0,     0.0,  0.0},   // 0.249 0.789
+    {"cornell-box",        0.22,  0.76, 1.06,   9.0,     0.76, 1.06},  // 0.156 0.905, ceiling 0.905
+    {"cornell-box-point",  0.18,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.115 0.986
+    {"sun-courtyard",      0.19,  0.74, 1.04,   9.0,     0.0,  0.0},   // 0.130 0.886
+    {"corridor",           0.22,  0.65, 0.95,   9.0,     0.0,  0.0},   // 0.151 0.798
+    {"thin-wall-room",     0.25,  0.76, 1.06,   9.0,     0.0,  0.06},  // 0.187 0.910, leak 0.035
+    {"open-court",         0.25,  0.63, 0.93,   9.0,     0.0,  0.0},   // 0.190 0.783
+    {"gallery-court",      0.28,  0.68, 0.98,   9.0,     0.0,  0.0},   // 0.216 0.833
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
-    {"sunlit-hall",        0.35,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.287 0.987
-    {"thin-wall-hut",      19.0,  14.0, 21.0,   9.0,     0.0,  0.0},   // 16.5 17.8: the leak
+    {"sunlit-hall",        0.35,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.287 0.988
+    {"thin-wall-hut",      20.0,  15.0, 22.0,   9.0,     0.0,  0.0},   // 17.8 19.6: the leak
 };
 // clang-format on
 

@@ -13,42 +13,47 @@ namespace {
 
 namespace g = gpu_double;
 
-// The fraction of the light along w, on the line from cell `source` to cell `target`, that
-// crosses the faces between cell `from` and cell `to` (lpv_gather.comp's `transmitted`): those
-// the line between their centres crosses, in order, each met as the line from source to
-// target meets it.
-double transmitted(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, glm::ivec3 from, glm::ivec3 to,
-                   glm::ivec3 source, glm::ivec3 target, glm::dvec3 w) {
+// The line of the light along w from cell `source` to cell `target`, walked from cell `from` to
+// cell `to` from the state `line` (lpv_gather.comp's `walk`): across the faces the line between
+// their centres crosses, in order, each met as the line from source to target meets it.
+glm::dvec4 walk(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, glm::dvec4 line, glm::ivec3 from,
+                glm::ivec3 to, glm::ivec3 source, glm::ivec3 target, glm::dvec3 w, bool paired) {
   const glm::ivec3 d = to - from;
   const glm::ivec3 span = glm::abs(d);
   glm::ivec3 next(1);
   glm::ivec3 cell = from;
-  double through = 1.0;
-  for (int i = 0; i < span.x + span.y + span.z && through > 0.0; ++i) {
+  for (int i = 0; i < span.x + span.y + span.z && g::lpv_gather_line_open(line); ++i) {
     const int axis = g::lpv_gather_next_axis(next, span);
     glm::ivec3 ahead = cell;
     ahead[axis] += d[axis] > 0 ? 1 : -1;
     const glm::ivec3 owner = d[axis] > 0 ? cell : ahead;
     const std::size_t face = grid.index(owner) * 3 + std::size_t(axis);
     const glm::dvec3 face_centre = 0.5 * (glm::dvec3(cell) + glm::dvec3(ahead));
-    through *= g::lpv_gather_transmitted(faces.sh[face], faces.spread[face], w, glm::dvec3(source) - face_centre,
-                                         glm::dvec3(target) - face_centre);
+    const glm::dvec3 to_source = glm::dvec3(source) - face_centre, to_target = glm::dvec3(target) - face_centre;
+    line = paired ? g::lpv_gather_line_pair(
+                        line, axis, g::lpv_gather_face_cover(faces.sh[face], faces.spread[face], axis, w, to_source, to_target))
+                  : g::lpv_gather_line_multiply(
+                        line, g::lpv_gather_transmitted(faces.sh[face], faces.spread[face], w, to_source, to_target));
     cell = ahead;
     next[axis] += 2;
   }
-  return std::max(through, 0.0);
+  return line;
 }
 
-// The line from a record's start to a cell: walked whole, or for a far record with shared far
-// lines to the cell's block (lpv_gather_shared_end) and from there to the cell.
+// The fraction of the light from a record's line start that reaches `cell`: the line walked
+// whole, or for a far record with shared far lines to the cell's block (lpv_gather_shared_end)
+// and from there on to the cell.
 double line_through(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, glm::ivec3 start, glm::ivec3 cell,
-                    bool shared) {
+                    bool shared, bool paired) {
   const glm::dvec3 w = glm::normalize(glm::dvec3(cell - start));
-  if (!shared) return transmitted(grid, faces, start, cell, start, cell, w);
+  const glm::dvec4 begin = g::lpv_gather_line_begin();
+  if (!shared) return g::lpv_gather_line_through(walk(grid, faces, begin, start, cell, start, cell, w, paired));
   const glm::ivec3 end = g::lpv_gather_shared_end(start, cell, grid.dims);
-  const double to_block =
-      end == start ? 1.0 : transmitted(grid, faces, start, end, start, end, glm::normalize(glm::dvec3(end - start)));
-  return to_block * transmitted(grid, faces, end, cell, start, cell, w);
+  const glm::dvec4 to_block = end == start ? begin
+                                           : walk(grid, faces, begin, start, end, start, end,
+                                                  glm::normalize(glm::dvec3(end - start)), paired);
+  if (!g::lpv_gather_line_open(to_block)) return 0.0;
+  return g::lpv_gather_line_through(walk(grid, faces, to_block, end, cell, start, cell, w, paired));
 }
 
 // A record of the pyramid of sources (lpv_gather_sources.comp's three texels).
@@ -103,7 +108,8 @@ std::vector<Record> pyramid(const GridD& injected, double injection, double offs
 }  // namespace
 
 std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection,
-                           double offset, api::FarLines far_lines) {
+                           double offset, api::FarLines far_lines, api::LineBlocking line_blocking) {
+  const bool paired = line_blocking == api::LineBlocking::paired;
   const glm::ivec3 dims = injected.dims;
   const std::vector<Record> records = pyramid(injected, injection, offset);
   std::vector<double> cubes(injected.sh.size() * 6, 0.0);
@@ -138,7 +144,7 @@ std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::d
                 if (!(any_light > 0.0)) continue;
                 const glm::ivec3 start = g::lpv_gather_line_start(r.centre, emitter, offset, dims);
                 const bool shared = far_lines == api::FarLines::per_block && level > 0;
-                const double through = faces.empty() ? 1.0 : line_through(injected, faces, start, cell, shared);
+                const double through = faces.empty() ? 1.0 : line_through(injected, faces, start, cell, shared, paired);
                 if (!(through > 0.0)) continue;
                 for (int c = 0; c < 3; ++c)
                   for (int a = 0; a < 6; ++a) cube[c * 6 + a] += through * r.flux[c] * axes[a];

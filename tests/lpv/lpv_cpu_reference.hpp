@@ -107,9 +107,11 @@ namespace lpv_ref {
 // formulas of shaders/shared/lpv_gather.h: every cell's irradiance cube from the injected grid
 // (its SH, the VPLs having gone in with band 1 times `injection`, lpv.transfer.y, moved
 // `offset` cells along their normals, lpv.injection_offset) and the faces' blocking (empty:
-// nothing blocks), the lines to far records traced as `far_lines` says. Six values a cell and
+// nothing blocks), the lines to far records traced as `far_lines` says and their faces combined
+// as `line_blocking` says. Six values a cell and
 // channel (+x, -x, +y, -y, +z, -z), at cubes[(3 * cell + channel) * 6 + axis], cells x-fastest.
 std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection,
-                           double offset, api::FarLines far_lines = api::FarLines::per_cell);
+                           double offset, api::FarLines far_lines = api::FarLines::per_cell,
+                           api::LineBlocking line_blocking = api::LineBlocking::paired);
 
 }  // namespace lpv_ref

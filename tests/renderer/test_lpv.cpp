@@ -281,11 +281,21 @@ TEST_F(Lpv, OccludedPropagationMatchesTheDoublePrecisionReference) {
 // float rounding over sums of up to 1728 sources.
 TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
   std::map<std::uint32_t, double> open_total;  // by grid width
-  for (const auto& [occlusion, far_lines] : {std::pair{false, api::FarLines::per_cell}, {true, api::FarLines::per_cell},
-                                             {true, api::FarLines::per_block}}) {
+  struct Lines {
+    bool occlusion;
+    api::FarLines far_lines;
+    api::LineBlocking blocking;
+  };
+  for (const auto& [occlusion, far_lines, line_blocking] :
+       {Lines{false, api::FarLines::per_cell, api::LineBlocking::paired},
+        Lines{true, api::FarLines::per_cell, api::LineBlocking::multiplied},
+        Lines{true, api::FarLines::per_cell, api::LineBlocking::paired},
+        Lines{true, api::FarLines::per_block, api::LineBlocking::multiplied},
+        Lines{true, api::FarLines::per_block, api::LineBlocking::paired}}) {
     // 5 x 1 x 1: a grid one cell thick, whose gathering cells stop climbing at different levels.
     for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(12, 9, 7), glm::uvec3(5, 1, 1)}) {
       SCOPED_TRACE(std::string(occlusion ? "occlusion, " : "no occlusion, ") + api::to_string(far_lines) + ", " +
+                   api::to_string(line_blocking) + ", " +
                    std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z));
       api::RenderRequest request = small_grid_request(0);
       request.lpv.grid = dims;
@@ -294,6 +304,7 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
       const auto injected = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
       request.lpv.transfer = api::Transfer::gather;
       request.lpv.far_lines = far_lines;
+      request.lpv.line_blocking = line_blocking;
       const auto gathered = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
       lpv_ref::BasicFaceBlocking<glm::dvec4> faces;
       if (occlusion) {
@@ -304,7 +315,7 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
       const std::vector<double> exact =
           lpv_ref::gather(grid_of(injected.lpv.cascades.at(0)), faces,
                           renderer::transfer_factors(api::Transfer::gather).injected, request.lpv.injection_offset,
-                          far_lines);
+                          far_lines, line_blocking);
       const std::vector<glm::vec4>& texels = gathered.lpv.cascades.at(0).accumulated;  // 2 a cell and channel
       ASSERT_EQ(texels.size() * 3, exact.size());
       double diff = 0.0, scale = 0.0, lit = 0.0, total = 0.0;
@@ -315,8 +326,10 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
         scale = std::max(scale, std::abs(exact[i]));
         lit += exact[i] > 0.0;
       }
-      std::printf("gather, %s, far lines %s: GPU (float) against double: %.2e of the largest value (%.0f of %zu values lit)\n",
-                  occlusion ? "occluded" : "open", api::to_string(far_lines).c_str(), diff / scale, lit, exact.size());
+      std::printf("gather, %s, far lines %s, %s: GPU (float) against double: %.2e of the largest value (%.0f of %zu "
+                  "values lit)\n",
+                  occlusion ? "occluded" : "open", api::to_string(far_lines).c_str(), api::to_string(line_blocking).c_str(),
+                  diff / scale, lit, exact.size());
       EXPECT_GT(lit, 0.5 * double(exact.size())) << "the gather lights most cells";
       if (occlusion && dims.y > 1) {  // (the grid one cell thick is checked for agreement alone)
         EXPECT_LT(total, 0.95 * open_total[dims.x]) << "the geometry volume blocks some light";
