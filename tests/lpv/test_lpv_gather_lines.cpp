@@ -55,7 +55,9 @@ TEST(GatherLines, AThinWallStopsEveryLineThatCrossesItWhereverItLiesInItsCell) {
                 multiplied);
     EXPECT_LT(paired, 0.01) << x;
     EXPECT_LE(paired, multiplied) << x;
-    if (x == 5.5f) EXPECT_GT(multiplied, 0.15) << "the halves of a wall mid-cell, multiplied, let a quarter through";
+    if (x == 5.5f) {
+      EXPECT_GT(multiplied, 0.15) << "the halves of a wall mid-cell, multiplied, let a quarter through";
+    }
   }
 }
 
