@@ -180,6 +180,7 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
       }
       GeometrySources sources = geometry_sources(lpv, frame.plan.run[kRsm]);
       sources.bounces = frame.lpv.bounces;
+      sources.covers = frame.plan.run[kGather] && lpv.line_blocking == api::LineBlocking::paired;
       geometry_.record(cmd, cascade, frame.resources.lpv_uniforms, *frame.resources.rsm_maps, frame.lpv.rsm_views,
                        frame.resources.targets->surfels, frame.gpu, sources, *frame.resources.volumes);
       break;

@@ -20,6 +20,7 @@ layout(local_size_x = LPV_GROUP, local_size_y = LPV_GROUP, local_size_z = LPV_GR
 layout(std140, set = 0, binding = GATHER_LPV) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = GATHER_INJECTED, rgba32ui) uniform readonly uimageBuffer injected;  // 6 texels of 2 sums per cell
 layout(set = 0, binding = GATHER_FACES, rgba32f) uniform readonly imageBuffer faces;          // lpv_face_texel
+layout(set = 0, binding = GATHER_FACE_COVERS, rgba32f) uniform readonly imageBuffer face_covers;  // lpv_face_cover_texel
 layout(set = 0, binding = GATHER_SOURCES, rgba32f) uniform readonly imageBuffer sources;      // lpv_gather_sources.comp's pyramid
 layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_R) buffer AccumulatedR { u64vec2 accumulated_r[]; };
 layout(std430, set = 0, binding = GATHER_ACCUMULATED_STORE_G) buffer AccumulatedG { u64vec2 accumulated_g[]; };
@@ -56,14 +57,16 @@ vec4 walk(vec4 line, ivec3 from, ivec3 to, ivec3 source, ivec3 target, vec3 w, u
     ivec3 ahead = cell;
     ahead[axis] += step[axis];
     ivec3 owner = step[axis] > 0 ? cell : ahead;  // a face is stored with the cell below it
-    vec4 b = imageLoad(faces, lpv_face_texel(owner, axis, dims));
-    vec3 spread = imageLoad(faces, lpv_face_spread_texel(owner, axis, dims)).xyz;
     vec3 to_source = vec3(source) - 0.5 * (vec3(cell) + vec3(ahead));
     vec3 to_target = vec3(target) - 0.5 * (vec3(cell) + vec3(ahead));
-    if (PAIRED_FACES)
-      line = lpv_gather_line_pair(line, axis, lpv_gather_face_cover(b, spread, axis, w, to_source, to_target));
-    else
+    if (PAIRED_FACES) {
+      vec4 cover = imageLoad(face_covers, lpv_face_cover_texel(owner, axis, dims));
+      line = lpv_gather_line_pair(line, axis, lpv_gather_face_cover(cover, axis, w, to_source, to_target));
+    } else {
+      vec4 b = imageLoad(faces, lpv_face_texel(owner, axis, dims));
+      vec3 spread = imageLoad(faces, lpv_face_spread_texel(owner, axis, dims)).xyz;
       line = lpv_gather_line_multiply(line, lpv_gather_transmitted(b, spread, w, to_source, to_target));
+    }
     cell = ahead;
     next[axis] += 2;
   }

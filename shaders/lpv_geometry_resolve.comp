@@ -6,6 +6,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/geometry_volume_interface.h"
 #include "shared/gpu_types.h"
+#include "shared/lpv_sh.h"
+#include "shared/lpv_gather.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/texel_store.glsl"
 
@@ -15,9 +17,13 @@ layout(std140, set = 0, binding = GEOMETRY_RESOLVE_LPV) uniform Lpv { GpuLpv lpv
 layout(set = 0, binding = GEOMETRY_RESOLVE_CORNERS, rgba32f) uniform readonly imageBuffer corners;  // LPV_GV_CORNER_TEXELS per corner
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACES) writeonly buffer Faces { u64vec2 faces[]; };
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACE_ALBEDO) writeonly buffer FaceAlbedo { u64vec2 face_albedo[]; };
+layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACE_COVER) writeonly buffer FaceCover { u64vec2 face_cover[]; };
 layout(push_constant) uniform Push { GeometryResolvePush push; };
 // The blockers' albedo serves bounces only: without them its faces are not written.
 layout(constant_id = 0) const bool BOUNCES = true;
+// The gather pairs its lines' faces (lpv.line_blocking "paired"): each face's cover texel
+// (lpv_gather_cover_texel), so that its walk reads one texel a face, not two.
+layout(constant_id = 1) const bool COVERS = true;
 
 void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
@@ -42,6 +48,7 @@ void main() {
     }
     faces[lpv_face_texel(cell, axis, dims)] = texel_bits(sh);
     faces[lpv_face_spread_texel(cell, axis, dims)] = texel_bits(spread);
+    if (COVERS) face_cover[lpv_face_cover_texel(cell, axis, dims)] = texel_bits(lpv_gather_cover_texel(sh, spread.xyz, axis));
     if (BOUNCES)
       face_albedo[lpv_face_albedo_texel(cell, axis, dims)] = texel_bits(vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
   }

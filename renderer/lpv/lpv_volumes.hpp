@@ -113,5 +113,8 @@ struct LpvVolumes {
   // holds more than 6 texels a cell.
   vkx::TexelBuffer faces;
   vkx::TexelBuffer face_albedo;
+  // Texel 3 cell + k: what the gather's paired faces read of the face at +k, its blockers' first
+  // moment and the closed part of its cover (lpv_gather_cover_texel); written only for them.
+  vkx::TexelBuffer face_cover;
 };
 }  // namespace renderer

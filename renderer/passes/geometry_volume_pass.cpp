@@ -54,7 +54,8 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
   resolve_layout_ = vkx::compute_layout({{gpu::GEOMETRY_RESOLVE_LPV, uniform},
                                          {gpu::GEOMETRY_RESOLVE_CORNERS, texels},
                                          {gpu::GEOMETRY_RESOLVE_FACES, buffer},
-                                         {gpu::GEOMETRY_RESOLVE_FACE_ALBEDO, buffer}},
+                                         {gpu::GEOMETRY_RESOLVE_FACE_ALBEDO, buffer},
+                                         {gpu::GEOMETRY_RESOLVE_FACE_COVER, buffer}},
                                         sizeof(gpu::GeometryResolvePush));
 }
 
@@ -84,8 +85,9 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
   const vkx::Pipeline& corners = corners_.get(with_albedo[0], [&] {
     return vkx::Pipeline(device_, corners_layout_, spirv_lpv_geometry_corners_comp, with_albedo);
   });
-  const vkx::Pipeline& resolve = resolve_.get(with_albedo[0], [&] {
-    return vkx::Pipeline(device_, resolve_layout_, spirv_lpv_geometry_resolve_comp, with_albedo);
+  const std::array<std::uint32_t, 2> resolved{with_albedo[0], sources.covers ? 1u : 0u};  // BOUNCES, COVERS
+  const vkx::Pipeline& resolve = resolve_.get(resolved[0] | resolved[1] << 1, [&] {
+    return vkx::Pipeline(device_, resolve_layout_, spirv_lpv_geometry_resolve_comp, resolved);
   });
   vkx::DescriptorWriter(corners.descriptor_set())
       .buffer(gpu::GEOMETRY_CORNERS_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, params.handle())
@@ -97,6 +99,7 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .texel_buffer(gpu::GEOMETRY_RESOLVE_CORNERS, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.corners.view())
       .buffer(gpu::GEOMETRY_RESOLVE_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.buffer().handle())
       .buffer(gpu::GEOMETRY_RESOLVE_FACE_ALBEDO, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.face_albedo.buffer().handle())
+      .buffer(gpu::GEOMETRY_RESOLVE_FACE_COVER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.face_cover.buffer().handle())
       .apply(device_.handle());
 
   const std::uint32_t slots = sources.slots();

@@ -31,6 +31,7 @@ LpvGatherPass::LpvGatherPass(const vkx::Device& device)
   layout_ = vkx::compute_layout({{gpu::GATHER_LPV, kUniform},
                                  {gpu::GATHER_INJECTED, kTexels},
                                  {gpu::GATHER_FACES, kTexels},
+                                 {gpu::GATHER_FACE_COVERS, kTexels},
                                  {gpu::GATHER_ACCUMULATED_STORE_R, kStorage},
                                  {gpu::GATHER_ACCUMULATED_STORE_G, kStorage},
                                  {gpu::GATHER_ACCUMULATED_STORE_B, kStorage},
@@ -78,6 +79,7 @@ const vkx::Pipeline& LpvGatherPass::variant(const GatherLines& lines, const vkx:
       .buffer(gpu::GATHER_LPV, kUniform, params.handle())
       .texel_buffer(gpu::GATHER_INJECTED, kTexels, volumes.injected.view())
       .texel_buffer(gpu::GATHER_FACES, kTexels, volumes.faces.view())
+      .texel_buffer(gpu::GATHER_FACE_COVERS, kTexels, volumes.face_cover.view())
       .buffer(gpu::GATHER_ACCUMULATED_STORE_R, kStorage, volumes.accumulated[0].buffer().handle())
       .buffer(gpu::GATHER_ACCUMULATED_STORE_G, kStorage, volumes.accumulated[1].buffer().handle())
       .buffer(gpu::GATHER_ACCUMULATED_STORE_B, kStorage, volumes.accumulated[2].buffer().handle())

@@ -30,6 +30,7 @@ LPV_BINDING GEOMETRY_RESOLVE_LPV = 0u;
 LPV_BINDING GEOMETRY_RESOLVE_CORNERS = 1u;      // texels: the corners
 LPV_BINDING GEOMETRY_RESOLVE_FACES = 2u;        // storage: the faces, written
 LPV_BINDING GEOMETRY_RESOLVE_FACE_ALBEDO = 3u;  // storage: the faces' mean albedo, written
+LPV_BINDING GEOMETRY_RESOLVE_FACE_COVER = 4u;   // storage: what the gather's paired faces read, written
 
 struct GeometryInjectPush {
   uint cascade;

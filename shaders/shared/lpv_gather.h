@@ -174,12 +174,18 @@ LPV_FUNC vec4 lpv_gather_line_pair(vec4 line, int axis, lpv_real cover) {
 // LPV_GATHER_BLOCKER_REACH; the closed part, (sum p |n_k| - |m_k|) / 2 (both sides of a thin
 // wall, a solid's opposite faces), wherever the line crosses. Blockers facing the other axes
 // stop the line in the faces across theirs.
-LPV_FUNC lpv_real lpv_gather_face_cover(vec4 b, vec3 spread, int axis, vec3 w, vec3 to_source, vec3 to_cell) {
+//
+// What a face holds for it, computed once a frame by the geometry volume's resolve
+// (lpv_geometry_resolve.comp, the face cover texels): m, and the closed part across `axis`.
+LPV_FUNC vec4 lpv_gather_cover_texel(vec4 b, vec3 spread, int axis) {
   const vec3 m = lpv_gather_first_moment(b);
+  return vec4(m.x, m.y, m.z, lpv_real(0.5) * max(spread[axis] - abs(m[axis]), lpv_real(0)));
+}
+LPV_FUNC lpv_real lpv_gather_face_cover(vec4 cover_texel, int axis, vec3 w, vec3 to_source, vec3 to_cell) {
+  const vec3 m = vec3(cover_texel.x, cover_texel.y, cover_texel.z);
   const lpv_real across = dot(abs(m), abs(w));
   const lpv_real one_sided = across > lpv_real(0) ? abs(m[axis]) * abs(dot(m, w)) / across : lpv_real(0);
-  const lpv_real closed = lpv_real(0.5) * max(spread[axis] - abs(m[axis]), lpv_real(0));
-  return (lpv_gather_separates(m, to_source, to_cell) ? one_sided : lpv_real(0)) + closed;
+  return (lpv_gather_separates(m, to_source, to_cell) ? one_sided : lpv_real(0)) + cover_texel.w;
 }
 
 // The line from a source cell's centre to the gathering cell's, d = (their offset), crosses

@@ -17,6 +17,7 @@ LPV_BINDING GATHER_SOURCES_STORE = 2u;     // storage: the sources, written
 LPV_BINDING GATHER_LPV = 0u;       // uniform GpuLpv
 LPV_BINDING GATHER_INJECTED = 1u;  // texels: the injection's integer sums, 6 texels of 2 a cell
 LPV_BINDING GATHER_FACES = 2u;     // texels: the geometry volume's faces (lpv_face_texel)
+LPV_BINDING GATHER_FACE_COVERS = 10u;  // texels: their cover texels (lpv_face_cover_texel), for paired faces
 LPV_BINDING GATHER_SOURCES = 6u;   // texels: the sources (above)
 LPV_BINDING GATHER_ACCUMULATED_STORE_R = 3u;  // storage: the irradiance cubes, summed over the bounces
 LPV_BINDING GATHER_ACCUMULATED_STORE_G = 4u;

@@ -35,5 +35,6 @@ int lpv_face_spread_texel(ivec3 cell, int k, uvec3 dims) {
   return 3 * int(dims.x * dims.y * dims.z + lpv_cell_index(uvec3(cell), dims)) + k;
 }
 int lpv_face_albedo_texel(ivec3 cell, int k, uvec3 dims) { return 3 * int(lpv_cell_index(uvec3(cell), dims)) + k; }
+int lpv_face_cover_texel(ivec3 cell, int k, uvec3 dims) { return 3 * int(lpv_cell_index(uvec3(cell), dims)) + k; }
 
 #endif

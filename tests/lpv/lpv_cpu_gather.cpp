@@ -30,8 +30,10 @@ glm::dvec4 walk(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, g
     const std::size_t face = grid.index(owner) * 3 + std::size_t(axis);
     const glm::dvec3 face_centre = 0.5 * (glm::dvec3(cell) + glm::dvec3(ahead));
     const glm::dvec3 to_source = glm::dvec3(source) - face_centre, to_target = glm::dvec3(target) - face_centre;
-    line = paired ? g::lpv_gather_line_pair(
-                        line, axis, g::lpv_gather_face_cover(faces.sh[face], faces.spread[face], axis, w, to_source, to_target))
+    line = paired ? g::lpv_gather_line_pair(line, axis,
+                                            g::lpv_gather_face_cover(
+                                                g::lpv_gather_cover_texel(faces.sh[face], faces.spread[face], axis),
+                                                axis, w, to_source, to_target))
                   : g::lpv_gather_line_multiply(
                         line, g::lpv_gather_transmitted(faces.sh[face], faces.spread[face], w, to_source, to_target));
     cell = ahead;
