@@ -106,6 +106,9 @@ void expect_same(const api::RenderRequest& a, const api::RenderRequest& b) {
   EXPECT_EQ(a.lpv.injection, b.lpv.injection);
   EXPECT_EQ(a.lpv.injection_offset, b.lpv.injection_offset);
   EXPECT_EQ(a.lpv.transfer, b.lpv.transfer);
+  EXPECT_EQ(a.lpv.blocking, b.lpv.blocking);
+  EXPECT_EQ(a.lpv.far_lines, b.lpv.far_lines);
+  EXPECT_EQ(a.lpv.line_blocking, b.lpv.line_blocking);
   EXPECT_EQ(a.lpv.intensity, b.lpv.intensity);
   EXPECT_EQ(a.lpv.origin, b.lpv.origin);
   EXPECT_EQ(a.lpv.extent, b.lpv.extent);
@@ -201,7 +204,8 @@ TEST(ParseRequest, ReadsEveryField) {
     "shadows": {"enabled": false, "resolution": 2048},
     "lpv": {"enabled": false, "grid": [16, 8, 4], "cascades": 3, "iterations": 0, "rsm": 64, "vpl_downsample": 4,
             "occlusion": false, "occlusion_sources": ["camera", "scene"], "bounces": 2, "injection": "nearest",
-            "injection_offset": 0.25, "transfer": "cosine", "far_lines": "per_cell", "blocking": "sh_lobe", "intensity": 2.5,
+            "injection_offset": 0.25, "transfer": "cosine", "far_lines": "per_cell", "line_blocking": "multiplied",
+            "blocking": "sh_lobe", "intensity": 2.5,
             "origin": [-1, 0, -1], "extent": 2},
     "repeat": 10
   })");
@@ -257,6 +261,7 @@ TEST(ParseRequest, ReadsEveryField) {
   EXPECT_EQ(r.lpv.transfer, api::Transfer::cosine);
   EXPECT_EQ(r.lpv.blocking, api::Blocking::sh_lobe);
   EXPECT_EQ(r.lpv.far_lines, api::FarLines::per_cell);
+  EXPECT_EQ(r.lpv.line_blocking, api::LineBlocking::multiplied);
   EXPECT_EQ(r.lpv.intensity, 2.5f);
   EXPECT_EQ(r.lpv.origin, glm::vec3(-1, 0, -1));
   EXPECT_EQ(r.lpv.extent, 2.0f);
@@ -534,6 +539,7 @@ std::vector<BadRequest> bad_requests() {
       {R"({"lpv": {"grid": [24, 24, 25], "transfer": "gather"}})", "lpv.grid"},
       {R"({"lpv": {"blocking": "two_sided"}})", "lpv.blocking"},
       {R"({"lpv": {"far_lines": "per_line"}})", "lpv.far_lines"},
+      {R"({"lpv": {"line_blocking": "summed"}})", "lpv.line_blocking"},
       {R"({"lpv": {"injection": "bilinear"}})", "lpv.injection"},
       {R"({"lpv": {"injection_offset": 2.5}})", "lpv.injection_offset"},
       {R"({"lpv": {"intensity": -1}})", "lpv.intensity"},
@@ -756,6 +762,8 @@ api::RenderRequest full_request() {
   r.lpv.injection = api::Injection::nearest;
   r.lpv.injection_offset = 0.3f;
   r.lpv.transfer = api::Transfer::cosine;
+  r.lpv.far_lines = api::FarLines::per_cell;
+  r.lpv.line_blocking = api::LineBlocking::multiplied;
   r.lpv.intensity = 1.7f;
   r.lpv.origin = glm::vec3(-2.5f, 0.1f, 3.0f);
   r.lpv.extent = 12.5f;
