@@ -124,6 +124,7 @@ SweepParameters read_parameters(const Field& f) {
   if (auto v = obj.get("occlusion")) p.occlusion = read_values<bool>(*v, as_bool);
   if (auto v = obj.get("transfer")) p.transfer = read_values<Transfer>(*v, read_transfer);
   if (auto v = obj.get("blocking")) p.blocking = read_values<Blocking>(*v, read_blocking);
+  if (auto v = obj.get("line_blocking")) p.line_blocking = read_values<LineBlocking>(*v, read_line_blocking);
   return p;
 }
 
@@ -135,7 +136,7 @@ void check_configurations(const SweepRequest& sweep) {
                               sweep.parameters.cascades.size(), sweep.parameters.rsm.size(),
                               sweep.parameters.vpl_downsample.size(), sweep.parameters.bounces.size(),
                               sweep.parameters.occlusion.size(), sweep.parameters.transfer.size(),
-                              sweep.parameters.blocking.size()})
+                              sweep.parameters.blocking.size(), sweep.parameters.line_blocking.size()})
     combinations *= std::max<std::size_t>(n, 1);
   count += combinations;
   if (count > limits::max_sweep_configurations)
@@ -250,6 +251,7 @@ std::vector<SweepSettings> sweep_configurations(const SweepRequest& sweep) {
   vary(p.occlusion, [](SweepSettings& s, bool v) { s.occlusion = v; });
   vary(p.transfer, [](SweepSettings& s, Transfer v) { s.transfer = v; });
   vary(p.blocking, [](SweepSettings& s, Blocking v) { s.blocking = v; });
+  vary(p.line_blocking, [](SweepSettings& s, LineBlocking v) { s.line_blocking = v; });
   // Each row names the transfer it ran.
   for (SweepSettings& s : grid) s.transfer = resolved_transfer({s.grid[0], s.grid[1], s.grid[2]}, s.transfer);
   configurations.insert(configurations.end(), grid.begin(), grid.end());
@@ -274,6 +276,7 @@ SweepSettings settings_of(const Lpv& lpv) {
   s.occlusion = lpv.occlusion;
   s.transfer = lpv.transfer;
   s.blocking = lpv.blocking;
+  s.line_blocking = lpv.line_blocking;
   return s;
 }
 
@@ -290,6 +293,7 @@ RenderRequest request_for(const RenderRequest& base, const SweepSettings& settin
   lpv.occlusion = settings.occlusion;
   lpv.transfer = settings.transfer;
   lpv.blocking = settings.blocking;
+  lpv.line_blocking = settings.line_blocking;
   return request;
 }
 

@@ -65,6 +65,7 @@ struct SweepParameters {
   std::vector<bool> occlusion;
   std::vector<Transfer> transfer;
   std::vector<Blocking> blocking;
+  std::vector<LineBlocking> line_blocking;
 };
 
 // A sweep times each row's frame this many times unless its base says otherwise: the fewest
@@ -104,8 +105,9 @@ SweepRequest parse_sweep_request(std::string_view json_text);
 
 // The keys of a sweep's "parameters", in the order sweep_configurations varies them: the
 // first varies slowest.
-inline constexpr std::array<std::string_view, 9> sweep_parameter_keys{
-    "grid", "iterations", "cascades", "rsm", "vpl_downsample", "bounces", "occlusion", "transfer", "blocking"};
+inline constexpr std::array<std::string_view, 10> sweep_parameter_keys{
+    "grid",      "iterations", "cascades", "rsm",      "vpl_downsample",
+    "bounces",   "occlusion",  "transfer", "blocking", "line_blocking"};
 
 // Every combination of the parameters (the first of sweep_parameter_keys varies slowest),
 // after the LPV-off row when asked for, then the path-traced rows.

@@ -258,6 +258,10 @@ Blocking reader::read_blocking(const Field& f) {
   return as_enum(f, std::array{Blocking::projected, Blocking::sh_lobe});
 }
 
+LineBlocking reader::read_line_blocking(const Field& f) {
+  return as_enum(f, std::array{LineBlocking::paired, LineBlocking::multiplied});
+}
+
 std::uint32_t reader::read_bounces(const Field& f) {
   if (f.value->is_string()) {
     if (f.value->get<std::string>() == "all") return all_bounces;
@@ -292,8 +296,7 @@ Lpv read_lpv(const Field& f) {
   if (auto v = obj.get("bounces")) lpv.bounces = read_bounces(*v);
   if (auto v = obj.get("injection")) lpv.injection = as_enum(*v, injections);
   if (auto v = obj.get("far_lines")) lpv.far_lines = as_enum(*v, std::array{FarLines::per_cell, FarLines::per_block});
-  if (auto v = obj.get("line_blocking"))
-    lpv.line_blocking = as_enum(*v, std::array{LineBlocking::paired, LineBlocking::multiplied});
+  if (auto v = obj.get("line_blocking")) lpv.line_blocking = read_line_blocking(*v);
   if (auto v = obj.get("transfer")) lpv.transfer = read_transfer(*v);
   if (auto v = obj.get("injection_offset")) lpv.injection_offset = as_float(*v, 0.0f, limits::max_injection_offset);
   if (auto v = obj.get("intensity")) lpv.intensity = as_float(*v, 0.0f, limits::max_lpv_intensity);

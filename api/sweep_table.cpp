@@ -70,7 +70,7 @@ std::vector<std::string> pass_names(const std::vector<SweepRow>& rows) {
 std::vector<std::string> csv_header(const std::vector<std::string>& passes) {
   std::vector<std::string> header = {"lpv",      "path_traced_samples", "grid_x",  "grid_y",    "grid_z",
                                      "iterations", "cascades",          "rsm",     "vpl_downsample", "bounces",
-                                     "occlusion", "transfer",           "blocking", "frames",
+                                     "occlusion", "transfer",           "blocking", "line_blocking", "frames",
                                      "gpu_ms",   "gpu_ms_min",          "gpu_ms_max", "wall_ms"};
   for (const char* image : {"final_", "indirect_"}) {
     for (const auto& [name, field] : error_metric_fields) header.push_back(std::string(image) + name);
@@ -100,6 +100,7 @@ std::vector<std::string> csv_row(const SweepRow& row, const std::vector<std::str
                                      bool_text(s.occlusion),
                                      to_string(s.transfer),
                                      to_string(s.blocking),
+                                     to_string(s.line_blocking),
                                      std::to_string(row.frames),
                                      number_text(row.gpu_ms),
                                      number_text(row.gpu_ms_range.first),
@@ -146,7 +147,8 @@ json to_json(const SweepSettings& s) {
           {"bounces", bounces_json(s.bounces)},
           {"occlusion", s.occlusion},
           {"transfer", to_string(s.transfer)},
-          {"blocking", to_string(s.blocking)}};
+          {"blocking", to_string(s.blocking)},
+          {"line_blocking", to_string(s.line_blocking)}};
 }
 
 std::string describe(const SweepSettings& s) {
@@ -156,7 +158,8 @@ std::string describe(const SweepSettings& s) {
          ", " + counted(s.iterations, "iteration") + ", " + counted(s.cascades, "cascade") + ", RSM " +
          std::to_string(s.rsm) + ", VPL downsample " + std::to_string(s.vpl_downsample) + ", " +
          describe_bounces(s.bounces) + ", occlusion " + (s.occlusion ? "on" : "off") + ", transfer " +
-         to_string(s.transfer) + ", blocking " + to_string(s.blocking);
+         to_string(s.transfer) + ", blocking " + to_string(s.blocking) +
+         (s.transfer == Transfer::gather ? ", line blocking " + to_string(s.line_blocking) : std::string());
 }
 
 nlohmann::json to_json(const ErrorMetrics& errors) {

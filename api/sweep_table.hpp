@@ -26,6 +26,7 @@ struct SweepSettings {
   bool occlusion = true;
   Transfer transfer = Transfer::sharpened;
   Blocking blocking = Blocking::projected;
+  LineBlocking line_blocking = LineBlocking::paired;
   // > 0: not a raster frame but the reference path tracer (reference/path_tracer.hpp) at this
   // many paths per pixel, with the reference's bounces and a seed of its own; lpv is false.
   std::uint32_t path_traced_samples = 0;
@@ -103,7 +104,7 @@ void mark_pareto(SweepTable& table);
 // RFC 4180 (CRLF line ends, fields with a comma, quote or line break quoted): a header and
 // one line per row with every field of the row: lpv, path_traced_samples, grid_x, grid_y,
 // grid_z, iterations, cascades, rsm, vpl_downsample, bounces, occlusion, transfer, blocking,
-// frames, gpu_ms, gpu_ms_min,
+// line_blocking, frames, gpu_ms, gpu_ms_min,
 // gpu_ms_max, wall_ms, final_<metric> and indirect_<metric> for every ErrorMetrics field,
 // pareto, pareto_uncertain, device (last of the fixed columns: a device's name holds commas),
 // then one "<pass>_gpu_ms" column
@@ -114,7 +115,7 @@ void mark_pareto(SweepTable& table);
 std::string to_csv(const SweepTable& table);
 
 // {"settings": {"lpv", "path_traced_samples", "grid": [x, y, z], "iterations", "cascades", "rsm",
-//  "vpl_downsample", "bounces", "occlusion", "transfer", "blocking"}, "label", "device",
+//  "vpl_downsample", "bounces", "occlusion", "transfer", "blocking", "line_blocking"}, "label", "device",
 //  "passes": [{"name", "gpu_ms"}], "frames", "gpu_ms",
 //  "gpu_ms_range": [min, max], "wall_ms", "final_error": {every ErrorMetrics field},
 //  "indirect_error": {...}, "pareto", "pareto_uncertain"}.

@@ -55,6 +55,9 @@ SweepSettings read_settings(const Field& f) {
   s.occlusion = as_bool(f.member("occlusion"));
   s.transfer = read_transfer(f.member("transfer"));
   s.blocking = read_blocking(f.member("blocking"));
+  // Tables written before the gather paired its faces multiplied them: the only form then.
+  const auto line_blocking = f.optional_member("line_blocking");
+  s.line_blocking = line_blocking ? read_line_blocking(*line_blocking) : LineBlocking::multiplied;
   return s;
 }
 

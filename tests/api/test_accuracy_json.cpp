@@ -191,6 +191,17 @@ TEST(SweepRequest, VariesTheBlockingToCompareTheModels) {
   EXPECT_EQ(api::request_for(s.base, rows[2]).lpv.blocking, api::Blocking::projected);
 }
 
+// The gather's two forms of blocking along a line, side by side on one front.
+TEST(SweepRequest, VariesTheLineBlockingToCompareItsForms) {
+  const api::SweepRequest s = api::parse_sweep_request(
+      R"({"base": {"lpv": {"transfer": "gather"}}, "parameters": {"line_blocking": ["multiplied", "paired"]}})");
+  const auto rows = api::sweep_configurations(s);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(api::request_for(s.base, rows[1]).lpv.line_blocking, api::LineBlocking::multiplied);
+  EXPECT_EQ(api::request_for(s.base, rows[2]).lpv.line_blocking, api::LineBlocking::paired);
+  EXPECT_EQ(api::to_json(rows[1])["line_blocking"], "multiplied");
+}
+
 TEST(SweepRequest, AxisMayNameFlip) {
   const api::SweepRequest s = api::parse_sweep_request(R"({"base": {}, "axis": {"image": "indirect", "metric": "flip"}})");
   EXPECT_EQ(s.axis.metric, api::SweepMetric::flip);
@@ -237,6 +248,8 @@ TEST(SweepRequest, ErrorsNameTheirField) {
             "parameters.grid");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"blocking": ["two_sided"]}})"),
             "parameters.blocking[0]");
+  EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"line_blocking": ["paired", "summed"]}})"),
+            "parameters.line_blocking[1]");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "parameters": {"speed": [1]}})"), "parameters.speed");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "axis": {"metric": "psnr"}})"), "axis.metric");
   EXPECT_EQ(field_of_sweep_error(R"({"base": {}, "path_traced": {"samples": [4, 0]}})"), "path_traced.samples[1]");

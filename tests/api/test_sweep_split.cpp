@@ -139,6 +139,14 @@ TEST(SweepTableRead, ATableFromBeforeFlipReadsItAsUnmeasured) {
   EXPECT_EQ(back.rows[0].final_error.rmse, r.final_error.rmse) << "the other metrics still read";
 }
 
+// Tables written before the gather paired its faces have no line_blocking: they multiplied them.
+TEST(SweepTableRead, ATableFromBeforeLineBlockingReadsItAsMultiplied) {
+  json table = api::to_json(api::SweepTable{{timed(1.0, 0.1)}, {}});
+  EXPECT_EQ(api::sweep_table_from_json(table).rows[0].settings.line_blocking, api::LineBlocking::paired);
+  table["rows"][0]["settings"].erase("line_blocking");
+  EXPECT_EQ(api::sweep_table_from_json(table).rows[0].settings.line_blocking, api::LineBlocking::multiplied);
+}
+
 TEST(SweepTableRead, WhatIsMissingOrWrongIsNamed) {
   json table = api::to_json(api::SweepTable{{timed(1.0, 0.1)}, {}});
   table["rows"][0]["settings"].erase("grid");
