@@ -97,9 +97,7 @@ struct Arrival {
   float any_light;
   ivec3 start;
 };
-Arrival arrival(int record, ivec3 cell, uvec3 dims) {
-  vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
-  vec3 centre = imageLoad(sources, record + 2).xyz;
+Arrival arrival_from(vec4 emitter, vec3 centre, ivec3 cell, uvec3 dims) {
   vec3 d = vec3(cell) - centre;
   Arrival a;
   a.any_light = 0.0;
@@ -110,6 +108,10 @@ Arrival arrival(int record, ivec3 cell, uvec3 dims) {
   a.start = lpv_gather_line_start(centre, emitter, lpv.scales.w, ivec3(dims));
   return a;
 }
+Arrival arrival(int record, ivec3 cell, uvec3 dims) {
+  return arrival_from(lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y), imageLoad(sources, record + 2).xyz,
+                      cell, dims);
+}
 
 // The record of a window's block, and whether it holds any light.
 int record_texel(ivec3 block, int first, ivec3 level_dims) {
@@ -119,8 +121,10 @@ vec3 record_flux(int record) { return imageLoad(sources, record + 1).xyz; }
 bool lit(vec3 flux_per_pi) { return flux_per_pi.x + flux_per_pi.y + flux_per_pi.z > 0.0; }
 
 // A level above 0 with shared far lines: its window's records 8 at a time, each lane of the
-// cell's 2 x 2 x 2 block walking one record's line to the block once (lpv_gather_shared_end),
-// the 8 cells taking every walk by shuffles and adding their own last faces.
+// cell's 2 x 2 x 2 block reading one record and walking its line to the block once
+// (lpv_gather_shared_end), the 8 cells taking the record and the walk by shuffles (a lane
+// index every lane of the run shares: one permute, where 8 lanes loading the same texel made
+// 8 loads) and adding their own last faces.
 void gather_far_shared(LpvGatherWindow window, int level, ivec3 cell, bool inside, uvec3 dims, inout vec3 cube[6]) {
   ivec3 level_dims = lpv_gather_level_dims(ivec3(dims), level);
   int first = lpv_gather_level_first(ivec3(dims), level);
@@ -128,14 +132,20 @@ void gather_far_shared(LpvGatherWindow window, int level, ivec3 cell, bool insid
   int count = n.x * n.y * n.z;
   uint lane = gl_SubgroupInvocationID & 7u, block_lanes = gl_SubgroupInvocationID & ~7u;
   for (int base = 0; base < count; base += 8) {
+    // The record this lane reads (none past the window's end, or gathered finer: the block's
+    // cells share their parent, so it is gathered finer for all of them alike, or dark).
     vec4 shared_line = lpv_gather_line_blocked();
+    vec3 flux = vec3(0.0), centre = vec3(0.0);
+    vec4 emitter = vec4(0.0);
     int p = base + int(lane);
     if (p < count) {
       ivec3 block = window.lo + ivec3(p % n.x, (p / n.x) % n.y, p / (n.x * n.y));
       int record = record_texel(block, first, level_dims);
-      if (!lpv_gather_gathered_finer(block, cell, level) && lit(record_flux(record))) {
-        vec4 emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
-        ivec3 start = lpv_gather_line_start(imageLoad(sources, record + 2).xyz, emitter, lpv.scales.w, ivec3(dims));
+      if (!lpv_gather_gathered_finer(block, cell, level)) flux = record_flux(record);
+      if (lit(flux)) {
+        emitter = lpv_gather_emitter(imageLoad(sources, record), lpv.transfer.y);
+        centre = imageLoad(sources, record + 2).xyz;
+        ivec3 start = lpv_gather_line_start(centre, emitter, lpv.scales.w, ivec3(dims));
         ivec3 end = lpv_gather_shared_end(start, cell, ivec3(dims));
         shared_line = walk(lpv_gather_line_begin(), start, end, start, end, normalize(vec3(end - start)), dims);
       }
@@ -143,11 +153,12 @@ void gather_far_shared(LpvGatherWindow window, int level, ivec3 cell, bool insid
     for (int j = 0; j < 8 && base + j < count; ++j) {
       uint lane_j = block_lanes | uint(j);
       vec4 line_to_end = PAIRED_FACES ? subgroupShuffle(shared_line, lane_j) : vec4(subgroupShuffle(shared_line.x, lane_j), 0.0, 0.0, 0.0);
-      ivec3 block = window.lo + ivec3((base + j) % n.x, ((base + j) / n.x) % n.y, (base + j) / (n.x * n.y));
-      int record = record_texel(block, first, level_dims);
-      vec3 flux_per_pi = record_flux(record);
-      if (inside && lpv_gather_line_open(line_to_end) && !lpv_gather_gathered_finer(block, cell, level) && lit(flux_per_pi)) {
-        Arrival a = arrival(record, cell, dims);
+      // Shuffled by every lane before any branch: a shuffle reads only lanes that run it.
+      vec3 flux_per_pi = subgroupShuffle(flux, lane_j);
+      vec4 emitter_j = subgroupShuffle(emitter, lane_j);
+      vec3 centre_j = subgroupShuffle(centre, lane_j);
+      if (inside && lpv_gather_line_open(line_to_end) && lit(flux_per_pi)) {
+        Arrival a = arrival_from(emitter_j, centre_j, cell, dims);
         if (a.any_light > 0.0) {
           ivec3 end = lpv_gather_shared_end(a.start, cell, ivec3(dims));
           vec4 line = walk(line_to_end, end, cell, a.start, cell, normalize(vec3(cell - a.start)), dims);
