@@ -57,8 +57,8 @@ vec4 walk(vec4 line, ivec3 from, ivec3 to, ivec3 source, ivec3 target, vec3 w, u
     ivec3 ahead = cell;
     ahead[axis] += step[axis];
     ivec3 owner = step[axis] > 0 ? cell : ahead;  // a face is stored with the cell below it
-    vec3 to_source = vec3(source) - 0.5 * (vec3(cell) + vec3(ahead));
-    vec3 to_target = vec3(target) - 0.5 * (vec3(cell) + vec3(ahead));
+    vec3 face_centre = 0.5 * (vec3(cell) + vec3(ahead));
+    vec3 to_source = vec3(source) - face_centre, to_target = vec3(target) - face_centre;
     if (PAIRED_FACES) {
       vec4 cover = imageLoad(face_covers, lpv_face_cover_texel(owner, axis, dims));
       line = lpv_gather_line_pair(line, axis, lpv_gather_face_cover(cover, axis, w, to_source, to_target));

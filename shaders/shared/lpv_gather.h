@@ -95,6 +95,18 @@ LPV_FUNC lpv_real lpv_gather_axis(vec4 emitter, vec3 d, int a) {
 // each surface to the corners of the cell around it, and a face takes the mean of its corners.
 LPV_CONST_F LPV_GATHER_BLOCKER_REACH = 1.0;  // cells
 
+// The blockers' first moment m = sum p n, from their SH; whether their plane, through the face's
+// centre along m, separates the line's ends by more than LPV_GATHER_BLOCKER_REACH.
+LPV_FUNC vec3 lpv_gather_first_moment(vec4 b) { return vec3(-b.w, -b.y, b.z) / SH_COSINE_C1; }  // sum p n (b = sum p cosine lobe(n))
+LPV_FUNC bool lpv_gather_separates(vec3 m, vec3 to_source, vec3 to_cell) {
+  const lpv_real length_m = sqrt(dot(m, m));
+  if (!(length_m > lpv_real(0))) return false;
+  const lpv_real source_side = dot(to_source, m) / length_m;
+  const lpv_real cell_side = dot(to_cell, m) / length_m;
+  const lpv_real reach = LPV_GATHER_BLOCKER_REACH;
+  return (source_side < -reach && cell_side > reach) || (source_side > reach && cell_side < -reach);
+}
+
 // The fraction of light along unit w, on the line from a source to the gathering cell, that
 // crosses a face whose blockers have the SH b (their potentials times their cosine lobes) and
 // the spread of their normals (lpv_sh.h, "Blocking"); `to_source` and `to_cell` go from the
@@ -111,17 +123,6 @@ LPV_CONST_F LPV_GATHER_BLOCKER_REACH = 1.0;  // cells
 // the normals that cancel along each axis, |n_k| summed less |m_k| (nothing for a crease
 // where a floor meets a wall, whose two normals cancel nowhere; the first took such a crease
 // for a closed surface and stopped the light between the floor and the wall).
-// The blockers' first moment m = sum p n, from their SH; whether their plane, through the face's
-// centre along m, separates the line's ends by more than LPV_GATHER_BLOCKER_REACH.
-LPV_FUNC vec3 lpv_gather_first_moment(vec4 b) { return vec3(-b.w, -b.y, b.z) / SH_COSINE_C1; }  // sum p n (b = sum p cosine lobe(n))
-LPV_FUNC bool lpv_gather_separates(vec3 m, vec3 to_source, vec3 to_cell) {
-  const lpv_real length_m = sqrt(dot(m, m));
-  if (!(length_m > lpv_real(0))) return false;
-  const lpv_real source_side = dot(to_source, m) / length_m;
-  const lpv_real cell_side = dot(to_cell, m) / length_m;
-  const lpv_real reach = LPV_GATHER_BLOCKER_REACH;
-  return (source_side < -reach && cell_side > reach) || (source_side > reach && cell_side < -reach);
-}
 LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, vec3 to_source, vec3 to_cell) {
   const vec3 m = lpv_gather_first_moment(b);
   const lpv_real u = dot(m, w);
@@ -131,7 +132,7 @@ LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, vec3 to_so
   return lpv_real(1) - clamp(open_part + closed, lpv_real(0), lpv_real(1));
 }
 
-// Blocking along a line (api::LineBlocking, docs/lpv.md "Blocking along a line"). The geometry
+// Blocking along a line (api::LineBlocking, docs/lpv.md "The gather", 8). The geometry
 // volume splats a blocker to the corners of the cell around it and a face takes the mean of its
 // corners, so a wall lies in the faces within a cell of it: across its own axis in the two
 // planes of corners either side of it, in shares that sum to the wall (halves for a wall in the
@@ -147,7 +148,7 @@ LPV_FUNC lpv_real lpv_gather_transmitted(vec4 b, vec3 spread, vec3 w, vec3 to_so
 // axis before it stops the light, (1 - (c_last + c)) / (1 - c_last) of it, so that the two shares
 // of one wall stop what the wall covers, (1 - c_1) (1 - (c_1 + c_2)) / (1 - c_1) = 1 - c_1 - c_2,
 // and walls further apart still stop the light each in turn. Blockers spread evenly through
-// space (cover c on every face) stop (1 - 2c) / (1 - c) of the light a face instead of 1 - c.
+// space (cover c on every face) let (1 - 2c) / (1 - c) of the light through a face, not 1 - c.
 //
 // A line's state: the fraction it lets through so far (x) and the covers of the last face it
 // crossed across each axis (yzw, for "paired"). A walk continues from the state it is given.
