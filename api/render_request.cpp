@@ -131,6 +131,7 @@ std::string to_string(FarLines f) {
 std::string to_string(LineBlocking b) {
   switch (b) {
     case LineBlocking::paired: return "paired";
+    case LineBlocking::located: return "located";
     case LineBlocking::multiplied: return "multiplied";
   }
   throw std::invalid_argument("api::to_string: invalid LineBlocking");

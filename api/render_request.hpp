@@ -96,9 +96,12 @@ enum class FarLines { per_cell, per_block };
 // How the gather's lines of sight meet the geometry volume's faces (docs/lpv.md, "Blocking along
 // a line"): each face stopping what the blockers facing across it cover, the two faces either
 // side of a wall taken together, so that a wall a line crosses stops what it covers wherever it
-// lies in its cell ("paired"); or each face's projected blocking, multiplied face by face, which
-// lets up to a quarter of the light through a wall in the middle of a cell ("multiplied").
-enum class LineBlocking { paired, multiplied };
+// lies in its cell ("paired"); that, with the walls located within their cells for the ends of
+// the transport too, so that a surface does not read the light of cells beyond a thin wall or a
+// roof ("located": docs/lpv.md, "Shading"); or each face's projected blocking, multiplied face
+// by face, which lets up to a quarter of the light through a wall in the middle of a cell
+// ("multiplied").
+enum class LineBlocking { paired, located, multiplied };
 
 struct Output {
   std::uint32_t width = 512;

@@ -259,7 +259,7 @@ Blocking reader::read_blocking(const Field& f) {
 }
 
 LineBlocking reader::read_line_blocking(const Field& f) {
-  return as_enum(f, std::array{LineBlocking::paired, LineBlocking::multiplied});
+  return as_enum(f, std::array{LineBlocking::paired, LineBlocking::located, LineBlocking::multiplied});
 }
 
 std::uint32_t reader::read_bounces(const Field& f) {

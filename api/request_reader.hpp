@@ -21,7 +21,7 @@ std::uint32_t read_vpl_downsample(const Field& f);
 Transfer read_transfer(const Field& f);
 // "blocking": "projected" or "sh_lobe".
 Blocking read_blocking(const Field& f);
-// "line_blocking": "paired" or "multiplied".
+// "line_blocking": "paired", "located" or "multiplied".
 LineBlocking read_line_blocking(const Field& f);
 // "bounces": an integer in [1, limits::max_bounces], or "all" (all_bounces).
 std::uint32_t read_bounces(const Field& f);

@@ -141,10 +141,17 @@ DirectLightInputs FrameExecutor::direct_light(const Frame& frame) const {
           lit ? std::uint32_t(frame.lights.lights.size()) : 0u};
 }
 
+// Whether the geometry volume locates its walls for the shading (lpv.line_blocking "located",
+// with the gather and its blockers).
+bool FrameExecutor::walls_located(const Frame& frame) {
+  return frame.plan.run[kGather] && frame.plan.run[kGeometryVolume] && frame.lpv.occlusion &&
+         frame.request.lpv.line_blocking == api::LineBlocking::located;
+}
+
 // What the forward pass and the shading read of the LPV: its cascades when it ran, else none.
 IndirectLightInputs FrameExecutor::indirect_light(const Frame& frame) const {
   return {frame.resources.lpv_uniforms, *frame.resources.volumes,
-          frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u};
+          frame.plan.run[kInject] ? std::uint32_t(frame.lpv.cascades.size()) : 0u, walls_located(frame)};
 }
 
 // Records one pass (for the grid passes: one cascade of it), bracketed by the pass timer.
@@ -167,11 +174,15 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
       gbuffer_.record(cmd, frame.gpu, frame.draw_order, frame.resources.targets->camera, frame.resources.frame_uniforms);
       break;
     case kInject:
-      if (cascade == 0 && !frame.plan.run[kRsm]) RsmPass::record_skipped(cmd, *frame.resources.rsm_maps);
+      if (cascade == 0 && !frame.plan.run[kRsm] && !frame.plan.run[kGeometryVolume])
+        RsmPass::record_skipped(cmd, *frame.resources.rsm_maps);
       inject_.record(cmd, cascade, frame.resources.lpv_uniforms, frame.plan.run[kRsm] ? &*frame.resources.rsm_maps : nullptr,
-                     frame.lpv.rsm_views, lpv, frame.lpv.cascades[cascade].cell_size, frame.gpu, *frame.resources.volumes);
+                     frame.lpv.rsm_views, lpv, frame.lpv.cascades[cascade].cell_size, frame.gpu, *frame.resources.volumes,
+                     walls_located(frame));
       break;
     case kGeometryVolume: {
+      // The first grid pass of the frame: the RSMs' layout, when no light drew them.
+      if (cascade == 0 && !frame.plan.run[kRsm]) RsmPass::record_skipped(cmd, *frame.resources.rsm_maps);
       if (cascade == 0) {  // the camera's surfels, drawn once for every cascade (timed with the first)
         if (lpv.occlusion_from_camera)
           gbuffer_.record(cmd, frame.gpu, frame.draw_order, frame.resources.targets->surfels, frame.resources.frame_uniforms);
@@ -180,7 +191,8 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
       }
       GeometrySources sources = geometry_sources(lpv, frame.plan.run[kRsm]);
       sources.bounces = frame.lpv.bounces;
-      sources.covers = frame.plan.run[kGather] && lpv.line_blocking == api::LineBlocking::paired;
+      sources.covers = frame.plan.run[kGather] && lpv.line_blocking != api::LineBlocking::multiplied;
+      sources.walls = walls_located(frame);
       geometry_.record(cmd, cascade, frame.resources.lpv_uniforms, *frame.resources.rsm_maps, frame.lpv.rsm_views,
                        frame.resources.targets->surfels, frame.gpu, sources, *frame.resources.volumes);
       break;
@@ -191,7 +203,8 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
       break;
     case kGather:
       gather_.record(cmd, cascade, steps.first - 1, steps.count, {frame.lpv.occlusion, lpv.far_lines, lpv.line_blocking},
-                     {gathered_bounces(lpv.bounces), &frame.gpu.blockers, frame.gpu.blocker_count, lpv.injection},
+                     {gathered_bounces(lpv.bounces), &frame.gpu.blockers, frame.gpu.blocker_count, lpv.injection,
+                      walls_located(frame)},
                      frame.resources.lpv_uniforms, *frame.resources.volumes);
       break;
     case kForward:

@@ -77,6 +77,7 @@ class FrameExecutor {
   void record_pass(Pass pass, std::uint32_t cascade, Steps steps, const Frame& frame);
   DirectLightInputs direct_light(const Frame& frame) const;
   IndirectLightInputs indirect_light(const Frame& frame) const;
+  static bool walls_located(const Frame& frame);
 
   const vkx::Device& device_;
   ShadowPass shadow_;

@@ -7,7 +7,8 @@ std::vector<ScheduledPass> pass_schedule(const FramePlan& plan, std::uint32_t ca
   for (Pass p : {kShadow, kRsm, kGBuffer})
     if (plan.run[p]) schedule.push_back({p, 0});
   for (std::uint32_t c = 0; c < cascades; ++c)
-    for (Pass p : {kInject, kGeometryVolume, kPropagate, kGather})
+    // The geometry volume first: the injection reads its located walls.
+    for (Pass p : {kGeometryVolume, kInject, kPropagate, kGather})
       if (plan.run[p]) schedule.push_back({p, c});
   for (Pass p : {kForward, kShade, kReadback})
     if (plan.run[p]) schedule.push_back({p, 0});

@@ -29,6 +29,7 @@ layout(std140, set = 0, binding = FORWARD_LPV) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = FORWARD_ACCUMULATED_R, rgba32f) uniform readonly imageBuffer accumulated_r;
 layout(set = 0, binding = FORWARD_ACCUMULATED_G, rgba32f) uniform readonly imageBuffer accumulated_g;
 layout(set = 0, binding = FORWARD_ACCUMULATED_B, rgba32f) uniform readonly imageBuffer accumulated_b;
+layout(set = 0, binding = FORWARD_WALLS, rgba32ui) uniform readonly uimageBuffer walls;
 #include "shared/direct_light.glsl"
 #include "shared/lpv_irradiance.glsl"
 #include "shared/display_encode.glsl"

@@ -28,6 +28,7 @@ layout(std430, set = 0, binding = GATHER_BOUNCE_BLOCKERS) readonly buffer Blocke
 layout(set = 0, binding = GATHER_BOUNCE_LIGHT_R, rgba32f) uniform readonly imageBuffer accumulated_r;
 layout(set = 0, binding = GATHER_BOUNCE_LIGHT_G, rgba32f) uniform readonly imageBuffer accumulated_g;
 layout(set = 0, binding = GATHER_BOUNCE_LIGHT_B, rgba32f) uniform readonly imageBuffer accumulated_b;
+layout(set = 0, binding = GATHER_BOUNCE_WALLS, rgba32ui) uniform readonly uimageBuffer walls;
 layout(std430, set = 0, binding = GATHER_BOUNCE_INJECTED) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
 layout(std430, set = 0, binding = GATHER_BOUNCE_FLUX_STATS) buffer FluxStats { int64_t flux_stats[]; };
 layout(push_constant) uniform Push { LpvGatherBouncePush push; };
@@ -67,5 +68,12 @@ void main() {
   float values[SPLAT_VALUES];
   bool lit = flux.r + flux.g + flux.b > 0.0;
   vpl_splat(b.position.xyz, n, flux, low, f, values);  // its own inside test: not the one above
-  splat_subgroup(lit, low, f, values, vpl_last_cell(), lpv.scales.x);  // by the whole subgroup
+  // Past the located walls, as the injection adds the first bounce's VPLs.
+  uvec2 factors = SPLAT_UNWEIGHED;
+  if (LOCATED_WALLS) {
+    float scale;
+    factors = wall_splat_factors(push.cascade, vpl_grid_point(b.position.xyz, n), n, low, f, vpl_last_cell(), scale);
+    for (uint k = 0u; k < SPLAT_VALUES; ++k) values[k] *= scale;
+  }
+  splat_subgroup(lit, low, f, values, vpl_last_cell(), lpv.scales.x, factors);  // by the whole subgroup
 }

@@ -128,5 +128,6 @@ void main() {
   vec3 f;
   float values[SPLAT_VALUES];
   bool adds = surfel_splat(position, found ? normalize(normal) : vec3(0.0, 0.0, 1.0), area, albedo, low, f, values);
-  splat_subgroup(found && adds, low, f, values, ivec3(lpv.cascades[push.cascade].dims.xyz), lpv.scales.y);
+  splat_subgroup(found && adds, low, f, values, ivec3(lpv.cascades[push.cascade].dims.xyz), lpv.scales.y,
+                 SPLAT_UNWEIGHED);
 }

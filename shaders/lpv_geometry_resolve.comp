@@ -2,12 +2,13 @@
 // Geometry volume, step 3: for each cell, the blocking potential on its +X, +Y and +Z faces
 // (its SH and spread), the mean of each face's four corners. Propagation between two
 // neighbouring cells reads the face they share. Also the blockers' mean albedo per face, for
-// the light they reflect.
+// the light they reflect, and the walls located about its +X, +Y and +Z faces (lpv_walls.h).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/geometry_volume_interface.h"
 #include "shared/gpu_types.h"
 #include "shared/lpv_sh.h"
 #include "shared/lpv_gather.h"
+#include "shared/lpv_walls.h"
 #include "shared/lpv_grid.glsl"
 #include "shared/texel_store.glsl"
 
@@ -18,17 +19,43 @@ layout(set = 0, binding = GEOMETRY_RESOLVE_CORNERS, rgba32f) uniform readonly im
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACES) writeonly buffer Faces { u64vec2 faces[]; };
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACE_ALBEDO) writeonly buffer FaceAlbedo { u64vec2 face_albedo[]; };
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACE_COVER) writeonly buffer FaceCover { u64vec2 face_cover[]; };
+// Texel cascade * cells + cell: the walls located about its +X, +Y, +Z faces (lpv_walls_to_unorm).
+layout(std430, set = 0, binding = GEOMETRY_RESOLVE_WALLS) writeonly buffer Walls { uvec4 walls[]; };
 layout(push_constant) uniform Push { GeometryResolvePush push; };
 // The blockers' albedo serves bounces only: without them its faces are not written.
 layout(constant_id = 0) const bool BOUNCES = true;
 // The gather pairs its lines' faces (lpv.line_blocking "paired"): each face's cover texel
 // (lpv_gather_cover_texel), so that its walk reads one texel a face, not two.
 layout(constant_id = 1) const bool COVERS = true;
+// The shading locates the walls (lpv.line_blocking "located"): the walls texel of every cell.
+layout(constant_id = 2) const bool WALLS = true;
+
+// The covers across `axis` (lpv_wall_plane_covers: facing + and -) of the face in the plane of
+// corners `plane` along it, at the cell's place across it: the mean of its four corners; 0
+// past the lattice.
+vec2 plane_covers(ivec3 cell, int axis, int plane, uvec3 dims) {
+  if (plane < 0 || plane > int(dims[axis])) return vec2(0.0);
+  int u = (axis + 1) % 3;
+  int v = (axis + 2) % 3;
+  vec4 sh = vec4(0.0);
+  vec3 spread = vec3(0.0);
+  for (int k = 0; k < 4; ++k) {
+    ivec3 corner = cell;
+    corner[axis] = plane;
+    corner[u] += k & 1;
+    corner[v] += k >> 1;
+    int texel = int(LPV_GV_CORNER_TEXELS * lpv_cell_index(uvec3(corner), dims + 1u));
+    sh += 0.25 * imageLoad(corners, texel);
+    spread += 0.25 * imageLoad(corners, texel + 1).xyz;
+  }
+  return lpv_wall_plane_covers(lpv_gather_first_moment(sh)[axis], spread[axis]);
+}
 
 void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
   uvec3 dims = lpv.cascades[push.cascade].dims.xyz;
   if (any(greaterThanEqual(cell, ivec3(dims)))) return;
+  uvec4 located = uvec4(0u);
   for (int axis = 0; axis < 3; ++axis) {
     // The face at +axis: its corners have cell[axis] + 1 on the axis and both values on the others.
     int u = (axis + 1) % 3;
@@ -48,8 +75,20 @@ void main() {
     }
     faces[lpv_face_texel(cell, axis, dims)] = texel_bits(sh);
     faces[lpv_face_spread_texel(cell, axis, dims)] = texel_bits(spread);
-    if (COVERS) face_cover[lpv_face_cover_texel(cell, axis, dims)] = texel_bits(lpv_gather_cover_texel(sh, spread.xyz, axis));
+    vec4 cover = lpv_gather_cover_texel(sh, spread.xyz, axis);
+    if (WALLS) {
+      // The wall about this face, located from its plane and the planes of corners either side.
+      int plane = cell[axis] + 1;
+      vec2 below = plane_covers(cell, axis, plane - 1, dims);
+      vec2 at = lpv_wall_plane_covers(lpv_gather_first_moment(sh)[axis], spread[axis]);
+      vec2 above = plane_covers(cell, axis, plane + 1, dims);
+      vec4 walls = vec4(lpv_wall_locate(below.x, at.x, above.x), lpv_wall_locate(below.y, at.y, above.y));
+      located[axis] = packUnorm4x8(lpv_walls_to_unorm(walls));
+      cover *= lpv_wall_share(walls, at.x + at.y);
+    }
+    if (COVERS) face_cover[lpv_face_cover_texel(cell, axis, dims)] = texel_bits(cover);
     if (BOUNCES)
       face_albedo[lpv_face_albedo_texel(cell, axis, dims)] = texel_bits(vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
   }
+  if (WALLS) walls[lpv_accumulated_texel(cell, push.cascade, dims)] = located;
 }

@@ -28,10 +28,26 @@ layout(set = 0, binding = INJECT_RSM_NORMAL, rgba32f) uniform readonly image2DAr
 layout(set = 0, binding = INJECT_RSM_FLUX, rgba32f) uniform readonly image2DArray rsm_flux;
 layout(std430, set = 0, binding = INJECT_INJECTED) buffer Injected { int64_t injected[]; };  // 12 per cell: RGB x SH
 layout(std430, set = 0, binding = INJECT_FLUX_STATS) buffer FluxStats { int64_t flux_stats[]; };
+layout(set = 0, binding = INJECT_WALLS, rgba32ui) uniform readonly uimageBuffer walls;
 layout(push_constant) uniform Push { LpvInjectRsmPush push; };
+// The geometry volume located its walls (lpv.line_blocking "located"): a VPL adds its light to
+// the cells around it as far as the walls between it and their centres let it (lpv_walls.glsl).
+layout(constant_id = 1) const bool LOCATED_WALLS = false;
 
 #include "shared/lpv_grid_flux.glsl"
 #include "shared/lpv_inject_vpl.glsl"
+#include "shared/lpv_walls.glsl"
+
+// The splat's factors for a VPL at `point` (cell units) facing `normal` (unit, or the mean of
+// several) whose lattice is (low, f): the located walls', with its values scaled to keep its
+// light; none without them.
+uvec2 located_factors(vec3 point, vec3 normal, ivec3 low, vec3 f, inout float values[SPLAT_VALUES]) {
+  if (!LOCATED_WALLS) return SPLAT_UNWEIGHED;
+  float scale;
+  uvec2 factors = wall_splat_factors(push.cascade, point, normal, low, f, vpl_last_cell(), scale);
+  for (uint i = 0u; i < SPLAT_VALUES; ++i) values[i] *= scale;
+  return factors;
+}
 
 // A VPL of the RSM, or several merged: where it is added (cell units), the flux that weighs
 // its point, and what it adds.
@@ -39,6 +55,7 @@ struct Vpl {
   vec3 flux;      // all of it, for the statistics
   bool added;     // lit and inside the cascade
   vec3 point;     // vpl_grid_point
+  vec3 normal;    // unit
   float weight;   // flux summed over the channels
   float values[SPLAT_VALUES];
 };
@@ -69,6 +86,7 @@ Vpl read_vpl(uvec2 at) {
   bool lit = v.weight > 0.0 && dot(normal, normal) > 0.0;
   vec3 n = lit ? normalize(normal) : vec3(0.0, 0.0, 1.0);
   v.point = lit ? vpl_grid_point(position / v.weight, n) : vec3(0.0);
+  v.normal = n;
   vpl_values(n, flux, v.values);
   v.added = lit && lpv_inside_distance(lpv.cascades[push.cascade], v.point) >= 0.0;
   return v;
@@ -78,6 +96,7 @@ Vpl read_vpl(uvec2 at) {
 struct Merge {
   float values[SPLAT_VALUES];
   vec3 weighted_point;
+  vec3 weighted_normal;
   float weight;
   vec3 lo;
   vec3 hi;
@@ -87,6 +106,7 @@ Merge empty_merge() {
   Merge m;
   for (uint i = 0u; i < SPLAT_VALUES; ++i) m.values[i] = 0.0;
   m.weighted_point = vec3(0.0);
+  m.weighted_normal = vec3(0.0);
   m.weight = 0.0;
   m.lo = vec3(3.0e38);
   m.hi = vec3(-3.0e38);
@@ -96,6 +116,7 @@ Merge empty_merge() {
 Merge merged(Merge a, Merge b) {
   for (uint i = 0u; i < SPLAT_VALUES; ++i) a.values[i] += b.values[i];
   a.weighted_point += b.weighted_point;
+  a.weighted_normal += b.weighted_normal;
   a.weight += b.weight;
   a.lo = min(a.lo, b.lo);
   a.hi = max(a.hi, b.hi);
@@ -106,6 +127,7 @@ Merge with_vpl(Merge m, Vpl v) {
   if (!v.added) return m;
   for (uint i = 0u; i < SPLAT_VALUES; ++i) m.values[i] += v.values[i];
   m.weighted_point += v.weight * v.point;
+  m.weighted_normal += v.weight * v.normal;
   m.weight += v.weight;
   m.lo = min(m.lo, v.point);
   m.hi = max(m.hi, v.point);
@@ -133,7 +155,8 @@ void add_one_by_one(uvec2 at) {
   ivec3 low;
   vec3 f;
   vpl_lattice(v.point, low, f);
-  splat_subgroup(v.added, low, f, v.values, vpl_last_cell(), lpv.scales.x);
+  uvec2 factors = located_factors(v.point, v.normal, low, f, v.values);
+  splat_subgroup(v.added, low, f, v.values, vpl_last_cell(), lpv.scales.x, factors);
 }
 
 void main() {
@@ -175,7 +198,8 @@ void main() {
       ivec3 low;
       vec3 f;
       vpl_lattice(v.point, low, f);
-      splat_subgroup(v.added, low, f, v.values, vpl_last_cell(), lpv.scales.x);
+      uvec2 factors = located_factors(v.point, v.normal, low, f, v.values);
+      splat_subgroup(v.added, low, f, v.values, vpl_last_cell(), lpv.scales.x, factors);
     }
     return;
   }
@@ -184,23 +208,27 @@ void main() {
       // One of: the whole tile (q = k = 0), the quad (k = 0), or its VPL k alone.
       bool added;
       vec3 point;
+      vec3 normal;
       float values[SPLAT_VALUES];
       if (whole_merged || quad_merged[q]) {
         Merge m = whole_merged ? whole : quads[q];
         added = k == 0u && (q == 0u || !whole_merged);
         point = m.weighted_point / max(m.weight, 1e-30);
+        normal = m.weighted_normal / max(m.weight, 1e-30);
         values = m.values;
       } else {
         Vpl v = read_vpl(tile_vpl(tile, q, k));
         added = v.added;
         point = v.point;
+        normal = v.normal;
         values = v.values;
       }
       if (!subgroupAny(added)) continue;
       ivec3 low;
       vec3 f;
       vpl_lattice(point, low, f);
-      splat_subgroup(added, low, f, values, vpl_last_cell(), lpv.scales.x);
+      uvec2 factors = located_factors(point, normal, low, f, values);
+      splat_subgroup(added, low, f, values, vpl_last_cell(), lpv.scales.x, factors);
     }
   }
 }

@@ -28,5 +28,5 @@ void main() {
   vec3 f;
   float values[SPLAT_VALUES];
   if (in_range && vpl_splat(emitters[i].position.xyz, emitters[i].normal.xyz, flux, low, f, values))
-    splat_point(low, f, values, vpl_last_cell(), lpv.scales.x);
+    splat_point(low, f, values, vpl_last_cell(), lpv.scales.x, SPLAT_UNWEIGHED);
 }

@@ -45,6 +45,7 @@ layout(std140, set = 0, binding = SHADE_LPV) uniform Lpv { GpuLpv lpv; };
 layout(set = 0, binding = SHADE_ACCUMULATED_R, rgba32f) uniform readonly imageBuffer accumulated_r;
 layout(set = 0, binding = SHADE_ACCUMULATED_G, rgba32f) uniform readonly imageBuffer accumulated_g;
 layout(set = 0, binding = SHADE_ACCUMULATED_B, rgba32f) uniform readonly imageBuffer accumulated_b;
+layout(set = 0, binding = SHADE_WALLS, rgba32ui) uniform readonly uimageBuffer walls;
 layout(std430, set = 0, binding = SHADE_DISPLAY) writeonly buffer Display { uint display_pixels[]; };
 #include "shared/direct_light.glsl"
 #include "shared/display_encode.glsl"

@@ -24,6 +24,7 @@ constexpr VkDeviceSize kFaceAlbedoTexelsPerCell = 3;
 constexpr VkDeviceSize kFaceAlbedoBytesPerCell = kFaceAlbedoTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
 constexpr VkDeviceSize kFaceCoverTexelsPerCell = 3;  // lpv_grid.glsl: lpv_face_cover_texel
 constexpr VkDeviceSize kFaceCoverBytesPerCell = kFaceCoverTexelsPerCell * vkx::TexelBuffer::kTexelBytes;
+constexpr VkDeviceSize kWallBytesPerCell = vkx::TexelBuffer::kTexelBytes;  // per cascade: lpv_accumulated_texel
 constexpr VkFormat kSums = VK_FORMAT_R32G32B32A32_UINT;
 constexpr std::size_t kRecordInt64s = gpu::LPV_FLUX_SLOTS * gpu::LPV_FLUX_SLOT_INT64S;  // one flux_stats record
 constexpr std::uint32_t kBounceRecords = api::limits::max_bounces;  // bounces 2 .. max + 1 (bounce_flux_record)
@@ -56,7 +57,7 @@ std::uint64_t LpvVolumes::bytes(glm::uvec3 dims, std::uint32_t cascades, std::ui
                                 std::uint32_t accumulated_texels) {
   const std::uint64_t cells = cell_count(dims);
   return cells * (kInjectedBytesPerCell + kFaceBytesPerCell + kFaceAlbedoBytesPerCell + kFaceCoverBytesPerCell +
-                  2 * kAccumulatedBytesPerTexel * accumulated_texels * cascades) +
+                  kWallBytesPerCell * cascades + 2 * kAccumulatedBytesPerTexel * accumulated_texels * cascades) +
          grid_texels(dims) * vkx::TexelBuffer::kTexelBytes +
          cell_count(dims + 1u) * (kCornerBytes + geometry_slots * kCornerSumBytesPerSlot);
 }
@@ -85,12 +86,13 @@ LpvVolumes::LpvVolumes(const vkx::Device& device, glm::uvec3 d, std::uint32_t c,
       corners(device, cell_count(d + 1u) * kCornerTexels),
       faces(device, cell_count(d) * kFaceTexelsPerCell),
       face_albedo(device, cell_count(d) * kFaceAlbedoTexelsPerCell),
-      face_cover(device, cell_count(d) * kFaceCoverTexelsPerCell) {
+      face_cover(device, cell_count(d) * kFaceCoverTexelsPerCell),
+      walls(device, cell_count(d) * c, kSums) {
   device.run_once([&](VkCommandBuffer cmd) {
     // The accumulated light of cascades a frame does not propagate, and the faces before a
     // geometry volume was ever built, are read (with zero effect).
     for (const vkx::TexelBuffer* b :
-         {&accumulated[0], &accumulated[1], &accumulated[2], &faces, &face_albedo, &face_cover})
+         {&accumulated[0], &accumulated[1], &accumulated[2], &faces, &face_albedo, &face_cover, &walls})
       vkCmdFillBuffer(cmd, b->buffer().handle(), 0, VK_WHOLE_SIZE, 0);
     vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);

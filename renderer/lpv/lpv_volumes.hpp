@@ -116,5 +116,8 @@ struct LpvVolumes {
   // Texel 3 cell + k: what the gather's paired faces read of the face at +k, its blockers' first
   // moment and the closed part of its cover (lpv_gather_cover_texel); written only for them.
   vkx::TexelBuffer face_cover;
+  // Texel cascade * cells + cell (lpv_accumulated_texel): the walls located about its +X, +Y
+  // and +Z faces (lpv_walls.h), a word of bytes each; written only when the shading reads them.
+  vkx::TexelBuffer walls;
 };
 }  // namespace renderer

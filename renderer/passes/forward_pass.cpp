@@ -22,7 +22,8 @@ ForwardPass::ForwardPass(const vkx::Device& device, const TextureSetLayout& text
       vkx::binding(gpu::FORWARD_LPV, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, fragment),
       vkx::binding(gpu::FORWARD_ACCUMULATED_R, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),
       vkx::binding(gpu::FORWARD_ACCUMULATED_G, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),
-      vkx::binding(gpu::FORWARD_ACCUMULATED_B, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment)};
+      vkx::binding(gpu::FORWARD_ACCUMULATED_B, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment),
+      vkx::binding(gpu::FORWARD_WALLS, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, fragment)};
   layout_.draw_sets = {textures.handle()};
   layout_.push_constant_bytes = sizeof(gpu::GpuDrawMaterial);
   layout_.push_constant_stages = fragment;
@@ -32,18 +33,19 @@ ForwardPass::ForwardPass(const vkx::Device& device, const TextureSetLayout& text
 const vkx::Pipeline& ForwardPass::pipeline(MaterialVariant variant, const DirectLightInputs& direct,
                                            const IndirectLightInputs& indirect, std::uint32_t curve) const {
   // Bits 0-1: the material variant; 2-3: the tone curve; 4-6: the cascades (at most 4); 7: the
-  // irradiance cube; above: the lights (11 bits).
+  // irradiance cube; 8: the located walls; above: the lights (11 bits).
   const std::uint32_t cascades = indirect.cascades;
   const std::uint32_t cube = indirect.cube() ? 1u : 0u;
-  const std::uint32_t key =
-      (direct_light_key(direct) << 8) | (cube << 7) | (cascades << 4) | (curve << 2) | variant.index();
+  const std::uint32_t walls = indirect.located_walls() ? 1u : 0u;
+  const std::uint32_t key = (direct_light_key(direct) << 9) | (walls << 8) | (cube << 7) | (cascades << 4) |
+                            (curve << 2) | variant.index();
   return pipelines_.get(key, [&] {
     vkx::GraphicsPipelineDesc g;
     g.vertex_spirv = spirv_gbuffer_vert;
     g.fragment_spirv = spirv_forward_frag;
     g.fragment_specialization = {variant.double_sided, variant.textured, direct.light_kinds,
                                  specialised_light_count(direct), curve, cascades, device_.info().uniform_branches,
-                                 cube};
+                                 cube, walls};
     g.vertex_input = scene_vertex_input();
     g.color_formats = {FrameTargets::kDisplayFormat};
     g.depth_format = GBuffer::kDepthFormat;

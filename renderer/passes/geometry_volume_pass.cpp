@@ -55,7 +55,8 @@ GeometryVolumePass::GeometryVolumePass(const vkx::Device& device) : device_(devi
                                          {gpu::GEOMETRY_RESOLVE_CORNERS, texels},
                                          {gpu::GEOMETRY_RESOLVE_FACES, buffer},
                                          {gpu::GEOMETRY_RESOLVE_FACE_ALBEDO, buffer},
-                                         {gpu::GEOMETRY_RESOLVE_FACE_COVER, buffer}},
+                                         {gpu::GEOMETRY_RESOLVE_FACE_COVER, buffer},
+                                         {gpu::GEOMETRY_RESOLVE_WALLS, buffer}},
                                         sizeof(gpu::GeometryResolvePush));
 }
 
@@ -85,8 +86,9 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
   const vkx::Pipeline& corners = corners_.get(with_albedo[0], [&] {
     return vkx::Pipeline(device_, corners_layout_, spirv_lpv_geometry_corners_comp, with_albedo);
   });
-  const std::array<std::uint32_t, 2> resolved{with_albedo[0], sources.covers ? 1u : 0u};  // BOUNCES, COVERS
-  const vkx::Pipeline& resolve = resolve_.get(resolved[0] | resolved[1] << 1, [&] {
+  const std::array<std::uint32_t, 3> resolved{with_albedo[0], sources.covers ? 1u : 0u,
+                                              sources.walls ? 1u : 0u};  // BOUNCES, COVERS, WALLS
+  const vkx::Pipeline& resolve = resolve_.get(resolved[0] | resolved[1] << 1 | resolved[2] << 2, [&] {
     return vkx::Pipeline(device_, resolve_layout_, spirv_lpv_geometry_resolve_comp, resolved);
   });
   vkx::DescriptorWriter(corners.descriptor_set())
@@ -100,6 +102,7 @@ void GeometryVolumePass::record(VkCommandBuffer cmd, std::uint32_t cascade, cons
       .buffer(gpu::GEOMETRY_RESOLVE_FACES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.faces.buffer().handle())
       .buffer(gpu::GEOMETRY_RESOLVE_FACE_ALBEDO, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.face_albedo.buffer().handle())
       .buffer(gpu::GEOMETRY_RESOLVE_FACE_COVER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.face_cover.buffer().handle())
+      .buffer(gpu::GEOMETRY_RESOLVE_WALLS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, volumes.walls.buffer().handle())
       .apply(device_.handle());
 
   const std::uint32_t slots = sources.slots();

@@ -24,6 +24,7 @@ struct GeometrySources {
   api::Injection injection = api::Injection::trilinear;  // to the 8 corners around a surfel, or the nearest
   bool bounces = false;  // the blockers' albedo is splatted and resolved too (it serves bounces only)
   bool covers = false;   // the faces' cover texels are resolved too (the gather's paired faces read them)
+  bool walls = false;    // the walls about the faces are located too (the shading reads them: lpv_walls.h)
 
   // Slots of corner sums, one per source used (at least one), and the slot of `source`
   // (gpu::LPV_GV_SOURCE_*): the sources' sums are kept apart so each corner can keep the

@@ -46,7 +46,8 @@ LpvGatherPass::LpvGatherPass(const vkx::Device& device)
                                         {gpu::GATHER_BOUNCE_LIGHT_G, kTexels},
                                         {gpu::GATHER_BOUNCE_LIGHT_B, kTexels},
                                         {gpu::GATHER_BOUNCE_INJECTED, kStorage},
-                                        {gpu::GATHER_BOUNCE_FLUX_STATS, kStorage}},
+                                        {gpu::GATHER_BOUNCE_FLUX_STATS, kStorage},
+                                        {gpu::GATHER_BOUNCE_WALLS, kTexels}},
                                        sizeof(gpu::LpvGatherBouncePush));
   tail_ = vkx::Pipeline(device,
                         vkx::compute_layout({{gpu::GATHER_TAIL_LPV, kUniform},
@@ -69,7 +70,7 @@ const vkx::Pipeline& LpvGatherPass::variant(const GatherLines& lines, const vkx:
                                             const LpvVolumes& volumes) const {
   const std::uint32_t occluded = lines.occlusion ? 1u : 0u;
   const std::uint32_t shared = lines.far_lines == api::FarLines::per_block ? 1u : 0u;
-  const std::uint32_t paired = lines.blocking == api::LineBlocking::paired ? 1u : 0u;
+  const std::uint32_t paired = lines.blocking != api::LineBlocking::multiplied ? 1u : 0u;
   const vkx::Pipeline& p = variants_.get(occluded | shared << 1 | paired << 2, [&] {
     // By constant_id: OCCLUDED (0), SHARED_FAR_LINES (1), PAIRED_FACES (2).
     const std::array<std::uint32_t, 3> constants{occluded, shared, paired};
@@ -94,11 +95,12 @@ const vkx::Pipeline& LpvGatherPass::variant(const GatherLines& lines, const vkx:
 const vkx::Pipeline& LpvGatherPass::reflection(const GatherBounces& bounces, bool splat, const vkx::Buffer& params,
                                                const LpvVolumes& volumes) const {
   const bool trilinear = bounces.injection == api::Injection::trilinear;
-  const vkx::Pipeline& p = bounce_variants_.get((trilinear ? 1u : 0u) | (splat ? 2u : 0u), [&] {
+  const std::uint32_t walls = bounces.located_walls ? 1u : 0u;
+  const vkx::Pipeline& p = bounce_variants_.get((trilinear ? 1u : 0u) | (splat ? 2u : 0u) | walls << 2, [&] {
     // By constant_id: TRILINEAR_INJECTION (0) as the first bounce's VPLs; SPLAT (1); 2 to 5
     // unused; the irradiance read one surfel at a time (UNIFORM_BRANCHES, 6) from cubes
-    // (IRRADIANCE_CUBE, 7).
-    const std::array<std::uint32_t, 8> constants{trilinear ? 1u : 0u, splat ? 1u : 0u, 0u, 0u, 0u, 0u, 0u, 1u};
+    // (IRRADIANCE_CUBE, 7) past the located walls as the shading reads it (LOCATED_WALLS, 8).
+    const std::array<std::uint32_t, 9> constants{trilinear ? 1u : 0u, splat ? 1u : 0u, 0u, 0u, 0u, 0u, 0u, 1u, walls};
     return vkx::Pipeline(device_, bounce_layout_, spirv_lpv_gather_bounce_comp, constants);
   });
   vkx::DescriptorWriter(p.descriptor_set())
@@ -109,6 +111,7 @@ const vkx::Pipeline& LpvGatherPass::reflection(const GatherBounces& bounces, boo
       .texel_buffer(gpu::GATHER_BOUNCE_LIGHT_B, kTexels, volumes.bounce_light[2].view())
       .buffer(gpu::GATHER_BOUNCE_INJECTED, kStorage, volumes.injected.buffer().handle())
       .buffer(gpu::GATHER_BOUNCE_FLUX_STATS, kStorage, volumes.flux_stats.handle())
+      .texel_buffer(gpu::GATHER_BOUNCE_WALLS, kTexels, volumes.walls.view())
       .apply(device_.handle());
   return p;
 }

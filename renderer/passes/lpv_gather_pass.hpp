@@ -21,6 +21,7 @@ struct GatherBounces {
   const vkx::Buffer* surfels = nullptr;  // GpuBlocker: the scene's surfels (bounces after the first)
   std::uint32_t surfel_count = 0;
   api::Injection injection = api::Injection::trilinear;  // how their VPLs are added, as the first's
+  bool located_walls = false;  // they read their light past the located walls, as the shading does
 };
 
 // How the gather walks its lines of sight: through the geometry volume's blocking or not, its

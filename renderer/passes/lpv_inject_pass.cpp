@@ -36,7 +36,8 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
                                         {gpu::INJECT_RSM_NORMAL, image},
                                         {gpu::INJECT_RSM_FLUX, image},
                                         {gpu::INJECT_INJECTED, buffer},
-                                        {gpu::INJECT_FLUX_STATS, buffer}},
+                                        {gpu::INJECT_FLUX_STATS, buffer},
+                                        {gpu::INJECT_WALLS, texels}},
                                        sizeof(gpu::LpvInjectRsmPush));
   emitters_layout_ = vkx::compute_layout({{gpu::INJECT_EMITTERS_LPV, uniform},
                                           {gpu::INJECT_EMITTERS_EMITTERS, buffer},
@@ -57,7 +58,7 @@ LpvInjectPass::LpvInjectPass(const vkx::Device& device) : device_(device) {
 
 void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
                            const std::vector<gpu::GpuRsmView>& views, const api::Lpv& lpv, float cell_size,
-                           const GpuScene& scene, const LpvVolumes& volumes) const {
+                           const GpuScene& scene, const LpvVolumes& volumes, bool located_walls) const {
   const std::array<std::uint32_t, 1> trilinear{lpv.injection == api::Injection::trilinear ? 1u : 0u};
   const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -69,8 +70,11 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
   vkx::memory_barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   if (maps) {
-    const vkx::Pipeline& inject = inject_.get(
-        trilinear[0], [&] { return vkx::Pipeline(device_, inject_layout_, spirv_lpv_inject_comp, trilinear); });
+    // By constant_id: TRILINEAR_INJECTION (0), LOCATED_WALLS (1).
+    const std::array<std::uint32_t, 2> constants{trilinear[0], located_walls ? 1u : 0u};
+    const vkx::Pipeline& inject = inject_.get(constants[0] | constants[1] << 1, [&] {
+      return vkx::Pipeline(device_, inject_layout_, spirv_lpv_inject_comp, constants);
+    });
     vkx::DescriptorWriter(inject.descriptor_set())
         .buffer(gpu::INJECT_LPV, uniform, params.handle())
         .image(gpu::INJECT_RSM_POSITION, image, maps->position.view(), VK_IMAGE_LAYOUT_GENERAL)
@@ -78,6 +82,7 @@ void LpvInjectPass::record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx
         .image(gpu::INJECT_RSM_FLUX, image, maps->flux.view(), VK_IMAGE_LAYOUT_GENERAL)
         .buffer(gpu::INJECT_INJECTED, storage, volumes.injected.buffer().handle())
         .buffer(gpu::INJECT_FLUX_STATS, storage, volumes.flux_stats.handle())
+        .texel_buffer(gpu::INJECT_WALLS, VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER, volumes.walls.view())
         .apply(device_.handle());
     inject.bind(cmd);
     for (std::uint32_t layer = 0; layer < maps->layers && layer < views.size(); ++layer) {

@@ -18,10 +18,12 @@ class LpvInjectPass {
 
   // `params` is the frame's gpu::GpuLpv; `maps` are the frame's RSMs, nullptr when no light
   // drew any, one layer per view of `views` (each its own resolution); `cell_size` the
-  // cascade's. The first cascade also clears the flux statistics.
+  // cascade's. The first cascade also clears the flux statistics. `located_walls`: the RSMs'
+  // VPLs see their cells past the geometry volume's located walls (lpv_walls.glsl), which it
+  // built for this cascade before.
   void record(VkCommandBuffer cmd, std::uint32_t cascade, const vkx::Buffer& params, const RsmMaps* maps,
               const std::vector<gpu::GpuRsmView>& views, const api::Lpv& lpv, float cell_size, const GpuScene& scene,
-              const LpvVolumes& volumes) const;
+              const LpvVolumes& volumes, bool located_walls) const;
 
  private:
   const vkx::Device& device_;

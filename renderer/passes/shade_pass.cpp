@@ -26,6 +26,7 @@ ShadePass::ShadePass(const vkx::Device& device) : device_(device) {
                                  {gpu::SHADE_ACCUMULATED_R, texels},
                                  {gpu::SHADE_ACCUMULATED_G, texels},
                                  {gpu::SHADE_ACCUMULATED_B, texels},
+                                 {gpu::SHADE_WALLS, texels},
                                  {gpu::SHADE_DISPLAY, buffer}});
   shadow_sampler_ = vkx::Sampler(device, VK_FILTER_NEAREST);  // depths, compared in direct_light.glsl
 }
@@ -35,14 +36,15 @@ const vkx::Pipeline& ShadePass::variant(const ShadeInputs& in) const {
   // A linear-only image has no tone curve: one variant for every curve.
   const std::uint32_t curve = in.outputs & gpu::SHADE_OUTPUT_DISPLAY ? gpu_tone_curve(in.tone_curve) : gpu::TONEMAP_NONE;
   // Bits 0-2: the view (VIEW_* < 8); 3-5: the cascades (at most 4); 6-7: the outputs; 8-9:
-  // the tone curve; 10: the irradiance cube; above: the lights (11 bits).
+  // the tone curve; 10: the irradiance cube; 11: the located walls; above: the lights (11 bits).
   const std::uint32_t cascades = in.indirect.cascades;
   const std::uint32_t cube = in.indirect.cube() ? 1u : 0u;
-  const std::uint32_t key =
-      (light_key << 11) | (cube << 10) | (curve << 8) | (in.outputs << 6) | (cascades << 3) | in.view;
+  const std::uint32_t walls = in.indirect.located_walls() ? 1u : 0u;
+  const std::uint32_t key = (light_key << 12) | (walls << 11) | (cube << 10) | (curve << 8) | (in.outputs << 6) |
+                            (cascades << 3) | in.view;
   return variants_.get(key, [&] {
     const std::uint32_t constants[] = {cascades,   in.view, in.direct.light_kinds, specialised_light_count(in.direct),
-                                       in.outputs, curve,   device_.info().uniform_branches, cube};
+                                       in.outputs, curve,   device_.info().uniform_branches, cube, walls};
     return vkx::Pipeline(device_, layout_, spirv_shade_comp, constants);
   });
 }

@@ -15,11 +15,13 @@ LPV_BINDING FORWARD_SHADOW_MAPS = 1u;   // sampled with comparison: the shadow a
 LPV_BINDING FORWARD_LIGHTS = 2u;        // uniform: GpuLight[SHADE_MAX_LIGHTS]
 LPV_BINDING FORWARD_SHADOW_VIEWS = 3u;  // uniform: GpuShadowView[SHADE_MAX_SHADOW_VIEWS]
 // The indirect light (lpv_irradiance.glsl): GpuLpv, then the accumulated grids' three
-// channels as texels, in this order (bind_indirect_light binds them from the first).
+// channels as texels and the located walls, in this order (bind_indirect_light binds them
+// from the first).
 LPV_BINDING FORWARD_LPV = 4u;
 LPV_BINDING FORWARD_ACCUMULATED_R = FORWARD_LPV + 1u;
 LPV_BINDING FORWARD_ACCUMULATED_G = FORWARD_LPV + 2u;
 LPV_BINDING FORWARD_ACCUMULATED_B = FORWARD_LPV + 3u;
+LPV_BINDING FORWARD_WALLS = FORWARD_LPV + 4u;
 
 LPV_INTERFACE_END
 

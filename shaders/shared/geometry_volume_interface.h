@@ -31,6 +31,7 @@ LPV_BINDING GEOMETRY_RESOLVE_CORNERS = 1u;      // texels: the corners
 LPV_BINDING GEOMETRY_RESOLVE_FACES = 2u;        // storage: the faces, written
 LPV_BINDING GEOMETRY_RESOLVE_FACE_ALBEDO = 3u;  // storage: the faces' mean albedo, written
 LPV_BINDING GEOMETRY_RESOLVE_FACE_COVER = 4u;   // storage: what the gather's paired faces read, written
+LPV_BINDING GEOMETRY_RESOLVE_WALLS = 5u;        // storage: the walls located about the faces (lpv_walls.h), written
 
 struct GeometryInjectPush {
   uint cascade;

@@ -44,6 +44,7 @@ LPV_BINDING GATHER_BOUNCE_LIGHT_G = 3u;
 LPV_BINDING GATHER_BOUNCE_LIGHT_B = 4u;
 LPV_BINDING GATHER_BOUNCE_INJECTED = 5u;    // storage: the injection's integer sums, added to
 LPV_BINDING GATHER_BOUNCE_FLUX_STATS = 6u;  // storage: the flux statistics
+LPV_BINDING GATHER_BOUNCE_WALLS = 7u;       // texels: the located walls (LpvVolumes::walls)
 
 struct LpvGatherBouncePush {
   uint cascade;

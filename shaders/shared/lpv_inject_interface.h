@@ -15,6 +15,7 @@ LPV_BINDING INJECT_RSM_NORMAL = 2u;
 LPV_BINDING INJECT_RSM_FLUX = 3u;
 LPV_BINDING INJECT_INJECTED = 4u;      // storage: the integer sums, 12 a cell (RGB x SH)
 LPV_BINDING INJECT_FLUX_STATS = 5u;    // storage: the flux statistics
+LPV_BINDING INJECT_WALLS = 6u;         // texels: the located walls (LpvVolumes::walls)
 
 // lpv_inject_emitters.comp
 LPV_BINDING INJECT_EMITTERS_LPV = 0u;

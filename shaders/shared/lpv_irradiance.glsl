@@ -4,8 +4,11 @@
 //   CASCADES (uint)   the cascades of indirect light (a specialization constant, so the
 //                     cascade loop has a constant length and is unrolled),
 //   lpv (GpuLpv), accumulated_r, accumulated_g, accumulated_b (imageBuffer, rgba32f;
-//                     lpv_accumulated_texel's layout), and includes lpv_sh.h and lpv_grid.glsl;
-// and leaves specialization constants 6 and 7 to this file (UNIFORM_BRANCHES, IRRADIANCE_CUBE).
+//                     lpv_accumulated_texel's layout), walls (uimageBuffer, rgba32ui: the
+//                     walls located about the cells' faces, LpvVolumes::walls), and includes
+//                     lpv_sh.h and lpv_grid.glsl;
+// and leaves specialization constants 6 to 8 to this file (UNIFORM_BRANCHES, IRRADIANCE_CUBE,
+// LOCATED_WALLS).
 #ifndef LPV_IRRADIANCE_GLSL
 #define LPV_IRRADIANCE_GLSL
 
@@ -20,6 +23,11 @@ layout(constant_id = 6) const bool UNIFORM_BRANCHES = true;
 // The accumulated light is the gather's irradiance cube (lpv_gather.h): two texels a cell and
 // channel, the irradiance onto surfaces facing +x, -x, +y, -y, then +z, -z; else one, its SH.
 layout(constant_id = 7) const bool IRRADIANCE_CUBE = false;
+// The geometry volume located its walls (lpv.line_blocking "located", lpv_walls.h): a cell lights
+// a surface as far as the walls between its centre and the lookup's point let it.
+layout(constant_id = 8) const bool LOCATED_WALLS = false;
+
+#include "lpv_walls.glsl"
 
 // Which of the 8 cells around a point corner k is: one step up along x, y, z for bits 0, 1, 2.
 bvec3 corner_step(uint k) { return bvec3(k & 1u, k & 2u, k & 4u); }
@@ -133,7 +141,9 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   float total = 0.0;
   for (uint corner = 0u; corner < 8u; ++corner) {
     vec3 w3 = mix(1.0 - f, f, corner_step(corner));
-    weight[corner] = (w3.x * w3.y * w3.z) * in_front(mix(low, high, corner_step(corner)), surface, n);
+    ivec3 cell = mix(low, high, corner_step(corner));
+    weight[corner] = (w3.x * w3.y * w3.z) * in_front(cell, surface, n);
+    if (LOCATED_WALLS) weight[corner] *= wall_visibility(c, low, cell, q, n, last);
     total += weight[corner];
   }
   vec3 e = vec3(0.0);
@@ -202,7 +212,7 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
       }
     }
   }
-  return max(e, vec3(0.0)) / (max(total, 1e-6) * g.origin.w * g.origin.w);
+  return max(e, vec3(0.0)) / (max(total, LOCATED_WALLS ? LPV_WALL_LEAST_WEIGHT : 1e-6) * g.origin.w * g.origin.w);
 }
 
 // Indirect irradiance at p: the finest cascade that holds p, handing over to the next coarser

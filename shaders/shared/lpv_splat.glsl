@@ -20,6 +20,11 @@
 //   4x4x4 groups number their subgroups past gl_NumSubgroups, so do not count on those),
 //   and the flux conservation tests would see a lost or invented share.
 //
+// Each point may weigh its 8 lattice points by factors of its own (`factors`, 8 unorm bytes,
+// lattice point low + o at byte o.x + 2 o.y + 4 o.z): the injection's located walls
+// (lpv_walls.glsl), its values already scaled so that their sum is kept. SPLAT_UNWEIGHED
+// (all 1) keeps the trilinear weights alone, at their cost.
+//
 // lpv.injection "nearest" (TRILINEAR_INJECTION false) puts each point at its nearest lattice
 // point only (the paper's way: cheaper, but a point moved by a hair can jump a whole cell).
 //
@@ -59,11 +64,31 @@ float splat_weight(ivec3 cell, ivec3 low, vec3 f, ivec3 last) {
   return w.x * w.y * w.z;
 }
 
-void splat_point(ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, float units) {
+const uvec2 SPLAT_UNWEIGHED = uvec2(0xffffffffu);
+
+// The factor a point's `factors` give its lattice point low + o, o = the corner's bits.
+float splat_factor(uvec2 factors, uint corner) {
+  return float((factors[corner >> 2u] >> (8u * (corner & 3u))) & 0xffu) / 255.0;
+}
+
+// splat_weight with the point's own factors: the sum over its corners that land on `cell`.
+float splat_weight(ivec3 cell, ivec3 low, vec3 f, ivec3 last, uvec2 factors) {
+  if (factors == SPLAT_UNWEIGHED) return splat_weight(cell, low, f, last);
+  float w = 0.0;
+  for (uint corner = 0u; corner < 8u; ++corner) {
+    ivec3 o = ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
+    if (clamp(low + o, ivec3(0), last) != cell) continue;
+    vec3 w3 = mix(1.0 - f, f, vec3(o));
+    w += w3.x * w3.y * w3.z * splat_factor(factors, corner);
+  }
+  return w;
+}
+
+void splat_point(ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, float units, uvec2 factors) {
   for (uint corner = 0u; corner < 8u; ++corner) {
     ivec3 o = ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
     vec3 w3 = mix(1.0 - f, f, vec3(o));
-    float w = w3.x * w3.y * w3.z;
+    float w = w3.x * w3.y * w3.z * splat_factor(factors, corner);
     if (w == 0.0) continue;
     uint base = splat_index(clamp(low + o, ivec3(0), last));
     for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) {
@@ -95,11 +120,13 @@ const uint SPLAT_LATTICE_PER_INVOCATION = 4u;
 
 // Every invocation of the subgroup must call this, in uniform control flow; `valid` says
 // whether this one has a point.
-void splat_subgroup(bool valid, ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, float units) {
+void splat_subgroup(bool valid, ivec3 low, vec3 f, float values[SPLAT_VALUES], ivec3 last, float units,
+                    uvec2 factors) {
   const int NONE = 0x7fffffff;
   if (!valid) {  // adds nothing: zero values, at a finite point (no NaN into the sums)
     low = ivec3(0);
     f = vec3(0.0);
+    factors = SPLAT_UNWEIGHED;
     for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) values[i] = 0.0;
   }
   ivec3 lo = subgroupMin(valid ? clamp(low, ivec3(0), last) : ivec3(NONE));
@@ -108,7 +135,7 @@ void splat_subgroup(bool valid, ivec3 low, vec3 f, float values[SPLAT_VALUES], i
   ivec3 box = hi - lo + 1;
   uint lattice = uint(box.x * box.y * box.z);
   if (lattice > SPLAT_LATTICE_PER_INVOCATION * gl_SubgroupSize) {
-    if (valid) splat_point(low, f, values, last, units);
+    if (valid) splat_point(low, f, values, last, units, factors);
     return;
   }
   for (uint first = 0u; first < lattice; first += gl_SubgroupSize) {
@@ -117,7 +144,7 @@ void splat_subgroup(bool valid, ivec3 low, vec3 f, float values[SPLAT_VALUES], i
     float sums[SPLAT_VALUES];
     for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) sums[i] = 0.0;
     for (uint p = 0u; p < gl_SubgroupSize; ++p) {
-      float w = splat_weight(cell, subgroupShuffle(low, p), subgroupShuffle(f, p), last);
+      float w = splat_weight(cell, subgroupShuffle(low, p), subgroupShuffle(f, p), last, subgroupShuffle(factors, p));
       for (uint i = 0u; i < SPLAT_ACTIVE_VALUES; ++i) sums[i] += w * subgroupShuffle(values[i], p);
     }
     if (index >= lattice) continue;

@@ -16,12 +16,14 @@ LPV_BINDING SHADE_SHADOW_VIEWS = 6u;     // storage: the shadow views (GpuShadow
 LPV_BINDING SHADE_MATERIALS = 7u;        // storage: GpuMaterial
 LPV_BINDING SHADE_LINEAR = 8u;           // storage: the linear image, written
 // The indirect light (lpv_irradiance.glsl): GpuLpv, then the accumulated grids' three
-// channels as texels, in this order (bind_indirect_light binds them from the first).
+// channels as texels and the located walls, in this order (bind_indirect_light binds them
+// from the first).
 LPV_BINDING SHADE_LPV = 9u;
 LPV_BINDING SHADE_ACCUMULATED_R = SHADE_LPV + 1u;
 LPV_BINDING SHADE_ACCUMULATED_G = SHADE_LPV + 2u;
 LPV_BINDING SHADE_ACCUMULATED_B = SHADE_LPV + 3u;
-LPV_BINDING SHADE_DISPLAY = 13u;         // storage: the display image, written
+LPV_BINDING SHADE_WALLS = SHADE_LPV + 4u;
+LPV_BINDING SHADE_DISPLAY = 14u;         // storage: the display image, written
 
 LPV_INTERFACE_END
 

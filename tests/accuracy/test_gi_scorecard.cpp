@@ -9,7 +9,8 @@
 //   bounds are one bounce's: against more, read the table and expect the bounds to fail; the
 //   all-bounce suite, AllBouncesScorecard, is always against 8).
 //   LPV_SCORECARD_REQUEST: a render request (JSON) to score instead of the default, its scene
-//   replaced by each built-in's: to compare settings on every scene (the bounds still apply).
+//   replaced by each built-in's: to compare settings on every scene (the bounds still apply;
+//   the all-bounce suite sets its bounces to "all").
 //   LPV_SCORECARD_DUMP: a folder to write each scene's images to (SCENE-indirect.pfm, and
 //   -reference-indirect, -off (LPV off), -reference-final, -interior (the mask, 1 inside)), to
 //   see where the indirect light differs, or to score combinations of requests' images.
@@ -103,10 +104,13 @@ class GiScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds>
 class PropagationScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
 class AllBouncesScorecard : public GpuTest, public ::testing::WithParamInterface<Bounds> {};
 
-TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) {
+// The default request, or LPV_SCORECARD_REQUEST's.
+api::RenderRequest scored_request() {
   const char* custom = std::getenv("LPV_SCORECARD_REQUEST");
-  score_within_bounds(GetParam(), custom ? api::parse_render_request(custom) : api::RenderRequest{});
+  return custom ? api::parse_render_request(custom) : api::RenderRequest{};
 }
+
+TEST_P(GiScorecard, DefaultRequestStaysWithinItsBounds) { score_within_bounds(GetParam(), scored_request()); }
 
 // Propagation (the sharpened transfer: docs/lpv.md, "The transfer"), which the default ran
 // before the gather, at the default request otherwise: what a grid past the gather's limit gets.
@@ -116,10 +120,11 @@ TEST_P(PropagationScorecard, PropagationStaysWithinItsBounds) {
   score_within_bounds(GetParam(), request);
 }
 
-// All the bounces (docs/lpv.md, "Bounces"): {"lpv": {"bounces": "all"}} against the reference
-// with 8 bounces, whatever LPV_SCORECARD_BOUNCES says (the size and samples as set).
+// All the bounces (docs/lpv.md, "Bounces"): {"lpv": {"bounces": "all"}} (on
+// LPV_SCORECARD_REQUEST's request where it is set) against the reference with 8 bounces,
+// whatever LPV_SCORECARD_BOUNCES says (the size and samples as set).
 TEST_P(AllBouncesScorecard, AllBouncesStayWithinTheirBounds) {
-  api::RenderRequest request;
+  api::RenderRequest request = scored_request();
   request.lpv.bounces = api::all_bounces;
   accuracy::ScorecardSettings measure = settings();
   measure.bounces = api::limits::max_reference_bounces;
