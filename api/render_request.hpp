@@ -137,7 +137,7 @@ struct Lpv {
   Transfer transfer = Transfer::auto_;
   Blocking blocking = Blocking::projected;
   FarLines far_lines = FarLines::per_block;
-  LineBlocking line_blocking = LineBlocking::paired;
+  LineBlocking line_blocking = LineBlocking::located;
   float injection_offset = 0.5f;       // VPLs move this many cells along their normal
   float intensity = 1.0f;              // scale of the indirect light; 1 is physically based
   // With plan "auto": propagation stops once the remaining iterations would add less than

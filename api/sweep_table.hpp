@@ -26,7 +26,7 @@ struct SweepSettings {
   bool occlusion = true;
   Transfer transfer = Transfer::sharpened;
   Blocking blocking = Blocking::projected;
-  LineBlocking line_blocking = LineBlocking::paired;
+  LineBlocking line_blocking = LineBlocking::located;
   // > 0: not a raster frame but the reference path tracer (reference/path_tracer.hpp) at this
   // many paths per pixel, with the reference's bounces and a seed of its own; lpv is false.
   std::uint32_t path_traced_samples = 0;

@@ -141,10 +141,10 @@ DirectLightInputs FrameExecutor::direct_light(const Frame& frame) const {
           lit ? std::uint32_t(frame.lights.lights.size()) : 0u};
 }
 
-// Whether the geometry volume locates its walls for the shading (lpv.line_blocking "located",
-// with the gather and its blockers).
+// Whether the geometry volume locates its walls for the injection and the shading
+// (lpv.line_blocking "located", wherever blockers are built: propagation's light too).
 bool FrameExecutor::walls_located(const Frame& frame) {
-  return frame.plan.run[kGather] && frame.plan.run[kGeometryVolume] && frame.lpv.occlusion &&
+  return frame.plan.run[kGeometryVolume] && frame.lpv.occlusion &&
          frame.request.lpv.line_blocking == api::LineBlocking::located;
 }
 

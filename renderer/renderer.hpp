@@ -53,6 +53,10 @@ struct LpvSnapshot {
   // there (xyz; lpv_closed_blocking); empty when the frame built none.
   std::vector<glm::vec4> faces;
   std::vector<glm::vec4> face_spreads;
+  // Its walls located about those faces (lpv_walls_to_unorm, a word of bytes an axis): what
+  // the frame wrote where it located them (lpv.line_blocking "located"), else what an earlier
+  // frame left.
+  std::vector<glm::uvec4> walls;
 };
 
 // The readback a request's output format needs.

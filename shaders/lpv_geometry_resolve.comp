@@ -84,7 +84,8 @@ void main() {
       vec2 above = plane_covers(cell, axis, plane + 1, dims);
       vec4 walls = vec4(lpv_wall_locate(below.x, at.x, above.x), lpv_wall_locate(below.y, at.y, above.y));
       located[axis] = packUnorm4x8(lpv_walls_to_unorm(walls));
-      cover *= lpv_wall_share(walls, at.x + at.y);
+      // The walls as the texel keeps them, which the CPU reference reads back (tests/lpv).
+      cover *= lpv_wall_share(lpv_walls_from_unorm(unpackUnorm4x8(located[axis])), at.x + at.y);
     }
     if (COVERS) face_cover[lpv_face_cover_texel(cell, axis, dims)] = texel_bits(cover);
     if (BOUNCES)

@@ -13,7 +13,7 @@ const DEFAULTS = {
   lpv: {
     enabled: true, grid: 16, cascades: 1, iterations: 32, rsm: 256, vpl_downsample: 1,
     occlusion: true, occlusion_sources: ['scene'], blocking: 'projected', bounces: 1, injection: 'trilinear', injection_offset: 0.5,
-    transfer: 'auto', far_lines: 'per_block', line_blocking: 'paired', intensity: 1, convergence: 0.001,
+    transfer: 'auto', far_lines: 'per_block', line_blocking: 'located', intensity: 1, convergence: 0.001,
   },
   plan: 'auto',
   plan_keep: [],

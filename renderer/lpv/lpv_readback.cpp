@@ -5,6 +5,7 @@
 #include "vkx/resources.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace renderer {
@@ -154,6 +155,11 @@ LpvSnapshot lpv_snapshot(const vkx::Device& device, const RsmMaps& rsm_maps, con
     snapshot.face_spreads.assign(texels.begin() + std::ptrdiff_t(face_count), texels.end());
     texels.resize(face_count);
     snapshot.faces = std::move(texels);
+    // The last cascade's located walls: a texel a cell, after the cascades before it.
+    const std::size_t cells = face_count / 3;
+    const std::vector<glm::vec4> walls = read_back_volume(volumes.walls, volumes.cascades * cells);
+    for (std::size_t i = (volumes.cascades - 1) * cells; i < walls.size(); ++i)
+      snapshot.walls.push_back(std::bit_cast<glm::uvec4>(walls[i]));
   }
   for (std::uint32_t c = 0; c < lpv.cascades.size(); ++c) {
     const CascadePlacement& p = lpv.cascades[c];

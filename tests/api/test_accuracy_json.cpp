@@ -191,7 +191,7 @@ TEST(SweepRequest, VariesTheBlockingToCompareTheModels) {
   EXPECT_EQ(api::request_for(s.base, rows[2]).lpv.blocking, api::Blocking::projected);
 }
 
-// The gather's two forms of blocking along a line, side by side on one front.
+// The forms of blocking along a line, side by side on one front (the base's: located).
 TEST(SweepRequest, VariesTheLineBlockingToCompareItsForms) {
   const api::SweepRequest s = api::parse_sweep_request(
       R"({"base": {"lpv": {"transfer": "gather"}}, "parameters": {"line_blocking": ["multiplied", "paired"]}})");
@@ -200,6 +200,7 @@ TEST(SweepRequest, VariesTheLineBlockingToCompareItsForms) {
   EXPECT_EQ(api::request_for(s.base, rows[1]).lpv.line_blocking, api::LineBlocking::multiplied);
   EXPECT_EQ(api::request_for(s.base, rows[2]).lpv.line_blocking, api::LineBlocking::paired);
   EXPECT_EQ(api::to_json(rows[1])["line_blocking"], "multiplied");
+  EXPECT_EQ(api::to_json(rows[0])["line_blocking"], "located");
 }
 
 TEST(SweepRequest, AxisMayNameFlip) {

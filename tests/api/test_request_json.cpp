@@ -140,6 +140,11 @@ TEST(ToString, SpellsEveryEnumValueAsInJson) {
   EXPECT_EQ(api::to_string(api::Tonemap::aces), "aces");
   EXPECT_EQ(api::to_string(api::PlanMode::auto_), "auto");
   EXPECT_EQ(api::to_string(api::PlanMode::exact), "exact");
+  EXPECT_EQ(api::to_string(api::LineBlocking::located), "located");
+  EXPECT_EQ(api::to_string(api::LineBlocking::paired), "paired");
+  EXPECT_EQ(api::to_string(api::LineBlocking::multiplied), "multiplied");
+  EXPECT_EQ(api::parse_render_request(R"({"lpv": {"line_blocking": "paired"}})").lpv.line_blocking,
+            api::LineBlocking::paired);
 }
 
 TEST(ParseRequest, PlanModeAndConvergence) {
@@ -182,6 +187,7 @@ TEST(ParseRequest, EmptyObjectGivesDefaults) {
   EXPECT_EQ(r.lpv.cascades, 1u);
   EXPECT_EQ(r.lpv.iterations, 32u);
   EXPECT_EQ(r.lpv.transfer, api::Transfer::auto_);
+  EXPECT_EQ(r.lpv.line_blocking, api::LineBlocking::located);
   EXPECT_EQ(r.lpv.rsm_resolution, 256u);
   EXPECT_TRUE(r.lpv.occlusion);
   EXPECT_EQ(r.lpv.bounces, 1u);

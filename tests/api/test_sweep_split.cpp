@@ -142,7 +142,7 @@ TEST(SweepTableRead, ATableFromBeforeFlipReadsItAsUnmeasured) {
 // Tables written before the gather paired its faces have no line_blocking: they multiplied them.
 TEST(SweepTableRead, ATableFromBeforeLineBlockingReadsItAsMultiplied) {
   json table = api::to_json(api::SweepTable{{timed(1.0, 0.1)}, {}});
-  EXPECT_EQ(api::sweep_table_from_json(table).rows[0].settings.line_blocking, api::LineBlocking::paired);
+  EXPECT_EQ(api::sweep_table_from_json(table).rows[0].settings.line_blocking, api::LineBlocking::located);
   table["rows"][0]["settings"].erase("line_blocking");
   EXPECT_EQ(api::sweep_table_from_json(table).rows[0].settings.line_blocking, api::LineBlocking::multiplied);
 }

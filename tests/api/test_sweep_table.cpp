@@ -253,7 +253,7 @@ TEST(SweepCsv, OneLinePerRowWithItsValues) {
   for (const auto& record : csv) EXPECT_EQ(record.size(), csv[0].size());
   EXPECT_EQ(csv[1], (std::vector<std::string>{"true",  "0", "16",     "24",    "48",      "12",
                                               "2",     "512",    "4",     "2",       "false",
-                                              "cosine", "sh_lobe", "paired", "3", "0.1", "0.09", "0.125", "0.3333333333333333",         "0.25",
+                                              "cosine", "sh_lobe", "located", "3", "0.1", "0.09", "0.125", "0.3333333333333333",         "0.25",
                                               "0.5",   "31.5",   "0.875", "0.125",   "2",
                                               "-0.0625", "0.375", "262144", "1.25", "1.5",    "inf",
                                               "0.75",  "1.125",  "3",     "nan",     "0.0625", "7",
@@ -319,7 +319,7 @@ TEST(SweepJson, EveryFieldWithItsValue) {
   const json expected = json::parse(R"json({
     "settings": {"lpv": false, "grid": [16, 24, 48], "iterations": 12, "cascades": 2, "rsm": 512,
                  "vpl_downsample": 4, "bounces": 2, "occlusion": false, "transfer": "sharpened",
-                 "blocking": "projected", "line_blocking": "paired", "path_traced_samples": 0},
+                 "blocking": "projected", "line_blocking": "located", "path_traced_samples": 0},
     "device": "",
     "passes": [{"name": "shadow", "gpu_ms": 0.125}, {"name": "shade", "gpu_ms": 0.5}],
     "frames": 5, "gpu_ms": 0.625, "gpu_ms_range": [0.5, 0.75], "wall_ms": 2.5,
@@ -335,7 +335,7 @@ TEST(SweepJson, EveryFieldWithItsValue) {
 TEST(SweepJson, ARowsSettingsInWords) {
   api::SweepSettings s{true, {16, 24, 48}, 12, 2, 512, 4, 2, false, api::Transfer::gather, api::Blocking::projected};
   EXPECT_EQ(api::describe(s), "LPV 16x24x48, 12 iterations, 2 cascades, RSM 512, VPL downsample 4, 2 bounces, "
-                              "occlusion off, transfer gather, blocking projected, line blocking paired");
+                              "occlusion off, transfer gather, blocking projected, line blocking located");
   s.transfer = api::Transfer::sharpened;  // propagation has no lines: it is not named
   EXPECT_EQ(api::describe(s), "LPV 16x24x48, 12 iterations, 2 cascades, RSM 512, VPL downsample 4, 2 bounces, "
                               "occlusion off, transfer sharpened, blocking projected");

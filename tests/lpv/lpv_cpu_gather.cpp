@@ -5,6 +5,7 @@
 #define LPV_SH_DOUBLE
 #include "shaders/shared/lpv_sh.h"
 #include "shaders/shared/lpv_gather.h"
+#include "shaders/shared/lpv_walls.h"
 
 #include <algorithm>
 
@@ -16,8 +17,19 @@ namespace g = gpu_double;
 // The line of the light along w from cell `source` to cell `target`, walked from cell `from` to
 // cell `to` from the state `line` (lpv_gather.comp's `walk`): across the faces the line between
 // their centres crosses, in order, each met as the line from source to target meets it.
+// What a face across `axis` holds for the paired walk (lpv_geometry_resolve.comp's cover texel):
+// with located walls, scaled to the walls within half a cell of it.
+glm::dvec4 cover_texel(const BasicFaceBlocking<glm::dvec4>& faces, std::size_t face, int axis, bool located) {
+  glm::dvec4 texel = g::lpv_gather_cover_texel(faces.sh[face], faces.spread[face], axis);
+  if (!located) return texel;
+  const glm::dvec2 at = g::lpv_wall_plane_covers(g::lpv_gather_first_moment(faces.sh[face])[axis], faces.spread[face][axis]);
+  return texel * g::lpv_wall_share(faces.walls[face], at.x + at.y);
+}
+
 glm::dvec4 walk(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, glm::dvec4 line, glm::ivec3 from,
-                glm::ivec3 to, glm::ivec3 source, glm::ivec3 target, glm::dvec3 w, bool paired) {
+                glm::ivec3 to, glm::ivec3 source, glm::ivec3 target, glm::dvec3 w, api::LineBlocking blocking) {
+  const bool paired = blocking != api::LineBlocking::multiplied;
+  const bool located = blocking == api::LineBlocking::located;
   const glm::ivec3 d = to - from;
   const glm::ivec3 span = glm::abs(d);
   glm::ivec3 next(1);
@@ -30,10 +42,8 @@ glm::dvec4 walk(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, g
     const std::size_t face = grid.index(owner) * 3 + std::size_t(axis);
     const glm::dvec3 face_centre = 0.5 * (glm::dvec3(cell) + glm::dvec3(ahead));
     const glm::dvec3 to_source = glm::dvec3(source) - face_centre, to_target = glm::dvec3(target) - face_centre;
-    line = paired ? g::lpv_gather_line_pair(line, axis,
-                                            g::lpv_gather_face_cover(
-                                                g::lpv_gather_cover_texel(faces.sh[face], faces.spread[face], axis),
-                                                axis, w, to_source, to_target))
+    line = paired ? g::lpv_gather_line_pair(
+                        line, axis, g::lpv_gather_face_cover(cover_texel(faces, face, axis, located), axis, w, to_source, to_target))
                   : g::lpv_gather_line_multiply(
                         line, g::lpv_gather_transmitted(faces.sh[face], faces.spread[face], w, to_source, to_target));
     cell = ahead;
@@ -46,16 +56,16 @@ glm::dvec4 walk(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, g
 // whole, or for a far record with shared far lines to the cell's block (lpv_gather_shared_end)
 // and from there on to the cell.
 double line_through(const GridD& grid, const BasicFaceBlocking<glm::dvec4>& faces, glm::ivec3 start, glm::ivec3 cell,
-                    bool shared, bool paired) {
+                    bool shared, api::LineBlocking blocking) {
   const glm::dvec3 w = glm::normalize(glm::dvec3(cell - start));
   const glm::dvec4 begin = g::lpv_gather_line_begin();
-  if (!shared) return g::lpv_gather_line_through(walk(grid, faces, begin, start, cell, start, cell, w, paired));
+  if (!shared) return g::lpv_gather_line_through(walk(grid, faces, begin, start, cell, start, cell, w, blocking));
   const glm::ivec3 end = g::lpv_gather_shared_end(start, cell, grid.dims);
   const glm::dvec4 to_block = end == start ? begin
                                            : walk(grid, faces, begin, start, end, start, end,
-                                                  glm::normalize(glm::dvec3(end - start)), paired);
+                                                  glm::normalize(glm::dvec3(end - start)), blocking);
   if (!g::lpv_gather_line_open(to_block)) return 0.0;
-  return g::lpv_gather_line_through(walk(grid, faces, to_block, end, cell, start, cell, w, paired));
+  return g::lpv_gather_line_through(walk(grid, faces, to_block, end, cell, start, cell, w, blocking));
 }
 
 // A record of the pyramid of sources (lpv_gather_sources.comp's three texels).
@@ -111,7 +121,6 @@ std::vector<Record> pyramid(const GridD& injected, double injection, double offs
 
 std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::dvec4>& faces, double injection,
                            double offset, api::FarLines far_lines, api::LineBlocking line_blocking) {
-  const bool paired = line_blocking == api::LineBlocking::paired;
   const glm::ivec3 dims = injected.dims;
   const std::vector<Record> records = pyramid(injected, injection, offset);
   std::vector<double> cubes(injected.sh.size() * 6, 0.0);
@@ -146,7 +155,7 @@ std::vector<double> gather(const GridD& injected, const BasicFaceBlocking<glm::d
                 if (!(any_light > 0.0)) continue;
                 const glm::ivec3 start = g::lpv_gather_line_start(r.centre, emitter, offset, dims);
                 const bool shared = far_lines == api::FarLines::per_block && level > 0;
-                const double through = faces.empty() ? 1.0 : line_through(injected, faces, start, cell, shared, paired);
+                const double through = faces.empty() ? 1.0 : line_through(injected, faces, start, cell, shared, line_blocking);
                 if (!(through > 0.0)) continue;
                 for (int c = 0; c < 3; ++c)
                   for (int a = 0; a < 6; ++a) cube[c * 6 + a] += through * r.flux[c] * axes[a];

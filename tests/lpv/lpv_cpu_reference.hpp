@@ -60,6 +60,9 @@ struct BasicFaceBlocking {
   using Vec3 = glm::vec<3, typename Vec4::value_type>;
   std::vector<Vec4> sh;
   std::vector<Vec3> spread;
+  // Per face, the walls located about it (lpv_walls.h: xy facing +, zw facing -), for the
+  // gather's "located" line blocking; empty: none located.
+  std::vector<Vec4> walls;
 
   BasicFaceBlocking() = default;
   explicit BasicFaceBlocking(std::size_t faces) : sh(faces, Vec4(0)), spread(faces, Vec3(0)) {}

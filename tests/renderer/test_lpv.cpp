@@ -11,6 +11,12 @@
 #include "renderer/passes/lpv_gather_pass.hpp"
 #include "scene/builtin_scenes.hpp"
 
+#define LPV_SH_DOUBLE
+#include "shaders/shared/lpv_sh.h"
+#include "shaders/shared/lpv_walls.h"
+
+#include <glm/gtc/packing.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -291,7 +297,8 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
         Lines{true, api::FarLines::per_cell, api::LineBlocking::multiplied},
         Lines{true, api::FarLines::per_cell, api::LineBlocking::paired},
         Lines{true, api::FarLines::per_block, api::LineBlocking::multiplied},
-        Lines{true, api::FarLines::per_block, api::LineBlocking::paired}}) {
+        Lines{true, api::FarLines::per_block, api::LineBlocking::paired},
+        Lines{true, api::FarLines::per_block, api::LineBlocking::located}}) {
     // 5 x 1 x 1: a grid one cell thick, whose gathering cells stop climbing at different levels.
     for (const glm::uvec3 dims : {glm::uvec3(8), glm::uvec3(12, 9, 7), glm::uvec3(5, 1, 1)}) {
       SCOPED_TRACE(std::string(occlusion ? "occlusion, " : "no occlusion, ") + api::to_string(far_lines) + ", " +
@@ -300,17 +307,23 @@ TEST_F(Lpv, GatheredCubesMatchTheDoublePrecisionReference) {
       api::RenderRequest request = small_grid_request(0);
       request.lpv.grid = dims;
       request.lpv.occlusion = occlusion;
+      request.lpv.line_blocking = line_blocking;  // located: the VPLs see their cells past the walls
       request.plan_keep = {api::PlanRule::grid};  // the gather's grid as the propagation's (not reshaped)
       const auto injected = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
       request.lpv.transfer = api::Transfer::gather;
       request.lpv.far_lines = far_lines;
-      request.lpv.line_blocking = line_blocking;
       const auto gathered = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
       lpv_ref::BasicFaceBlocking<glm::dvec4> faces;
       if (occlusion) {
         ASSERT_FALSE(gathered.lpv.faces.empty());
         faces.sh.assign(gathered.lpv.faces.begin(), gathered.lpv.faces.end());
         for (const glm::vec4& spread : gathered.lpv.face_spreads) faces.spread.push_back(glm::dvec3(spread));
+        if (line_blocking == api::LineBlocking::located) {
+          ASSERT_EQ(gathered.lpv.walls.size() * 3, faces.sh.size());
+          for (const glm::uvec4& cell : gathered.lpv.walls)
+            for (int axis = 0; axis < 3; ++axis)
+              faces.walls.push_back(gpu_double::lpv_walls_from_unorm(glm::dvec4(glm::unpackUnorm4x8(cell[axis]))));
+        }
       }
       const std::vector<double> exact =
           lpv_ref::gather(grid_of(injected.lpv.cascades.at(0)), faces,
@@ -436,6 +449,9 @@ TEST_F(Lpv, OcclusionActsFromTheSecondIterationAndBouncesReturnBlockedLight) {
     // occluded grid's, which the blockers send back, so "at most the open grid's flux" would
     // compare light that left with light kept, not test the reflection.
     request.lpv.transfer = api::Transfer::cosine;
+    // Walls not located: located, they shape the injection itself (docs/lpv.md, "Shading"),
+    // and the first iteration would differ by that, not by the faces' blocking.
+    request.lpv.line_blocking = api::LineBlocking::paired;
     const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
     return std::make_pair(result.stats.lpv->cascades.at(0).propagated_flux.back()[0], result.lpv.cascades.at(0));
   };

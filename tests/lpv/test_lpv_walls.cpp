@@ -1,0 +1,124 @@
+// Walls located within their cells (shaders/shared/lpv_walls.h; api::LineBlocking::located):
+// the geometry volume's tent splats of a surface to the planes of corners either side of it
+// give back where it lies and how much it covers; a wall stops the light between two points
+// only where it lies between them, continuously as it moves; and the gather's faces take each
+// wall whole at the one plane it is nearest.
+#define LPV_SH_DOUBLE
+#include "shaders/shared/lpv_sh.h"
+#include "shaders/shared/lpv_walls.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+namespace {
+
+namespace g = gpu_double;
+
+// The covers a surface at P + t (cell units, P = 0 here) of cover `cover` splats to the planes
+// of corners -2 .. 2, as the geometry volume's trilinear splat does along its axis.
+std::array<double, 5> tent(double t, double cover) {
+  std::array<double, 5> planes{};
+  for (int i = 0; i < 5; ++i) planes[std::size_t(i)] = cover * std::max(0.0, 1.0 - std::abs(t - double(i - 2)));
+  return planes;
+}
+
+TEST(LpvWalls, ALoneSurfaceIsLocatedExactlyFromThreePlanes) {
+  for (double t = -0.95; t < 0.96; t += 0.05) {
+    const auto c = tent(t, 0.7);
+    const glm::dvec2 wall = g::lpv_wall_locate(c[1], c[2], c[3]);
+    EXPECT_NEAR(wall.x, t, 1e-12) << t;
+    EXPECT_NEAR(wall.y, 0.7, 1e-12) << t;
+  }
+  EXPECT_EQ(g::lpv_wall_locate(0.0, 0.0, 0.0), glm::dvec2(0.0)) << "no surface, no wall";
+}
+
+TEST(LpvWalls, SurfacesFacingEachOtherAcrossAGapStayApart) {
+  // A room's wall facing +x at -0.5 and a block's face facing -x at +0.5: both cover their
+  // planes, as a thin wall's two sides do, but face each other.
+  const auto plus = tent(-0.5, 1.0), minus = tent(0.5, 1.0);
+  glm::dvec2 covers[3];
+  for (int i = 0; i < 3; ++i)
+    covers[i] = g::lpv_wall_plane_covers(plus[std::size_t(i + 1)] - minus[std::size_t(i + 1)],
+                                         plus[std::size_t(i + 1)] + minus[std::size_t(i + 1)]);
+  const glm::dvec4 walls(g::lpv_wall_locate(covers[0].x, covers[1].x, covers[2].x),
+                         g::lpv_wall_locate(covers[0].y, covers[1].y, covers[2].y));
+  EXPECT_NEAR(walls.x, -0.5, 1e-12);
+  EXPECT_NEAR(walls.z, 0.5, 1e-12);
+  // A point in the gap sees a cell centre in the gap, and neither beyond.
+  EXPECT_DOUBLE_EQ(g::lpv_walls_let_through(walls, 0.0, -0.2, 0.2, 0.0), 1.0);
+  EXPECT_DOUBLE_EQ(g::lpv_walls_let_through(walls, 0.0, 0.0, 0.9, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(g::lpv_walls_let_through(walls, 0.0, 0.0, -0.9, 0.0), 0.0);
+}
+
+TEST(LpvWalls, AWallStopsLightOnlyBetweenTheEndsAndContinuouslyAsItMoves) {
+  const glm::dvec2 wall(0.0, 1.0);  // a whole wall at the plane
+  EXPECT_DOUBLE_EQ(g::lpv_wall_stops(wall, 0.0, -0.5, 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(g::lpv_wall_stops(wall, 0.0, 0.5, -0.5), 1.0) << "either way";
+  EXPECT_DOUBLE_EQ(g::lpv_wall_stops(wall, 0.0, 0.1, 0.5), 0.0) << "both ends on one side";
+  EXPECT_DOUBLE_EQ(g::lpv_wall_stops(glm::dvec2(0.0, 0.4), 0.0, -0.5, 0.5), 0.4) << "its cover";
+  EXPECT_DOUBLE_EQ(g::lpv_wall_stops(glm::dvec2(0.0, 3.0), 0.0, -0.5, 0.5), 1.0) << "at most all";
+  EXPECT_DOUBLE_EQ(g::lpv_wall_stops(wall, 0.0, -0.5, 0.0), 0.5) << "through an end: half";
+  // As the end moves through the wall the stop ramps; no step anywhere.
+  double last = g::lpv_wall_stops(wall, 0.0, -0.5, -0.2);
+  for (double to = -0.2; to <= 0.2; to += 1e-3) {
+    const double stop = g::lpv_wall_stops(wall, 0.0, -0.5, to);
+    EXPECT_LE(std::abs(stop - last), 1e-3 / g::LPV_WALL_RAMP + 1e-9) << to;
+    last = stop;
+  }
+}
+
+TEST(LpvWalls, ASurfacesOwnSideDoesNotHideWhatLiesBehindItsPoint) {
+  // A floor facing +y at -0.5 (its only side) and the point half a cell above it: the cells
+  // below are weighed by the part in front of the surface instead (lpv_irradiance.glsl).
+  const glm::dvec4 floor(-0.5, 1.0, 0.0, 0.0);
+  EXPECT_DOUBLE_EQ(g::lpv_walls_let_through(floor, 0.0, 0.0, -0.9, 1.0), 1.0);
+  EXPECT_DOUBLE_EQ(g::lpv_walls_let_through(floor, 0.0, 0.0, -0.9, 0.0), 0.0) << "a point of a wall beside it";
+  // A roof's top (facing +y, just above) hides the cells over it from the ceiling beneath
+  // (facing -y), whose own side faces down.
+  const glm::dvec4 roof(0.45, 1.0, 0.43, 1.0);
+  EXPECT_DOUBLE_EQ(g::lpv_walls_let_through(roof, 0.0, -0.1, 0.6, -1.0), 0.0);
+  // Continuous as the surface turns from facing the axis to lying along it.
+  double last = g::lpv_walls_let_through(floor, 0.0, 0.0, -0.9, 0.0);
+  for (double facing = 0.0; facing <= 1.0; facing += 1e-3) {
+    const double through = g::lpv_walls_let_through(floor, 0.0, 0.0, -0.9, facing);
+    EXPECT_LE(std::abs(through - last), 1e-3 / g::LPV_WALL_FACING + 1e-9) << facing;
+    last = through;
+  }
+}
+
+TEST(LpvWalls, TheGathersFacesTakeEachWallWholeAtTheNearestPlane) {
+  for (double t = -0.95; t < 0.96; t += 0.01) {
+    const auto c = tent(t, 1.0);
+    // Planes -1, 0 and 1, each located from itself and its neighbours; a wall's share there
+    // times what the splat put there sums to the wall over the planes.
+    double total = 0.0;
+    for (int plane = -1; plane <= 1; ++plane) {
+      const std::size_t i = std::size_t(plane + 2);
+      const glm::dvec2 wall = g::lpv_wall_locate(c[i - 1], c[i], c[i + 1]);
+      const double share = g::lpv_wall_share(glm::dvec4(wall, 0.0, 0.0), c[i]);
+      total += share * c[i];
+      const double distance = std::abs(t - double(plane));
+      if (distance < 0.5 - g::LPV_WALL_RAMP / 2) {
+        EXPECT_NEAR(share * c[i], 1.0, 1e-12) << t << " at " << plane;
+      } else if (distance > 0.5 + g::LPV_WALL_RAMP / 2) {
+        EXPECT_NEAR(share * c[i], 0.0, 1e-12) << t << " at " << plane;
+      }
+    }
+    EXPECT_NEAR(total, 1.0, 1e-12) << t;
+  }
+}
+
+TEST(LpvWalls, TheTexelKeepsTheWallsToAByteEach) {
+  const glm::dvec4 walls(-0.37, 0.8, 0.61, 1.9);
+  const glm::dvec4 unorm = g::lpv_walls_to_unorm(walls);
+  const glm::dvec4 bytes = glm::round(unorm * 255.0) / 255.0;  // packUnorm4x8 and back
+  const glm::dvec4 back = g::lpv_walls_from_unorm(bytes);
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(back[k], walls[k], 1.0 / 255.0 + 1e-12) << k;
+  EXPECT_NEAR(g::lpv_walls_from_unorm(g::lpv_walls_to_unorm(glm::dvec4(0.0, 5.0, 0.0, 0.0))).y, g::LPV_WALL_COVER_KEPT,
+              1e-12)
+      << "covers past the kept range are held to it";
+}
+
+}  // namespace
