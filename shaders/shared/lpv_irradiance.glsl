@@ -56,6 +56,13 @@ vec3 shared_corner(vec3 of_a, vec3 of_b, uint k, bool in_a, bool two_sets) {
   vec3 b = subgroupShuffle(of_b, k);
   return in_a ? a : b;
 }
+uvec3 shared_corner(uvec3 of_a, uvec3 of_b, uint k, bool in_a, bool two_sets) {
+  uvec3 a = subgroupShuffle(of_a, k);
+  if (!two_sets) return a;
+  uvec3 b = subgroupShuffle(of_b, k);
+  return in_a ? a : b;
+}
+
 
 // The intensity of one cell, per channel, against a cosine lobe: each channel's SH made
 // nowhere negative first (sh_nonnegative_irradiance), so that a cell next to a lit surface does
@@ -135,7 +142,8 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
   ivec3 high = min(low + 1, last);
   vec4 lobe = sh_cosine_lobe(-n);
   vec3 n2 = n * n;
-  // Each corner's weight: trilinear, times the part of its cell in front of the surface.
+  // Each corner's weight: trilinear, times the part of its cell in front of the surface (and
+  // what the located walls let through, once its cells are known: weigh_by_walls).
   vec3 surface = q - 0.5 * n;
   float weight[8];
   float total = 0.0;
@@ -143,7 +151,6 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     vec3 w3 = mix(1.0 - f, f, corner_step(corner));
     ivec3 cell = mix(low, high, corner_step(corner));
     weight[corner] = (w3.x * w3.y * w3.z) * in_front(cell, surface, n);
-    if (LOCATED_WALLS) weight[corner] *= wall_visibility(c, low, cell, q, n, last);
     total += weight[corner];
   }
   vec3 e = vec3(0.0);
@@ -167,6 +174,13 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     bvec3 step = corner_step(gl_SubgroupInvocationID & 7u);
     int mine_a = lpv_accumulated_texel(mix(low_a, min(low_a + 1, last), step), c, g.dims.xyz);
     int mine_b = lpv_accumulated_texel(mix(low_b, min(low_b + 1, last), step), c, g.dims.xyz);
+    if (LOCATED_WALLS) {  // the cells' walls shared as their light is
+      uvec3 walls_a = imageLoad(walls, mine_a).xyz, walls_b = walls_a;
+      if (two_sets) walls_b = imageLoad(walls, mine_b).xyz;
+      uvec3 words[8];
+      for (uint corner = 0u; corner < 8u; ++corner) words[corner] = shared_corner(walls_a, walls_b, corner, in_a, two_sets);
+      total = weigh_by_walls(weight, words, low, last, q, n);
+    }
     if (IRRADIANCE_CUBE) {
       // Every lane's normal faces the same octant (the condition of shared_cells), so the lane
       // that loads a corner picks the axes each lane would. Where the lanes share one normal too
@@ -202,6 +216,11 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
                                               shared_corner(blue_a, blue_b, corner, in_a, two_sets), lobe);
     }
   } else {
+    if (LOCATED_WALLS) {
+      uvec3 words[8];
+      load_walls(c, low, last, words);
+      total = weigh_by_walls(weight, words, low, last, q, n);
+    }
     for (uint corner = 0u; corner < 8u; ++corner) {
       int cell = lpv_accumulated_texel(mix(low, high, corner_step(corner)), c, g.dims.xyz);
       if (IRRADIANCE_CUBE) {

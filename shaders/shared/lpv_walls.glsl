@@ -8,22 +8,42 @@
 
 #include "lpv_walls.h"
 
-// The light between q (cell units of cascade c), a point of a surface facing n, and the centre of
-// `cell`, one of the 8 around it from `low` (clamped to the grid, whose last cell is `last`),
-// that the located walls let through (lpv_walls_let_through). The walls across axis k between them lie about the plane low_k + 1, and the cell on
-// its low side at `cell`'s place across the axis holds them; an axis along which both of the
-// pair are one cell (the grid's border) has none.
-float wall_visibility(uint c, ivec3 low, ivec3 cell, vec3 q, vec3 n, ivec3 last) {
-  float through = 1.0;
+// The located walls' words (an axis each) of the 8 cells around a point from `low`: corner k is
+// the cell low + (k & 1, k >> 1 & 1, k >> 2), clamped to the grid, whose last cell is `last`.
+void load_walls(uint c, ivec3 low, ivec3 last, out uvec3 words[8]) {
+  for (uint corner = 0u; corner < 8u; ++corner) {
+    ivec3 cell = clamp(low + ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u), ivec3(0), last);
+    words[corner] = imageLoad(walls, lpv_accumulated_texel(cell, c, uvec3(last + 1))).xyz;
+  }
+}
+
+// The bytes of a walls word that hold the covers (lpv_walls_to_unorm's y and w): none set, no
+// wall about the face.
+const uint WALL_COVER_BYTES = 0xff00ff00u;
+
+// The weights of the 8 cells around q (cell units), a point of a surface facing n, from `low`
+// (their walls' words: load_walls), times what the located walls between q and each cell's
+// centre let through (lpv_walls_let_through); returns their new sum. The walls across axis k
+// between q and a pair of cells along it lie about the plane low_k + 1, and the pair's cell on
+// its low side holds them (the corner with bit k clear); an axis along which both of the pair
+// are one cell (the grid's border) has none. A face without walls, most of them, costs one test.
+float weigh_by_walls(inout float weight[8], uvec3 words[8], ivec3 low, ivec3 last, vec3 q, vec3 n) {
   for (int k = 0; k < 3; ++k) {
     if (low[k] < 0 || low[k] >= last[k]) continue;
-    ivec3 holder = cell;
-    holder[k] = low[k];
-    uint packed = imageLoad(walls, lpv_accumulated_texel(holder, c, uvec3(last + 1)))[k];
-    through *= lpv_walls_let_through(lpv_walls_from_unorm(unpackUnorm4x8(packed)), float(low[k] + 1), q[k],
-                                     float(cell[k]) + 0.5, n[k]);
+    uint bit = 1u << uint(k);
+    float plane = float(low[k] + 1);
+    for (uint holder = 0u; holder < 8u; ++holder) {
+      if ((holder & bit) != 0u) continue;
+      uint packed = words[holder][k];
+      if ((packed & WALL_COVER_BYTES) == 0u) continue;
+      vec4 located = lpv_walls_from_unorm(unpackUnorm4x8(packed));
+      weight[holder] *= lpv_walls_let_through(located, plane, q[k], plane - 0.5, n[k]);
+      weight[holder | bit] *= lpv_walls_let_through(located, plane, q[k], plane + 0.5, n[k]);
+    }
   }
-  return through;
+  float total = 0.0;
+  for (uint corner = 0u; corner < 8u; ++corner) total += weight[corner];
+  return total;
 }
 
 // A point's splat at q (cell units; lattice `low` + `f` on the cell centres), of a surface
@@ -32,13 +52,17 @@ float wall_visibility(uint c, ivec3 low, ivec3 cell, vec3 q, vec3 n, ivec3 last)
 // the scale on its values that keeps their sum, all of it going to the cells it sees (faded
 // where it sees less than LPV_WALL_LEAST_WEIGHT of them, as the lookup is).
 uvec2 wall_splat_factors(uint c, vec3 q, vec3 n, ivec3 low, vec3 f, ivec3 last, out float scale) {
+  uvec3 words[8];
+  load_walls(c, low, last, words);
+  float through[8];
+  for (uint corner = 0u; corner < 8u; ++corner) through[corner] = 1.0;
+  weigh_by_walls(through, words, low, last, q, n);
   uvec2 factors = uvec2(0u);
   float seen = 0.0;
   for (uint corner = 0u; corner < 8u; ++corner) {
-    ivec3 o = ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);
-    uint byte = uint(round(255.0 * wall_visibility(c, low, clamp(low + o, ivec3(0), last), q, n, last)));
+    uint byte = uint(round(255.0 * through[corner]));
     factors[corner >> 2u] |= byte << (8u * (corner & 3u));
-    vec3 w3 = mix(1.0 - f, f, vec3(o));
+    vec3 w3 = mix(1.0 - f, f, vec3(ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u)));
     seen += w3.x * w3.y * w3.z * float(byte) / 255.0;
   }
   scale = 1.0 / max(seen, LPV_WALL_LEAST_WEIGHT);

@@ -70,10 +70,11 @@ LPV_FUNC vec2 lpv_wall_locate(lpv_real below, lpv_real at, lpv_real above) {
 // [0, LPV_WALL_COVER_KEPT] (from 1 on a cover stops all; more says only that there is more
 // than one surface, as far as lpv_wall_share needs it).
 LPV_CONST_F LPV_WALL_COVER_KEPT = 2.0;
-LPV_FUNC vec4 lpv_walls_to_unorm(vec4 walls) {
-  const vec4 range = vec4(2.0f, LPV_WALL_COVER_KEPT, 2.0f, LPV_WALL_COVER_KEPT);
-  return clamp((walls + vec4(1.0f, 0.0f, 1.0f, 0.0f)) / range, vec4(0.0f), vec4(1.0f));
-}
+// A point and the cell centres it exchanges light with lie within half a cell of the plane on
+// either side, and a line from centre to centre crosses the plane's walls within half a cell of
+// it: a wall further off matters to no one about this plane, and is kept as none (the plane
+// next to it holds it), so that the lookup tests it once.
+LPV_FUNC vec4 lpv_walls_to_unorm(vec4 walls);
 LPV_FUNC vec4 lpv_walls_from_unorm(vec4 unorm) {
   return unorm * vec4(2.0f, LPV_WALL_COVER_KEPT, 2.0f, LPV_WALL_COVER_KEPT) - vec4(1.0f, 0.0f, 1.0f, 0.0f);
 }
@@ -125,6 +126,14 @@ LPV_FUNC lpv_real lpv_walls_let_through(vec4 walls, lpv_real plane, lpv_real fro
   const lpv_real own_minus = facing < lpv_real(0) ? backwards : lpv_real(0);
   return (lpv_real(1) - (lpv_real(1) - own_plus) * lpv_wall_stops(vec2(walls.x, walls.y), plane, from, to)) *
          (lpv_real(1) - (lpv_real(1) - own_minus) * lpv_wall_stops(vec2(walls.z, walls.w), plane, from, to));
+}
+
+LPV_FUNC vec4 lpv_walls_to_unorm(vec4 walls) {
+  const lpv_real reach = lpv_real(0.5) + lpv_real(0.5) * LPV_WALL_RAMP;
+  if (!(abs(walls.x) < reach)) walls.y = lpv_real(0);
+  if (!(abs(walls.z) < reach)) walls.w = lpv_real(0);
+  const vec4 range = vec4(2.0f, LPV_WALL_COVER_KEPT, 2.0f, LPV_WALL_COVER_KEPT);
+  return clamp((walls + vec4(1.0f, 0.0f, 1.0f, 0.0f)) / range, vec4(0.0f), vec4(1.0f));
 }
 
 LPV_FUNC lpv_real lpv_wall_nearest(lpv_real offset) {

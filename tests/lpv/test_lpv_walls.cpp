@@ -111,7 +111,7 @@ TEST(LpvWalls, TheGathersFacesTakeEachWallWholeAtTheNearestPlane) {
 }
 
 TEST(LpvWalls, TheTexelKeepsTheWallsToAByteEach) {
-  const glm::dvec4 walls(-0.37, 0.8, 0.61, 1.9);
+  const glm::dvec4 walls(-0.37, 0.8, 0.41, 1.9);
   const glm::dvec4 unorm = g::lpv_walls_to_unorm(walls);
   const glm::dvec4 bytes = glm::round(unorm * 255.0) / 255.0;  // packUnorm4x8 and back
   const glm::dvec4 back = g::lpv_walls_from_unorm(bytes);
@@ -119,6 +119,9 @@ TEST(LpvWalls, TheTexelKeepsTheWallsToAByteEach) {
   EXPECT_NEAR(g::lpv_walls_from_unorm(g::lpv_walls_to_unorm(glm::dvec4(0.0, 5.0, 0.0, 0.0))).y, g::LPV_WALL_COVER_KEPT,
               1e-12)
       << "covers past the kept range are held to it";
+  const glm::dvec4 far_off = g::lpv_walls_from_unorm(g::lpv_walls_to_unorm(glm::dvec4(0.7, 1.0, -0.2, 1.0)));
+  EXPECT_EQ(far_off.y, 0.0) << "a wall more than half a cell (and half the ramp) off is the next plane's";
+  EXPECT_NEAR(far_off.w, 1.0, 1.0 / 255.0);
 }
 
 }  // namespace
