@@ -74,6 +74,12 @@ float splat_factor(uvec2 factors, uint corner) {
 // splat_weight with the point's own factors: the sum over its corners that land on `cell`.
 float splat_weight(ivec3 cell, ivec3 low, vec3 f, ivec3 last, uvec2 factors) {
   if (factors == SPLAT_UNWEIGHED) return splat_weight(cell, low, f, last);
+  if (all(greaterThanEqual(low, ivec3(0))) && all(lessThan(low, last))) {  // no corner clamped: one lands on `cell`
+    ivec3 o = cell - low;
+    if (any(lessThan(o, ivec3(0))) || any(greaterThan(o, ivec3(1)))) return 0.0;
+    vec3 w3 = mix(1.0 - f, f, vec3(o));
+    return w3.x * w3.y * w3.z * splat_factor(factors, uint(o.x + 2 * o.y + 4 * o.z));
+  }
   float w = 0.0;
   for (uint corner = 0u; corner < 8u; ++corner) {
     ivec3 o = ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u);

@@ -21,29 +21,48 @@ void load_walls(uint c, ivec3 low, ivec3 last, out uvec3 words[8]) {
 // wall about the face.
 const uint WALL_COVER_BYTES = 0xff00ff00u;
 
+// The weights of a pair of cells along an axis, on either side of the plane `plane` (cell
+// units along it), times what the walls about that plane (their word, held by the pair's low
+// cell) let through from q (its coordinate along the axis) to each one's centre. A face without
+// walls costs one test, a face with only the surface's own side behind q (lpv_walls_idle) two.
+void weigh_pair(inout float low_weight, inout float high_weight, uint packed, float plane, float q, float facing) {
+  if ((packed & WALL_COVER_BYTES) == 0u) return;
+  vec4 located = lpv_walls_from_unorm(unpackUnorm4x8(packed));
+  if (lpv_walls_idle(located, plane, q, facing)) return;
+  low_weight *= lpv_walls_let_through(located, plane, q, plane - 0.5, facing);
+  high_weight *= lpv_walls_let_through(located, plane, q, plane + 0.5, facing);
+}
+
 // The weights of the 8 cells around q (cell units), a point of a surface facing n, from `low`
 // (their walls' words: load_walls), times what the located walls between q and each cell's
-// centre let through (lpv_walls_let_through); returns their new sum. The walls across axis k
-// between q and a pair of cells along it lie about the plane low_k + 1, and the pair's cell on
-// its low side holds them (the corner with bit k clear); an axis along which both of the pair
-// are one cell (the grid's border) has none. A face without walls, most of them, costs one test.
+// centre let through; returns their new sum. The walls across axis k between q and a pair of
+// cells along it lie about the plane low_k + 1, and the pair's cell on its low side holds them
+// (the corner with bit k clear); an axis along which both of the pair are one cell (the grid's
+// border) has none. Written out pair by pair, with constant indices: looped, the arrays went
+// to memory and the forward pass took twice as long.
 float weigh_by_walls(inout float weight[8], uvec3 words[8], ivec3 low, ivec3 last, vec3 q, vec3 n) {
-  for (int k = 0; k < 3; ++k) {
-    if (low[k] < 0 || low[k] >= last[k]) continue;
-    uint bit = 1u << uint(k);
-    float plane = float(low[k] + 1);
-    for (uint holder = 0u; holder < 8u; ++holder) {
-      if ((holder & bit) != 0u) continue;
-      uint packed = words[holder][k];
-      if ((packed & WALL_COVER_BYTES) == 0u) continue;
-      vec4 located = lpv_walls_from_unorm(unpackUnorm4x8(packed));
-      weight[holder] *= lpv_walls_let_through(located, plane, q[k], plane - 0.5, n[k]);
-      weight[holder | bit] *= lpv_walls_let_through(located, plane, q[k], plane + 0.5, n[k]);
-    }
+  if (low.x >= 0 && low.x < last.x) {
+    float plane = float(low.x + 1);
+    weigh_pair(weight[0], weight[1], words[0].x, plane, q.x, n.x);
+    weigh_pair(weight[2], weight[3], words[2].x, plane, q.x, n.x);
+    weigh_pair(weight[4], weight[5], words[4].x, plane, q.x, n.x);
+    weigh_pair(weight[6], weight[7], words[6].x, plane, q.x, n.x);
   }
-  float total = 0.0;
-  for (uint corner = 0u; corner < 8u; ++corner) total += weight[corner];
-  return total;
+  if (low.y >= 0 && low.y < last.y) {
+    float plane = float(low.y + 1);
+    weigh_pair(weight[0], weight[2], words[0].y, plane, q.y, n.y);
+    weigh_pair(weight[1], weight[3], words[1].y, plane, q.y, n.y);
+    weigh_pair(weight[4], weight[6], words[4].y, plane, q.y, n.y);
+    weigh_pair(weight[5], weight[7], words[5].y, plane, q.y, n.y);
+  }
+  if (low.z >= 0 && low.z < last.z) {
+    float plane = float(low.z + 1);
+    weigh_pair(weight[0], weight[4], words[0].z, plane, q.z, n.z);
+    weigh_pair(weight[1], weight[5], words[1].z, plane, q.z, n.z);
+    weigh_pair(weight[2], weight[6], words[2].z, plane, q.z, n.z);
+    weigh_pair(weight[3], weight[7], words[3].z, plane, q.z, n.z);
+  }
+  return weight[0] + weight[1] + weight[2] + weight[3] + weight[4] + weight[5] + weight[6] + weight[7];
 }
 
 // A point's splat at q (cell units; lattice `low` + `f` on the cell centres), of a surface

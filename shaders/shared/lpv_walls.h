@@ -136,6 +136,18 @@ LPV_FUNC vec4 lpv_walls_to_unorm(vec4 walls) {
   return clamp((walls + vec4(1.0f, 0.0f, 1.0f, 0.0f)) / range, vec4(0.0f), vec4(1.0f));
 }
 
+// Whether a face's located walls stop nothing that lpv_walls_let_through weighs from the point
+// `from` of a surface facing `facing`, whatever the other end: each is none, or the surface's
+// own side (facing its way, |facing| from LPV_WALL_FACING on) at least half a ramp behind the
+// point, which a segment backwards passes and a segment forwards never reaches. The lookup
+// skips such a face (a surface's own faces, most of those it meets) untested.
+LPV_FUNC bool lpv_walls_idle(vec4 walls, lpv_real plane, lpv_real from, lpv_real facing) {
+  const lpv_real behind = lpv_real(0.5) * LPV_WALL_RAMP;
+  const bool plus_idle = !(walls.y > lpv_real(0)) || (facing >= LPV_WALL_FACING && plane + walls.x - from <= -behind);
+  const bool minus_idle = !(walls.w > lpv_real(0)) || (facing <= -LPV_WALL_FACING && plane + walls.z - from >= behind);
+  return plus_idle && minus_idle;
+}
+
 LPV_FUNC lpv_real lpv_wall_nearest(lpv_real offset) {
   return clamp((lpv_real(0.5) - abs(offset)) / LPV_WALL_RAMP + lpv_real(0.5), lpv_real(0), lpv_real(1));
 }

@@ -88,6 +88,21 @@ TEST(LpvWalls, ASurfacesOwnSideDoesNotHideWhatLiesBehindItsPoint) {
   }
 }
 
+// The lookup skips the faces lpv_walls_idle names: they must let everything through.
+TEST(LpvWalls, IdleWallsLetEverythingThrough) {
+  int idle = 0;
+  for (double o = -0.55; o <= 0.55; o += 0.05)
+    for (double from = -0.5; from <= 0.5; from += 0.0625)
+      for (double facing : {-1.0, -0.3, -0.25, 0.0, 0.25, 0.3, 1.0})
+        for (const glm::dvec4 walls : {glm::dvec4(o, 1.0, 0.0, 0.0), glm::dvec4(0.0, 0.0, o, 1.0), glm::dvec4(o, 0.7, o, 0.7)}) {
+          if (!g::lpv_walls_idle(walls, 0.0, from, facing)) continue;
+          ++idle;
+          for (double to = -0.5; to <= 0.5; to += 0.03125)
+            EXPECT_EQ(g::lpv_walls_let_through(walls, 0.0, from, to, facing), 1.0) << o << " " << from << " " << to;
+        }
+  EXPECT_GT(idle, 100) << "the floor's own faces under its points are idle";
+}
+
 TEST(LpvWalls, TheGathersFacesTakeEachWallWholeAtTheNearestPlane) {
   for (double t = -0.95; t < 0.96; t += 0.01) {
     const auto c = tent(t, 1.0);
