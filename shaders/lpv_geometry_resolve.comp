@@ -24,10 +24,11 @@ layout(std430, set = 0, binding = GEOMETRY_RESOLVE_WALLS) writeonly buffer Walls
 layout(push_constant) uniform Push { GeometryResolvePush push; };
 // The blockers' albedo serves bounces only: without them its faces are not written.
 layout(constant_id = 0) const bool BOUNCES = true;
-// The gather pairs its lines' faces (lpv.line_blocking "paired"): each face's cover texel
-// (lpv_gather_cover_texel), so that its walk reads one texel a face, not two.
+// The gather pairs its lines' faces (lpv.line_blocking "paired" or "located"): each face's
+// cover texel (lpv_gather_cover_texel), so that its walk reads one texel a face, not two.
 layout(constant_id = 1) const bool COVERS = true;
-// The shading locates the walls (lpv.line_blocking "located"): the walls texel of every cell.
+// The walls are located (lpv.line_blocking "located"): every cell's walls texel, which the
+// injection and the shading read, and the cover texels scaled to the walls nearest their plane.
 layout(constant_id = 2) const bool WALLS = true;
 
 // The covers across `axis` (lpv_wall_plane_covers: facing + and -) of the face in the plane of
@@ -77,7 +78,7 @@ void main() {
     faces[lpv_face_spread_texel(cell, axis, dims)] = texel_bits(spread);
     vec4 cover = lpv_gather_cover_texel(sh, spread.xyz, axis);
     if (WALLS) {
-      // The wall about this face, located from its plane and the planes of corners either side.
+      // The walls about this face, located from its plane and the planes of corners either side.
       int plane = cell[axis] + 1;
       vec2 below = plane_covers(cell, axis, plane - 1, dims);
       vec2 at = lpv_wall_plane_covers(lpv_gather_first_moment(sh)[axis], spread[axis]);
