@@ -162,6 +162,10 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
   // The camera's raster pass (G-buffer or forward) is the first to bind the shadow atlas: it
   // needs its layout even when no map was drawn (no light samples it then).
   if ((pass == kGBuffer || pass == kForward) && !frame.plan.run[kShadow]) ShadowPass::record_skipped(cmd, *frame.resources.atlas);
+  // The first grid pass (the geometry volume, else the injection: pass_schedule) is the first
+  // to bind the RSMs: their layout too when no light drew them.
+  const bool first_grid_pass = cascade == 0 && (pass == kGeometryVolume || (pass == kInject && !frame.plan.run[kGeometryVolume]));
+  if (first_grid_pass && !frame.plan.run[kRsm]) RsmPass::record_skipped(cmd, *frame.resources.rsm_maps);
   switch (pass) {
     case kShadow:
       shadow_.record(cmd, frame.gpu, *frame.resources.atlas, frame.lights.shadow_views);
@@ -174,15 +178,11 @@ void FrameExecutor::record_pass(Pass pass, std::uint32_t cascade, Steps steps, c
       gbuffer_.record(cmd, frame.gpu, frame.draw_order, frame.resources.targets->camera, frame.resources.frame_uniforms);
       break;
     case kInject:
-      if (cascade == 0 && !frame.plan.run[kRsm] && !frame.plan.run[kGeometryVolume])
-        RsmPass::record_skipped(cmd, *frame.resources.rsm_maps);
       inject_.record(cmd, cascade, frame.resources.lpv_uniforms, frame.plan.run[kRsm] ? &*frame.resources.rsm_maps : nullptr,
                      frame.lpv.rsm_views, lpv, frame.lpv.cascades[cascade].cell_size, frame.gpu, *frame.resources.volumes,
                      walls_located(frame));
       break;
     case kGeometryVolume: {
-      // The first grid pass of the frame: the RSMs' layout, when no light drew them.
-      if (cascade == 0 && !frame.plan.run[kRsm]) RsmPass::record_skipped(cmd, *frame.resources.rsm_maps);
       if (cascade == 0) {  // the camera's surfels, drawn once for every cascade (timed with the first)
         if (lpv.occlusion_from_camera)
           gbuffer_.record(cmd, frame.gpu, frame.draw_order, frame.resources.targets->surfels, frame.resources.frame_uniforms);

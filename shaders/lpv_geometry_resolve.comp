@@ -31,25 +31,32 @@ layout(constant_id = 1) const bool COVERS = true;
 // injection and the shading read, and the cover texels scaled to the walls nearest their plane.
 layout(constant_id = 2) const bool WALLS = true;
 
-// The covers across `axis` (lpv_wall_plane_covers: facing + and -) of the face in the plane of
-// corners `plane` along it, at the cell's place across it: the mean of its four corners; 0
-// past the lattice.
-vec2 plane_covers(ivec3 cell, int axis, int plane, uvec3 dims) {
-  if (plane < 0 || plane > int(dims[axis])) return vec2(0.0);
+// Texel k of the face in the plane of corners `plane` along `axis`, at the cell's place across
+// it: the mean of its four corners' (LPV_GV_CORNER_TEXELS a corner). The cell's +axis face lies
+// in plane cell[axis] + 1.
+vec4 face_mean(ivec3 cell, int axis, int plane, uvec3 dims, int k) {
   int u = (axis + 1) % 3;
   int v = (axis + 2) % 3;
-  vec4 sh = vec4(0.0);
-  vec3 spread = vec3(0.0);
-  for (int k = 0; k < 4; ++k) {
+  vec4 mean = vec4(0.0);
+  for (int c = 0; c < 4; ++c) {
     ivec3 corner = cell;
     corner[axis] = plane;
-    corner[u] += k & 1;
-    corner[v] += k >> 1;
-    int texel = int(LPV_GV_CORNER_TEXELS * lpv_cell_index(uvec3(corner), dims + 1u));
-    sh += 0.25 * imageLoad(corners, texel);
-    spread += 0.25 * imageLoad(corners, texel + 1).xyz;
+    corner[u] += c & 1;
+    corner[v] += c >> 1;
+    mean += 0.25 * imageLoad(corners, int(LPV_GV_CORNER_TEXELS * lpv_cell_index(uvec3(corner), dims + 1u)) + k);
   }
+  return mean;
+}
+
+// The covers across `axis` (lpv_wall_plane_covers: facing + and -) of a face with the blocking
+// SH `sh` and spread `spread`.
+vec2 face_covers(vec4 sh, vec4 spread, int axis) {
   return lpv_wall_plane_covers(lpv_gather_first_moment(sh)[axis], spread[axis]);
+}
+// And of the face in plane `plane`: none past the lattice.
+vec2 plane_covers(ivec3 cell, int axis, int plane, uvec3 dims) {
+  if (plane < 0 || plane > int(dims[axis])) return vec2(0.0);
+  return face_covers(face_mean(cell, axis, plane, dims, 0), face_mean(cell, axis, plane, dims, 1), axis);
 }
 
 void main() {
@@ -58,30 +65,17 @@ void main() {
   if (any(greaterThanEqual(cell, ivec3(dims)))) return;
   uvec4 located = uvec4(0u);
   for (int axis = 0; axis < 3; ++axis) {
-    // The face at +axis: its corners have cell[axis] + 1 on the axis and both values on the others.
-    int u = (axis + 1) % 3;
-    int v = (axis + 2) % 3;
-    vec4 sh = vec4(0.0);
-    vec4 spread = vec4(0.0);
-    vec4 albedo = vec4(0.0);
-    for (int k = 0; k < 4; ++k) {
-      ivec3 corner = cell;
-      corner[axis] += 1;
-      corner[u] += k & 1;
-      corner[v] += k >> 1;
-      int texel = int(LPV_GV_CORNER_TEXELS * lpv_cell_index(uvec3(corner), dims + 1u));
-      sh += 0.25 * imageLoad(corners, texel);
-      spread += 0.25 * imageLoad(corners, texel + 1);
-      if (BOUNCES) albedo += imageLoad(corners, texel + 2);
-    }
+    int plane = cell[axis] + 1;  // the +axis face's
+    vec4 sh = face_mean(cell, axis, plane, dims, 0);
+    vec4 spread = face_mean(cell, axis, plane, dims, 1);
+    vec4 albedo = BOUNCES ? face_mean(cell, axis, plane, dims, 2) : vec4(0.0);
     faces[lpv_face_texel(cell, axis, dims)] = texel_bits(sh);
     faces[lpv_face_spread_texel(cell, axis, dims)] = texel_bits(spread);
     vec4 cover = lpv_gather_cover_texel(sh, spread.xyz, axis);
     if (WALLS) {
       // The walls about this face, located from its plane and the planes of corners either side.
-      int plane = cell[axis] + 1;
       vec2 below = plane_covers(cell, axis, plane - 1, dims);
-      vec2 at = lpv_wall_plane_covers(lpv_gather_first_moment(sh)[axis], spread[axis]);
+      vec2 at = face_covers(sh, spread, axis);
       vec2 above = plane_covers(cell, axis, plane + 1, dims);
       vec4 walls = vec4(lpv_wall_locate(below.x, at.x, above.x), lpv_wall_locate(below.y, at.y, above.y));
       located[axis] = packUnorm4x8(lpv_walls_to_unorm(walls));

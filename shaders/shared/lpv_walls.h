@@ -1,6 +1,6 @@
 // Walls located within their cells (api::LineBlocking::located, docs/lpv.md "Shading", walls).
-// Shared by C++ (tests) and GLSL (lpv_geometry_resolve.comp, lpv_irradiance.glsl) so both use
-// one set of formulas; the conventions of lpv_sh.h, which must be included first (in the same
+// Shared by C++ (tests) and GLSL (lpv_geometry_resolve.comp, lpv_walls.glsl) so both use one
+// set of formulas; the conventions of lpv_sh.h, which must be included first (in the same
 // precision).
 //
 // The geometry volume splats a blocker to the corner planes either side of it, with tent
@@ -16,7 +16,6 @@
 // across a gap, a room's wall and a block beside it, each stay where they are (located as one,
 // they stood as a wall in the middle of the gap and hid its cells from both). Surfaces facing
 // one way within a cell of each other merge at their cover-weighted mean place.
-//
 #if defined(__cplusplus) && defined(LPV_SH_DOUBLE)
 #ifndef LPV_WALLS_DOUBLE_H
 #define LPV_WALLS_DOUBLE_H
@@ -65,33 +64,45 @@ LPV_FUNC vec2 lpv_wall_locate(lpv_real below, lpv_real at, lpv_real above) {
   return vec2(clamp((above - below) / cover, lpv_real(-1), lpv_real(1)), cover);
 }
 
+// The width (cells) over which a wall's stop ramps from none to all as it passes one end of a
+// segment, so that nothing jumps as a wall, a surface or a VPL moves by a hair.
+LPV_CONST_F LPV_WALL_RAMP = 0.125;
+
 // A face's located walls: xy those facing +k, zw those facing -k (each lpv_wall_locate's).
 // The texel holds them as bytes, an axis a word: the offsets over [-1, 1] and the covers over
 // [0, LPV_WALL_COVER_KEPT] (from 1 on a cover stops all; more says only that there is more
-// than one surface, as far as lpv_wall_share needs it).
+// than one surface, as far as lpv_wall_share needs it). A point and the cell centres it
+// exchanges light with lie within half a cell of the plane on either side, and a line from
+// centre to centre crosses the plane's walls within half a cell of it: a wall further off (and
+// half the ramp) matters to no one about this plane, and is kept as none (the plane next to it
+// holds it), so that the lookup tests it once.
 LPV_CONST_F LPV_WALL_COVER_KEPT = 2.0;
-// A point and the cell centres it exchanges light with lie within half a cell of the plane on
-// either side, and a line from centre to centre crosses the plane's walls within half a cell of
-// it: a wall further off matters to no one about this plane, and is kept as none (the plane
-// next to it holds it), so that the lookup tests it once.
-LPV_FUNC vec4 lpv_walls_to_unorm(vec4 walls);
+LPV_FUNC vec4 lpv_walls_to_unorm(vec4 walls) {
+  const lpv_real reach = lpv_real(0.5) + lpv_real(0.5) * LPV_WALL_RAMP;
+  if (!(abs(walls.x) < reach)) walls.y = lpv_real(0);
+  if (!(abs(walls.z) < reach)) walls.w = lpv_real(0);
+  const vec4 range = vec4(2.0f, LPV_WALL_COVER_KEPT, 2.0f, LPV_WALL_COVER_KEPT);
+  return clamp((walls + vec4(1.0f, 0.0f, 1.0f, 0.0f)) / range, vec4(0.0f), vec4(1.0f));
+}
 LPV_FUNC vec4 lpv_walls_from_unorm(vec4 unorm) {
   return unorm * vec4(2.0f, LPV_WALL_COVER_KEPT, 2.0f, LPV_WALL_COVER_KEPT) - vec4(1.0f, 0.0f, 1.0f, 0.0f);
 }
 
 // The gather's lines run from centre to centre, so a line crossing plane P passes every wall
 // within half a cell of it, and none further. A face's cover (lpv_gather_cover_texel) is
-// scaled by this factor: the walls within half a cell of the plane (the located wall's cover,
-// ramped over LPV_WALL_RAMP where it lies half-way to the next plane) over the cover the
-// geometry volume splatted there (`at`, lpv_wall_plane_cover). A wall then stops a line whole at
-// the one plane it is nearest and at none else, where its splat's two shares stopped a line
-// from the cell beside it in part (the wall in thin-wall-hut, 0.14 m from a plane of corners,
-// let a sixth of the light through).
-LPV_FUNC lpv_real lpv_wall_share(vec4 walls, lpv_real at);
-
-// The width (cells) over which a wall's stop ramps from none to all as it passes one end of a
-// segment, so that nothing jumps as a wall, a surface or a VPL moves by a hair.
-LPV_CONST_F LPV_WALL_RAMP = 0.125;
+// scaled by this factor: the walls within half a cell of the plane (the located walls' covers,
+// ramped over LPV_WALL_RAMP where they lie half-way to the next plane) over the cover the
+// geometry volume splatted there (`at`, the sum of lpv_wall_plane_covers'). A wall then stops
+// a line whole at the one plane it is nearest and at none else, where its splat's two shares
+// stopped a line from the cell beside it in part (the wall in thin-wall-hut, 0.14 m from a
+// plane of corners, let a sixth of the light through).
+LPV_FUNC lpv_real lpv_wall_nearest(lpv_real offset) {
+  return clamp((lpv_real(0.5) - abs(offset)) / LPV_WALL_RAMP + lpv_real(0.5), lpv_real(0), lpv_real(1));
+}
+LPV_FUNC lpv_real lpv_wall_share(vec4 walls, lpv_real at) {
+  const lpv_real near = walls.y * lpv_wall_nearest(walls.x) + walls.w * lpv_wall_nearest(walls.z);
+  return at > lpv_real(0) ? near / at : lpv_real(0);
+}
 
 // The least total weight the shading's lookup divides its cells' weights by where walls cut
 // them: a point whose cells lie nearly all beyond walls gets their light faded, not magnified.
@@ -101,17 +112,6 @@ LPV_CONST_F LPV_WALL_LEAST_WEIGHT = 0.125;
 // units), that a wall (lpv_wall_locate's) about `plane` stops: its cover (at most all) where it
 // lies between them, ramped over LPV_WALL_RAMP at either end (so a wall through a cell's centre
 // hides half of it).
-LPV_FUNC lpv_real lpv_wall_stops(vec2 wall, lpv_real plane, lpv_real from, lpv_real to);
-// And what a face's located walls, both ways, let through from a point of a surface whose normal
-// has the component `facing` along their axis (0 for none). The surface's own side lies behind
-// the point and faces the same way: the walls facing that way do not stop what the point sends
-// or reads backwards, across its own plane (the shading weighs the cells there by the part in
-// front of it: lpv_irradiance.glsl), in full where the surface faces along the axis (|facing|
-// from LPV_WALL_FACING on), less and less as it turns to lie along it. The other side of a thin
-// wall or a roof faces away, and stops what crosses it.
-LPV_CONST_F LPV_WALL_FACING = 0.25;
-LPV_FUNC lpv_real lpv_walls_let_through(vec4 walls, lpv_real plane, lpv_real from, lpv_real to, lpv_real facing);
-
 LPV_FUNC lpv_real lpv_wall_stops(vec2 wall, lpv_real plane, lpv_real from, lpv_real to) {
   const lpv_real at = plane + wall.x;
   const lpv_real way = to >= from ? lpv_real(1) : lpv_real(-1);
@@ -120,20 +120,20 @@ LPV_FUNC lpv_real lpv_wall_stops(vec2 wall, lpv_real plane, lpv_real from, lpv_r
   return min(wall.y, lpv_real(1)) * past_from * before_to;
 }
 
+// What a face's located walls, both ways, let through from a point of a surface whose normal
+// has the component `facing` along their axis (0 for none). The surface's own side lies behind
+// the point and faces the same way: the walls facing that way do not stop what the point sends
+// or reads backwards, across its own plane (the shading weighs the cells there by the part in
+// front of it: lpv_irradiance.glsl), in full where the surface faces along the axis (|facing|
+// from LPV_WALL_FACING on), less and less as it turns to lie along it. The other side of a thin
+// wall or a roof faces away, and stops what crosses it.
+LPV_CONST_F LPV_WALL_FACING = 0.25;
 LPV_FUNC lpv_real lpv_walls_let_through(vec4 walls, lpv_real plane, lpv_real from, lpv_real to, lpv_real facing) {
   const lpv_real backwards = (to - from) * facing < lpv_real(0) ? min(abs(facing) / LPV_WALL_FACING, lpv_real(1)) : lpv_real(0);
   const lpv_real own_plus = facing > lpv_real(0) ? backwards : lpv_real(0);
   const lpv_real own_minus = facing < lpv_real(0) ? backwards : lpv_real(0);
   return (lpv_real(1) - (lpv_real(1) - own_plus) * lpv_wall_stops(vec2(walls.x, walls.y), plane, from, to)) *
          (lpv_real(1) - (lpv_real(1) - own_minus) * lpv_wall_stops(vec2(walls.z, walls.w), plane, from, to));
-}
-
-LPV_FUNC vec4 lpv_walls_to_unorm(vec4 walls) {
-  const lpv_real reach = lpv_real(0.5) + lpv_real(0.5) * LPV_WALL_RAMP;
-  if (!(abs(walls.x) < reach)) walls.y = lpv_real(0);
-  if (!(abs(walls.z) < reach)) walls.w = lpv_real(0);
-  const vec4 range = vec4(2.0f, LPV_WALL_COVER_KEPT, 2.0f, LPV_WALL_COVER_KEPT);
-  return clamp((walls + vec4(1.0f, 0.0f, 1.0f, 0.0f)) / range, vec4(0.0f), vec4(1.0f));
 }
 
 // Whether a face's located walls stop nothing that lpv_walls_let_through weighs from the point
@@ -146,14 +146,6 @@ LPV_FUNC bool lpv_walls_idle(vec4 walls, lpv_real plane, lpv_real from, lpv_real
   const bool plus_idle = !(walls.y > lpv_real(0)) || (facing >= LPV_WALL_FACING && plane + walls.x - from <= -behind);
   const bool minus_idle = !(walls.w > lpv_real(0)) || (facing <= -LPV_WALL_FACING && plane + walls.z - from >= behind);
   return plus_idle && minus_idle;
-}
-
-LPV_FUNC lpv_real lpv_wall_nearest(lpv_real offset) {
-  return clamp((lpv_real(0.5) - abs(offset)) / LPV_WALL_RAMP + lpv_real(0.5), lpv_real(0), lpv_real(1));
-}
-LPV_FUNC lpv_real lpv_wall_share(vec4 walls, lpv_real at) {
-  const lpv_real near = walls.y * lpv_wall_nearest(walls.x) + walls.w * lpv_wall_nearest(walls.z);
-  return at > lpv_real(0) ? near / at : lpv_real(0);
 }
 
 #ifdef __cplusplus
