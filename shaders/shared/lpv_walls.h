@@ -65,8 +65,12 @@ LPV_FUNC vec2 lpv_wall_locate(lpv_real below, lpv_real at, lpv_real above) {
 }
 
 // The width (cells) over which a wall's stop ramps from none to all as it passes one end of a
-// segment, so that nothing jumps as a wall, a surface or a VPL moves by a hair.
-LPV_CONST_F LPV_WALL_RAMP = 0.125;
+// segment, so that nothing jumps as a wall, a surface or a VPL moves by a hair. Narrow: a cell
+// holds the light of its centre's side, and a wall within half the ramp of the centre lets a
+// share of it through to the other side, where it can be a hundredth of it (with 1/8, a hut's
+// roof 0.03 cell under its top cells' centres let 0.27 of the sunlit light onto its ceiling).
+// Four steps of the offsets' bytes (lpv_walls_to_unorm: 2/255 cell) wide, so that it still ramps.
+LPV_CONST_F LPV_WALL_RAMP = 0.03125;
 
 // A face's located walls: xy those facing +k, zw those facing -k (each lpv_wall_locate's).
 // The texel holds them as bytes, an axis a word: the offsets over [-1, 1] and the covers over

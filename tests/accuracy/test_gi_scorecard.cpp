@@ -135,7 +135,7 @@ TEST_P(AllBouncesScorecard, AllBouncesStayWithinTheirBounds) {
 // Measured at 64x64, 1024 samples (docs/accuracy.md, "The scorecard"): gain, indirect ratio,
 // probe. Bounds: gain +0.06, indirect ratio +-0.15, probes +-0.15 (the leak at most 0.02, issue
 // 48's target); thin-wall-hut's, whose 2 cm walls still let the sunlit outside's light into the
-// hut at 10 times the truth (issue 48, open), about 10% and 20% either side; the lone plane's
+// hut at 8 times the truth (issue 48, open), about 10% and 20% either side; the lone plane's
 // indirect light at most 2% of its direct light. 9 marks a measure not bounded for the scene,
 // an indirect range starting at 0 one not checked (the lone plane's reference has no indirect
 // light), a probe range ending at 0 a scene without a probe.
@@ -143,16 +143,16 @@ TEST_P(AllBouncesScorecard, AllBouncesStayWithinTheirBounds) {
 // each scene's shape, its walls located within their cells.
 const Bounds kBounds[] = {
     // scene               gain   indirect      ind/dir  probe
-    {"cornell-box",        0.18,  0.83, 1.13,   9.0,     0.89, 1.19},  // 0.118 0.977, ceiling 1.039
+    {"cornell-box",        0.18,  0.83, 1.13,   9.0,     0.89, 1.19},  // 0.118 0.977, ceiling 1.038
     {"cornell-box-point",  0.18,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.124 0.987
-    {"sun-courtyard",      0.15,  0.77, 1.07,   9.0,     0.0,  0.0},   // 0.090 0.918
-    {"corridor",           0.14,  0.82, 1.12,   9.0,     0.0,  0.0},   // 0.075 0.972
-    {"thin-wall-room",     0.16,  0.83, 1.13,   9.0,     0.0,  0.02},  // 0.103 0.977, leak 0.012
-    {"open-court",         0.20,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.141 0.843
-    {"gallery-court",      0.27,  0.72, 1.02,   9.0,     0.0,  0.0},   // 0.207 0.865
+    {"sun-courtyard",      0.15,  0.77, 1.07,   9.0,     0.0,  0.0},   // 0.089 0.919
+    {"corridor",           0.14,  0.82, 1.12,   9.0,     0.0,  0.0},   // 0.072 0.974
+    {"thin-wall-room",     0.16,  0.83, 1.13,   9.0,     0.0,  0.02},  // 0.096 0.974, leak 0.009
+    {"open-court",         0.20,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.140 0.844
+    {"gallery-court",      0.27,  0.72, 1.02,   9.0,     0.0,  0.0},   // 0.207 0.866
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
     {"sunlit-hall",        0.57,  0.85, 1.15,   9.0,     0.0,  0.0},   // 0.510 0.995
-    {"thin-wall-hut",      11.3,  9.0,  13.4,   9.0,     0.0,  0.0},   // 10.3 11.1: the leak (issue 48)
+    {"thin-wall-hut",      8.3,   7.1,  10.7,   9.0,     0.0,  0.0},   // 7.58 8.88: the leak (issue 48)
 };
 
 // The same for {"lpv": {"transfer": "sharpened"}}: its walls located too.
@@ -160,29 +160,29 @@ const Bounds kPropagationBounds[] = {
     // scene               gain   indirect      ind/dir  probe
     {"cornell-box",        0.39,  0.73, 1.03,   9.0,     0.45, 0.75},  // 0.322 0.879, ceiling 0.598
     {"cornell-box-point",  0.51,  0.59, 0.89,   9.0,     0.0,  0.0},   // 0.448 0.735
-    {"sun-courtyard",      0.25,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.188 0.899
-    {"corridor",           0.22,  0.95, 1.25,   9.0,     0.0,  0.0},   // 0.157 1.098
-    {"thin-wall-room",     0.31,  0.81, 1.11,   9.0,     0.0,  0.05},  // 0.247 0.960, leak 0.024
-    {"open-court",         0.27,  0.81, 1.11,   9.0,     0.0,  0.0},   // 0.205 0.957
-    {"gallery-court",      0.35,  0.63, 0.93,   9.0,     0.0,  0.0},   // 0.288 0.780
+    {"sun-courtyard",      0.25,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.189 0.900
+    {"corridor",           0.22,  0.95, 1.25,   9.0,     0.0,  0.0},   // 0.159 1.100
+    {"thin-wall-room",     0.31,  0.81, 1.11,   9.0,     0.0,  0.05},  // 0.247 0.961, leak 0.024
+    {"open-court",         0.27,  0.81, 1.11,   9.0,     0.0,  0.0},   // 0.205 0.961
+    {"gallery-court",      0.35,  0.63, 0.93,   9.0,     0.0,  0.0},   // 0.287 0.784
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
     {"sunlit-hall",        0.59,  0.96, 1.26,   9.0,     0.0,  0.0},   // 0.522 1.105
-    {"thin-wall-hut",      24.0,  20.5, 31.0,   9.0,     0.0,  0.0},   // 21.7 25.9: the leak
+    {"thin-wall-hut",      24.0,  20.5, 31.0,   9.0,     0.0,  0.0},   // 21.9 26.0: the leak
 };
 // {"lpv": {"bounces": "all"}} against the 8-bounce reference, the same margins: its leak is the
-// light of every bounce (issue 45's target, 2%, is not met: 3.4%).
+// light of every bounce (issue 45's target, 2%, is not met: 3.2%).
 const Bounds kAllBouncesBounds[] = {
     // scene               gain   indirect      ind/dir  probe
-    {"cornell-box",        0.21,  0.75, 1.05,   9.0,     0.75, 1.05},  // 0.151 0.899, ceiling 0.899
+    {"cornell-box",        0.21,  0.75, 1.05,   9.0,     0.75, 1.05},  // 0.150 0.899, ceiling 0.898
     {"cornell-box-point",  0.17,  0.83, 1.13,   9.0,     0.0,  0.0},   // 0.112 0.977
-    {"sun-courtyard",      0.17,  0.76, 1.06,   9.0,     0.0,  0.0},   // 0.106 0.913
-    {"corridor",           0.20,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.142 0.844
-    {"thin-wall-room",     0.18,  0.90, 1.20,   9.0,     0.0,  0.06},  // 0.118 1.053, leak 0.034
-    {"open-court",         0.23,  0.67, 0.97,   9.0,     0.0,  0.0},   // 0.167 0.818
+    {"sun-courtyard",      0.17,  0.76, 1.06,   9.0,     0.0,  0.0},   // 0.106 0.915
+    {"corridor",           0.20,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.143 0.856
+    {"thin-wall-room",     0.17,  0.88, 1.18,   9.0,     0.0,  0.05},  // 0.104 1.026, leak 0.032
+    {"open-court",         0.23,  0.67, 0.97,   9.0,     0.0,  0.0},   // 0.165 0.820
     {"gallery-court",      0.25,  0.70, 1.00,   9.0,     0.0,  0.0},   // 0.194 0.849
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
-    {"sunlit-hall",        0.35,  0.87, 1.17,   9.0,     0.0,  0.0},   // 0.289 1.024
-    {"thin-wall-hut",      8.9,   7.5,  11.3,   9.0,     0.0,  0.0},   // 8.06 9.41: the leak
+    {"sunlit-hall",        0.35,  0.88, 1.18,   9.0,     0.0,  0.0},   // 0.289 1.026
+    {"thin-wall-hut",      7.3,   6.3,  9.5,    9.0,     0.0,  0.0},   // 6.58 7.87: the leak
 };
 // clang-format on
 

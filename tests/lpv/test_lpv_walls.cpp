@@ -69,6 +69,20 @@ TEST(LpvWalls, AWallStopsLightOnlyBetweenTheEndsAndContinuouslyAsItMoves) {
   }
 }
 
+// A cell's light is the light of its centre's side of a wall (the injection and the gather
+// weigh by the walls the same way), however near the wall lies. Outside a hut the light can be
+// ten to a hundred times the inside's, so what the ramp lets through near a centre shows: with
+// a ramp of 1/8 cell, thin-wall-hut's roof, 0.03 cell under its top cells' centres, let 0.27
+// of their sunlit light onto its ceiling (docs/accuracy.md, "Since: the walls' ramp narrowed"). The ramp is
+// still a few of the offset's byte steps wide (2/255 cell), so that a wall moving by a hair
+// moves the stop by a step at most.
+TEST(LpvWalls, AWallNearACellCentreHidesItWholeFromTheOtherSide) {
+  const glm::dvec2 wall(0.0, 1.0);
+  for (double gap : {0.02, 0.05, 0.1, 0.25})
+    EXPECT_DOUBLE_EQ(g::lpv_wall_stops(wall, 0.0, -0.5, gap), 1.0) << "a centre " << gap << " cell beyond the wall";
+  EXPECT_GE(g::LPV_WALL_RAMP, 3.0 * 2.0 / 255.0);
+}
+
 TEST(LpvWalls, ASurfacesOwnSideDoesNotHideWhatLiesBehindItsPoint) {
   // A floor facing +y at -0.5 (its only side) and the point half a cell above it: the cells
   // below are weighed by the part in front of the surface instead (lpv_irradiance.glsl).
