@@ -2,7 +2,8 @@
 // Geometry volume, step 3: for each cell, the blocking potential on its +X, +Y and +Z faces
 // (its SH and spread), the mean of each face's four corners. Propagation between two
 // neighbouring cells reads the face they share. Also the blockers' mean albedo per face, for
-// the light they reflect, and the walls located about its +X, +Y and +Z faces (lpv_walls.h).
+// the light they reflect, and the walls located about its +X, +Y and +Z faces, with whether its
+// centre lies inside a thin solid (lpv_walls.h).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/geometry_volume_interface.h"
 #include "shared/gpu_types.h"
@@ -19,7 +20,8 @@ layout(set = 0, binding = GEOMETRY_RESOLVE_CORNERS, rgba32f) uniform readonly im
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACES) writeonly buffer Faces { u64vec2 faces[]; };
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACE_ALBEDO) writeonly buffer FaceAlbedo { u64vec2 face_albedo[]; };
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_FACE_COVER) writeonly buffer FaceCover { u64vec2 face_cover[]; };
-// Texel cascade * cells + cell: the walls located about its +X, +Y, +Z faces (lpv_walls_to_unorm).
+// Texel cascade * cells + cell: the walls located about its +X, +Y, +Z faces (lpv_walls_to_unorm),
+// and in w's low byte how much its centre lies inside a thin solid (lpv_wall_inside).
 layout(std430, set = 0, binding = GEOMETRY_RESOLVE_WALLS) writeonly buffer Walls { uvec4 walls[]; };
 layout(push_constant) uniform Push { GeometryResolvePush push; };
 // The blockers' albedo serves bounces only: without them its faces are not written.
@@ -64,6 +66,7 @@ void main() {
   uvec3 dims = lpv.cascades[push.cascade].dims.xyz;
   if (any(greaterThanEqual(cell, ivec3(dims)))) return;
   uvec4 located = uvec4(0u);
+  float inside = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
     int plane = cell[axis] + 1;  // the +axis face's
     vec4 sh = face_mean(cell, axis, plane, dims, 0);
@@ -80,11 +83,19 @@ void main() {
       vec4 walls = vec4(lpv_wall_locate(below.x, at.x, above.x), lpv_wall_locate(below.y, at.y, above.y));
       located[axis] = packUnorm4x8(lpv_walls_to_unorm(walls));
       // The walls as the texel keeps them, which the CPU reference reads back (tests/lpv).
-      cover *= lpv_wall_share(lpv_walls_from_unorm(unpackUnorm4x8(located[axis])), at.x + at.y);
+      vec4 upper = lpv_walls_from_unorm(unpackUnorm4x8(located[axis]));
+      cover *= lpv_wall_share(upper, at.x + at.y);
+      // Those about the -axis face, as the cell below keeps them, for the centre between.
+      vec2 under = plane_covers(cell, axis, plane - 2, dims);
+      vec4 lower = vec4(lpv_wall_locate(under.x, below.x, at.x), lpv_wall_locate(under.y, below.y, at.y));
+      inside = max(inside, lpv_wall_inside(lpv_walls_from_unorm(unpackUnorm4x8(packUnorm4x8(lpv_walls_to_unorm(lower)))), upper));
     }
     if (COVERS) face_cover[lpv_face_cover_texel(cell, axis, dims)] = texel_bits(cover);
     if (BOUNCES)
       face_albedo[lpv_face_albedo_texel(cell, axis, dims)] = texel_bits(vec4(albedo.w > 0.0 ? albedo.rgb / albedo.w : vec3(0.0), 0.0));
   }
-  if (WALLS) walls[lpv_accumulated_texel(cell, push.cascade, dims)] = located;
+  if (WALLS) {
+    located.w = packUnorm4x8(vec4(inside, 0.0, 0.0, 0.0));
+    walls[lpv_accumulated_texel(cell, push.cascade, dims)] = located;
+  }
 }

@@ -56,10 +56,10 @@ vec3 shared_corner(vec3 of_a, vec3 of_b, uint k, bool in_a, bool two_sets) {
   vec3 b = subgroupShuffle(of_b, k);
   return in_a ? a : b;
 }
-uvec3 shared_corner(uvec3 of_a, uvec3 of_b, uint k, bool in_a, bool two_sets) {
-  uvec3 a = subgroupShuffle(of_a, k);
+uvec4 shared_corner(uvec4 of_a, uvec4 of_b, uint k, bool in_a, bool two_sets) {
+  uvec4 a = subgroupShuffle(of_a, k);
   if (!two_sets) return a;
-  uvec3 b = subgroupShuffle(of_b, k);
+  uvec4 b = subgroupShuffle(of_b, k);
   return in_a ? a : b;
 }
 
@@ -175,9 +175,9 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     int mine_a = lpv_accumulated_texel(mix(low_a, min(low_a + 1, last), step), c, g.dims.xyz);
     int mine_b = lpv_accumulated_texel(mix(low_b, min(low_b + 1, last), step), c, g.dims.xyz);
     if (LOCATED_WALLS) {  // the cells' walls shared as their light is
-      uvec3 walls_a = imageLoad(walls, mine_a).xyz, walls_b = walls_a;
-      if (two_sets) walls_b = imageLoad(walls, mine_b).xyz;
-      uvec3 words[8];
+      uvec4 walls_a = imageLoad(walls, mine_a), walls_b = walls_a;
+      if (two_sets) walls_b = imageLoad(walls, mine_b);
+      uvec4 words[8];
       for (uint corner = 0u; corner < 8u; ++corner) words[corner] = shared_corner(walls_a, walls_b, corner, in_a, two_sets);
       total = weigh_by_walls(weight, words, low, last, q, n);
     }
@@ -217,7 +217,7 @@ vec3 cascade_irradiance(uint c, vec3 q, vec3 n) {
     }
   } else {
     if (LOCATED_WALLS) {
-      uvec3 words[8];
+      uvec4 words[8];
       load_walls(c, low, last, words);
       total = weigh_by_walls(weight, words, low, last, q, n);
     }

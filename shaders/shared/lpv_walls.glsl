@@ -8,12 +8,13 @@
 
 #include "lpv_walls.h"
 
-// The located walls' words (an axis each) of the 8 cells around a point from `low`: corner k is
-// the cell low + (k & 1, k >> 1 & 1, k >> 2), clamped to the grid, whose last cell is `last`.
-void load_walls(uint c, ivec3 low, ivec3 last, out uvec3 words[8]) {
+// The located walls' words (an axis each, and w: the centre inside a thin solid) of the 8 cells
+// around a point from `low`: corner k is the cell low + (k & 1, k >> 1 & 1, k >> 2), clamped to
+// the grid, whose last cell is `last`.
+void load_walls(uint c, ivec3 low, ivec3 last, out uvec4 words[8]) {
   for (uint corner = 0u; corner < 8u; ++corner) {
     ivec3 cell = clamp(low + ivec3(corner & 1u, (corner >> 1u) & 1u, corner >> 2u), ivec3(0), last);
-    words[corner] = imageLoad(walls, lpv_accumulated_texel(cell, c, uvec3(last + 1))).xyz;
+    words[corner] = imageLoad(walls, lpv_accumulated_texel(cell, c, uvec3(last + 1)));
   }
 }
 
@@ -35,12 +36,15 @@ void weigh_pair(inout float low_weight, inout float high_weight, uint packed, fl
 
 // The weights of the 8 cells around q (cell units), a point of a surface facing n, from `low`
 // (their walls' words: load_walls), times what the located walls between q and each cell's
-// centre let through; returns their new sum. The walls across axis k between q and a pair of
+// centre let through, and none of a cell whose centre lies inside a thin solid (lpv_wall_inside);
+// returns their new sum. The walls across axis k between q and a pair of
 // cells along it lie about the plane low_k + 1, and the pair's cell on its low side holds them
 // (the corner with bit k clear); an axis along which both of the pair are one cell (the grid's
 // border) has none. Written out pair by pair, with constant indices: looped, the arrays went
 // to memory and the forward pass took twice as long.
-float weigh_by_walls(inout float weight[8], uvec3 words[8], ivec3 low, ivec3 last, vec3 q, vec3 n) {
+float weigh_by_walls(inout float weight[8], uvec4 words[8], ivec3 low, ivec3 last, vec3 q, vec3 n) {
+  // A centre inside a thin solid holds no side's light (lpv_wall_inside).
+  for (uint corner = 0u; corner < 8u; ++corner) weight[corner] *= 1.0 - unpackUnorm4x8(words[corner].w).x;
   if (low.x >= 0 && low.x < last.x) {
     float plane = float(low.x + 1);
     weigh_pair(weight[0], weight[1], words[0].x, plane, q.x, n.x);
@@ -71,7 +75,7 @@ float weigh_by_walls(inout float weight[8], uvec3 words[8], ivec3 low, ivec3 las
 // the scale on its values that keeps their sum, all of it going to the cells it sees (faded
 // where it sees less than LPV_WALL_LEAST_WEIGHT of them, as the lookup is).
 uvec2 wall_splat_factors(uint c, vec3 q, vec3 n, ivec3 low, vec3 f, ivec3 last, out float scale) {
-  uvec3 words[8];
+  uvec4 words[8];
   load_walls(c, low, last, words);
   float through[8];
   for (uint corner = 0u; corner < 8u; ++corner) through[corner] = 1.0;

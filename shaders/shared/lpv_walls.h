@@ -108,6 +108,28 @@ LPV_FUNC lpv_real lpv_wall_share(vec4 walls, lpv_real at) {
   return at > lpv_real(0) ? near / at : lpv_real(0);
 }
 
+// How much a cell's centre lies inside a thin solid: between a surface facing -k below it and
+// one facing +k above it, which face apart as the two sides of a wall do (a room's walls, which
+// face each other, hold a gap between them). A centre there holds no side's light, yet both
+// sides' VPLs add to it and both sides' surfaces read it, each across its own side (which
+// lpv_walls_let_through sets aside): a thin wall through a row of cells' centres lit the dark
+// side along it (thin-wall-room, whose fitted grid puts its wall through them). So neither
+// adds to it nor reads it (lpv_walls.glsl), the rest of the 8 cells taking its weight. From the
+// walls located about the cell's two planes across k, `lower` half a cell below the centre and
+// `upper` half a cell above; a surface counts in full from half a ramp past the centre.
+// The part of a wall (x: its place from the centre, cells; y: its cover) on the side `side` of
+// the centre (-1 below, 1 above), ramped through it.
+LPV_FUNC lpv_real lpv_wall_on_side(vec2 wall, lpv_real side) {
+  return min(wall.y, lpv_real(1)) * clamp(side * wall.x / LPV_WALL_RAMP + lpv_real(0.5), lpv_real(0), lpv_real(1));
+}
+LPV_FUNC lpv_real lpv_wall_inside(vec4 lower, vec4 upper) {
+  const lpv_real below = max(lpv_wall_on_side(vec2(lower.z - lpv_real(0.5), lower.w), lpv_real(-1)),
+                             lpv_wall_on_side(vec2(upper.z + lpv_real(0.5), upper.w), lpv_real(-1)));
+  const lpv_real above = max(lpv_wall_on_side(vec2(lower.x - lpv_real(0.5), lower.y), lpv_real(1)),
+                             lpv_wall_on_side(vec2(upper.x + lpv_real(0.5), upper.y), lpv_real(1)));
+  return below * above;
+}
+
 // The least total weight the shading's lookup divides its cells' weights by where walls cut
 // them: a point whose cells lie nearly all beyond walls gets their light faded, not magnified.
 LPV_CONST_F LPV_WALL_LEAST_WEIGHT = 0.125;

@@ -11,6 +11,8 @@
 
 #include <array>
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 namespace {
 
@@ -81,6 +83,46 @@ TEST(LpvWalls, AWallNearACellCentreHidesItWholeFromTheOtherSide) {
   for (double gap : {0.02, 0.05, 0.1, 0.25})
     EXPECT_DOUBLE_EQ(g::lpv_wall_stops(wall, 0.0, -0.5, gap), 1.0) << "a centre " << gap << " cell beyond the wall";
   EXPECT_GE(g::LPV_WALL_RAMP, 3.0 * 2.0 / 255.0);
+}
+
+// The walls about a cell's two planes across an axis, as the texels keep them (x, y facing +;
+// z, w facing -), for surfaces at `places` (cell units from the centre, facing `facings`): each
+// plane holds the surfaces within its reach, placed from it.
+std::array<glm::dvec4, 2> planes_about_a_centre(std::initializer_list<std::pair<double, int>> surfaces) {
+  std::array<glm::dvec4, 2> planes{glm::dvec4(0.0), glm::dvec4(0.0)};
+  const double reach = 0.5 + 0.5 * g::LPV_WALL_RAMP;
+  for (int p = 0; p < 2; ++p) {
+    const double plane = p == 0 ? -0.5 : 0.5;
+    for (const auto& [place, facing] : surfaces) {
+      const double offset = place - plane;
+      if (!(std::abs(offset) < reach)) continue;
+      if (facing > 0) planes[std::size_t(p)] += glm::dvec4(offset, 1.0, 0.0, 0.0);
+      else planes[std::size_t(p)] += glm::dvec4(0.0, 0.0, offset, 1.0);
+    }
+  }
+  return planes;
+}
+
+// A cell's centre inside a thin wall holds no side's light: both sides' VPLs would add to it,
+// each across its own side, and both sides' surfaces read it (thin-wall-room, whose fitted grid
+// puts its 2 cm wall through a row of centres, lit its dark side along the wall).
+TEST(LpvWalls, ACentreInsideAThinSolidIsNoSidesCell) {
+  auto inside = [](std::initializer_list<std::pair<double, int>> surfaces) {
+    const auto planes = planes_about_a_centre(surfaces);
+    return g::lpv_wall_inside(planes[0], planes[1]);
+  };
+  EXPECT_DOUBLE_EQ(inside({{-0.05, -1}, {0.05, 1}}), 1.0) << "a thin wall's two sides, facing apart, about the centre";
+  EXPECT_DOUBLE_EQ(inside({{-0.3, -1}, {0.4, 1}}), 1.0) << "a thicker one within the cell";
+  EXPECT_DOUBLE_EQ(inside({{-0.3, 1}, {0.3, -1}}), 0.0) << "a room's two walls face each other across a gap";
+  EXPECT_DOUBLE_EQ(inside({{0.0, 1}}), 0.0) << "a one-sided wall through the centre (a fitted grid's room)";
+  EXPECT_DOUBLE_EQ(inside({{0.1, -1}, {0.2, 1}}), 0.0) << "a thin wall beside the centre";
+  // A thin wall moving through the centre: inside while it holds the centre, ramped in and out.
+  double last = inside({{-0.45, -1}, {-0.35, 1}});
+  for (double at = -0.4; at <= 0.4; at += 1e-3) {
+    const double now = inside({{at - 0.05, -1}, {at + 0.05, 1}});
+    EXPECT_LE(std::abs(now - last), 1e-3 / g::LPV_WALL_RAMP + 1e-9) << at;
+    last = now;
+  }
 }
 
 TEST(LpvWalls, ASurfacesOwnSideDoesNotHideWhatLiesBehindItsPoint) {

@@ -31,16 +31,18 @@ class IndirectLookup : public gpu_test::GpuTest {};
 constexpr std::uint32_t kSize = 256;
 
 // What the located walls (`walls`, the snapshot's; empty: none) let through between q and the
-// centre of `cell`, one of the 8 from `low` (lpv_walls.glsl's wall_visibility).
+// centre of `cell`, one of the 8 from `low` (lpv_walls.glsl's weigh_by_walls): none where the
+// centre lies inside a thin solid (the texel's w).
 double wall_visibility(const std::vector<glm::uvec4>& walls, glm::ivec3 dims, glm::ivec3 low, glm::ivec3 cell,
                        glm::dvec3 q, glm::dvec3 n) {
   if (walls.empty()) return 1.0;
-  double through = 1.0;
+  const auto texel = [&](glm::ivec3 c) { return walls[std::size_t(c.x + dims.x * (c.y + dims.y * c.z))]; };
+  double through = 1.0 - double(glm::unpackUnorm4x8(texel(cell).w).x);
   for (int k = 0; k < 3; ++k) {
     if (low[k] < 0 || low[k] >= dims[k] - 1) continue;
     glm::ivec3 holder = cell;
     holder[k] = low[k];
-    const std::uint32_t packed = walls[std::size_t(holder.x + dims.x * (holder.y + dims.y * holder.z))][k];
+    const std::uint32_t packed = texel(holder)[k];
     const glm::dvec4 located = gpu_double::lpv_walls_from_unorm(glm::dvec4(glm::unpackUnorm4x8(packed)));
     through *= gpu_double::lpv_walls_let_through(located, double(low[k] + 1), q[k], double(cell[k]) + 0.5, n[k]);
   }
