@@ -61,6 +61,15 @@ vec2 plane_covers(ivec3 cell, int axis, int plane, uvec3 dims) {
   return face_covers(face_mean(cell, axis, plane, dims, 0), face_mean(cell, axis, plane, dims, 1), axis);
 }
 
+// The walls about a plane (lpv_walls.h: xy facing +, zw facing -), from the covers of the planes
+// below it, at it and above it (each lpv_wall_plane_covers').
+vec4 walls_about(vec2 below, vec2 at, vec2 above) {
+  return vec4(lpv_wall_locate(below.x, at.x, above.x), lpv_wall_locate(below.y, at.y, above.y));
+}
+// The walls packed as a texel's word keeps them (a byte each), and as its readers get them back.
+uint packed_walls(vec4 walls) { return packUnorm4x8(lpv_walls_to_unorm(walls)); }
+vec4 kept_walls(uint packed) { return lpv_walls_from_unorm(unpackUnorm4x8(packed)); }
+
 void main() {
   ivec3 cell = ivec3(gl_GlobalInvocationID);
   uvec3 dims = lpv.cascades[push.cascade].dims.xyz;
@@ -80,15 +89,13 @@ void main() {
       vec2 below = plane_covers(cell, axis, plane - 1, dims);
       vec2 at = face_covers(sh, spread, axis);
       vec2 above = plane_covers(cell, axis, plane + 1, dims);
-      vec4 walls = vec4(lpv_wall_locate(below.x, at.x, above.x), lpv_wall_locate(below.y, at.y, above.y));
-      located[axis] = packUnorm4x8(lpv_walls_to_unorm(walls));
+      located[axis] = packed_walls(walls_about(below, at, above));
       // The walls as the texel keeps them, which the CPU reference reads back (tests/lpv).
-      vec4 upper = lpv_walls_from_unorm(unpackUnorm4x8(located[axis]));
+      vec4 upper = kept_walls(located[axis]);
       cover *= lpv_wall_share(upper, at.x + at.y);
-      // Those about the -axis face, as the cell below keeps them, for the centre between.
-      vec2 under = plane_covers(cell, axis, plane - 2, dims);
-      vec4 lower = vec4(lpv_wall_locate(under.x, below.x, at.x), lpv_wall_locate(under.y, below.y, at.y));
-      inside = max(inside, lpv_wall_inside(lpv_walls_from_unorm(unpackUnorm4x8(packUnorm4x8(lpv_walls_to_unorm(lower)))), upper));
+      // And those about the -axis face, as the cell below keeps them, for the centre between.
+      vec4 lower = kept_walls(packed_walls(walls_about(plane_covers(cell, axis, plane - 2, dims), below, at)));
+      inside = max(inside, lpv_wall_inside(lower, upper));
     }
     if (COVERS) face_cover[lpv_face_cover_texel(cell, axis, dims)] = texel_bits(cover);
     if (BOUNCES)

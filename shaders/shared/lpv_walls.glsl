@@ -36,8 +36,8 @@ void weigh_pair(inout float low_weight, inout float high_weight, uint packed, fl
 
 // The weights of the 8 cells around q (cell units), a point of a surface facing n, from `low`
 // (their walls' words: load_walls), times what the located walls between q and each cell's
-// centre let through, and none of a cell whose centre lies inside a thin solid (lpv_wall_inside);
-// returns their new sum. The walls across axis k between q and a pair of
+// centre let through, and none of a cell whose centre lies inside a thin solid
+// (lpv_wall_inside); returns their new sum. The walls across axis k between q and a pair of
 // cells along it lie about the plane low_k + 1, and the pair's cell on its low side holds them
 // (the corner with bit k clear); an axis along which both of the pair are one cell (the grid's
 // border) has none. Written out pair by pair, with constant indices: looped, the arrays went
