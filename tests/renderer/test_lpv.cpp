@@ -386,6 +386,41 @@ TEST_F(Lpv, GatherIsDeterministic) {
   EXPECT_EQ(first.linear.pixels, second.linear.pixels);
 }
 
+// The geometry volume's resolve marks the cells whose centre lies inside a thin solid
+// (lpv_wall_inside), which the injection and the lookup then leave out: thin-wall-room's fitted
+// grid puts its 2 cm divider (x in [-0.01, 0.01] m, full height, z in [-1.5, 1.5]) through a row
+// of centres, and nothing else in it is a solid (its room is one-sided quads).
+TEST_F(Lpv, TheCentresInsideAThinWallAreMarked) {
+  api::RenderRequest request;
+  request.scene = "thin-wall-room";
+  request.output.width = request.output.height = 64;
+  const auto result = gpu_test::renderer().render(request, renderer::kReadbackLinear | renderer::kReadbackLpv);
+  ASSERT_EQ(result.lpv.cascades.size(), 1u);
+  const auto& c = result.lpv.cascades[0];
+  ASSERT_EQ(result.lpv.walls.size(), std::size_t(c.dims.x) * c.dims.y * c.dims.z);
+  int marked = 0, wall_cells = 0;
+  for (std::uint32_t z = 0; z < c.dims.z; ++z)
+    for (std::uint32_t y = 0; y < c.dims.y; ++y)
+      for (std::uint32_t x = 0; x < c.dims.x; ++x) {
+        const glm::vec3 centre = c.origin + (glm::vec3(x, y, z) + 0.5f) * c.cell_size;
+        const double inside = glm::unpackUnorm4x8(result.lpv.walls[x + c.dims.x * (y + c.dims.y * z)].w).x;
+        marked += inside > 0.0;
+        const bool in_the_wall = std::abs(centre.x) < 0.005f;
+        const bool well_within = centre.y > c.cell_size && centre.y < 2.5f - c.cell_size &&
+                                 std::abs(centre.z) < 1.5f - c.cell_size;
+        if (in_the_wall && well_within) {
+          ++wall_cells;
+          // As much as the wall covers the faces about it: the geometry volume gives it 0.99.
+          EXPECT_GE(inside, 0.98) << x << " " << y << " " << z;
+        }
+        if (!in_the_wall) {
+          EXPECT_EQ(inside, 0.0) << x << " " << y << " " << z << ": no solid holds its centre";
+        }
+      }
+  EXPECT_GT(wall_cells, 50) << "the fitted grid no longer puts the divider through a row of centres";
+  std::printf("thin-wall-room: %d cells marked inside, %d well within the divider\n", marked, wall_cells);
+}
+
 // Its cost grows with the square of the cells: past 24^3 a cascade it is refused, naming the
 // grid, before anything is allocated; the planner says which transfer ran and which did not.
 TEST_F(Lpv, GatherTakesAtMost24CubedCellsAndSaysSo) {
