@@ -143,12 +143,12 @@ TEST_P(AllBouncesScorecard, AllBouncesStayWithinTheirBounds) {
 // each scene's shape, its walls located within their cells.
 const Bounds kBounds[] = {
     // scene               gain   indirect      ind/dir  probe
-    {"cornell-box",        0.18,  0.83, 1.13,   9.0,     0.89, 1.19},  // 0.117 0.978, ceiling 1.039
+    {"cornell-box",        0.18,  0.83, 1.13,   9.0,     0.89, 1.19},  // 0.117 0.979, ceiling 1.039
     {"cornell-box-point",  0.18,  0.84, 1.14,   9.0,     0.0,  0.0},   // 0.124 0.987
-    {"sun-courtyard",      0.15,  0.77, 1.07,   9.0,     0.0,  0.0},   // 0.087 0.923
+    {"sun-courtyard",      0.15,  0.77, 1.07,   9.0,     0.0,  0.0},   // 0.087 0.924
     {"corridor",           0.14,  0.82, 1.12,   9.0,     0.0,  0.0},   // 0.072 0.974
-    {"thin-wall-room",     0.13,  0.84, 1.14,   9.0,     0.0,  0.02},  // 0.072 0.992, leak 0.008
-    {"open-court",         0.20,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.140 0.844
+    {"thin-wall-room",     0.13,  0.85, 1.15,   9.0,     0.0,  0.02},  // 0.067 0.997, leak 0.007
+    {"open-court",         0.20,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.141 0.844
     {"gallery-court",      0.27,  0.72, 1.02,   9.0,     0.0,  0.0},   // 0.209 0.863
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
     {"sunlit-hall",        0.57,  0.85, 1.15,   9.0,     0.0,  0.0},   // 0.510 0.995
@@ -158,33 +158,33 @@ const Bounds kBounds[] = {
 // The same for {"lpv": {"transfer": "sharpened"}}: its walls located too.
 const Bounds kPropagationBounds[] = {
     // scene               gain   indirect      ind/dir  probe
-    {"cornell-box",        0.39,  0.73, 1.03,   9.0,     0.45, 0.75},  // 0.322 0.882, ceiling 0.599
-    {"cornell-box-point",  0.51,  0.59, 0.89,   9.0,     0.0,  0.0},   // 0.448 0.737
-    {"sun-courtyard",      0.25,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.190 0.902
+    {"cornell-box",        0.39,  0.73, 1.03,   9.0,     0.45, 0.75},  // 0.322 0.885, ceiling 0.599
+    {"cornell-box-point",  0.51,  0.59, 0.89,   9.0,     0.0,  0.0},   // 0.449 0.739
+    {"sun-courtyard",      0.25,  0.75, 1.05,   9.0,     0.0,  0.0},   // 0.190 0.903
     {"corridor",           0.22,  0.95, 1.25,   9.0,     0.0,  0.0},   // 0.159 1.100
     {"thin-wall-room",     0.31,  0.81, 1.11,   9.0,     0.0,  0.05},  // 0.247 0.961, leak 0.024
-    {"open-court",         0.27,  0.81, 1.11,   9.0,     0.0,  0.0},   // 0.206 0.962
-    {"gallery-court",      0.35,  0.63, 0.93,   9.0,     0.0,  0.0},   // 0.285 0.787
+    {"open-court",         0.27,  0.81, 1.11,   9.0,     0.0,  0.0},   // 0.209 0.964
+    {"gallery-court",      0.35,  0.63, 0.93,   9.0,     0.0,  0.0},   // 0.285 0.790
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
     {"sunlit-hall",        0.59,  0.96, 1.26,   9.0,     0.0,  0.0},   // 0.522 1.105
-    {"thin-wall-hut",      24.2,  21.0, 31.6,   9.0,     0.0,  0.0},   // 22.1 26.3: the leak
+    {"thin-wall-hut",      24.2,  21.0, 31.6,   9.0,     0.0,  0.0},   // 21.2 25.3: the leak
 };
 // {"lpv": {"bounces": "all"}} against the 8-bounce reference, the same margins: its leak is the
 // light of every bounce, now under issue 45's 2%. thin-wall-room's bounces after the second,
 // estimated from the second's light (docs/lpv.md, "bounces": "all"), overshoot: 8 gathered
-// bounces give it 0.064 / 1.056.
+// bounces give it 0.073 / 1.075.
 const Bounds kAllBouncesBounds[] = {
     // scene               gain   indirect      ind/dir  probe
-    {"cornell-box",        0.21,  0.75, 1.05,   9.0,     0.75, 1.05},  // 0.148 0.902, ceiling 0.899
-    {"cornell-box-point",  0.17,  0.83, 1.13,   9.0,     0.0,  0.0},   // 0.112 0.978
-    {"sun-courtyard",      0.17,  0.77, 1.07,   9.0,     0.0,  0.0},   // 0.104 0.921
+    {"cornell-box",        0.21,  0.75, 1.05,   9.0,     0.75, 1.05},  // 0.147 0.903, ceiling 0.899
+    {"cornell-box-point",  0.17,  0.83, 1.13,   9.0,     0.0,  0.0},   // 0.111 0.979
+    {"sun-courtyard",      0.17,  0.77, 1.07,   9.0,     0.0,  0.0},   // 0.103 0.922
     {"corridor",           0.20,  0.69, 0.99,   9.0,     0.0,  0.0},   // 0.143 0.856
-    {"thin-wall-room",     0.30,  1.08, 1.38,   9.0,     0.0,  0.02},  // 0.236 1.232, leak 0.015: the tail overshoots
+    {"thin-wall-room",     0.33,  1.11, 1.41,   9.0,     0.0,  0.02},  // 0.268 1.261, leak 0.014: the tail overshoots
     {"open-court",         0.23,  0.67, 0.97,   9.0,     0.0,  0.0},   // 0.165 0.820
-    {"gallery-court",      0.23,  0.74, 1.04,   9.0,     0.0,  0.0},   // 0.168 0.887
+    {"gallery-court",      0.23,  0.74, 1.04,   9.0,     0.0,  0.0},   // 0.165 0.891
     {"lone-plane",         9.0,   0.0,  0.0,    0.02,    0.0,  0.0},   // indirect/direct 0.000
     {"sunlit-hall",        0.35,  0.88, 1.18,   9.0,     0.0,  0.0},   // 0.289 1.026
-    {"thin-wall-hut",      7.3,   6.3,  9.5,    9.0,     0.0,  0.0},   // 6.57 7.87: the leak
+    {"thin-wall-hut",      7.3,   6.3,  9.5,    9.0,     0.0,  0.0},   // 6.57 7.86: the leak
 };
 // clang-format on
 
